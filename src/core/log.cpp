@@ -1,0 +1,26 @@
+#include "core/log.h"
+
+#include <cstdio>
+
+namespace fp {
+
+static WarningCapture* activeCapture = nullptr;
+
+void warn(const std::string& message) {
+    if (activeCapture) {
+        activeCapture->messages_.push_back(message);
+        return;
+    }
+    std::fprintf(stderr, "warning: %s\n", message.c_str());
+}
+
+WarningCapture::WarningCapture() : previous_(activeCapture) { activeCapture = this; }
+WarningCapture::~WarningCapture() { activeCapture = previous_; }
+
+bool WarningCapture::contains(const std::string& fragment) const {
+    for (const std::string& m : messages_)
+        if (m.find(fragment) != std::string::npos) return true;
+    return false;
+}
+
+}  // namespace fp

@@ -1,0 +1,70 @@
+#pragma once
+// The renderer's scene: a triangle soup with materials, as loaded and validated from files.
+// Everything downstream (BVH, GPU layout) reads only this; nothing here knows about OpenGL.
+#include <array>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "core/aabb.h"
+
+namespace fp {
+
+struct Material {
+    std::string name = "default";
+    glm::vec3 diffuse{0.8f};   // MTL Kd: Lambertian reflectance, each channel in [0, 1]
+    glm::vec3 emission{0.0f};  // MTL Ke: radiance of a one-sided Lambertian emitter (front face only)
+    bool isEmissive() const { return emission.x > 0.0f || emission.y > 0.0f || emission.z > 0.0f; }
+};
+
+struct Triangle {
+    // Counter-clockwise as seen from the front: the geometric normal is (p1-p0) x (p2-p0).
+    std::array<glm::vec3, 3> p;
+    // Unit shading normals per vertex; equal to the geometric normal when the file gives none.
+    std::array<glm::vec3, 3> n;
+    uint32_t material = 0;  // index into Scene::materials
+
+    glm::vec3 geometricNormal() const { return glm::cross(p[1] - p[0], p[2] - p[0]); }
+    float area() const { return 0.5f * glm::length(geometricNormal()); }
+    Aabb bounds() const {
+        Aabb b;
+        for (const glm::vec3& v : p) b.grow(v);
+        return b;
+    }
+};
+
+struct Camera {
+    glm::vec3 eye{0.0f, 0.0f, 1.0f};
+    glm::vec3 target{0.0f};
+    glm::vec3 up{0.0f, 1.0f, 0.0f};
+    float fovY = 40.0f;  // vertical field of view in degrees, in (0, 180)
+};
+
+// Optional render settings a scene file may carry; command-line flags override them.
+struct RenderDefaults {
+    std::optional<int> width, height, spp, maxDepth;
+    std::optional<uint32_t> seed;
+    std::optional<std::string> integrator;
+};
+
+struct Scene {
+    std::vector<Triangle> triangles;
+    std::vector<Material> materials;  // never empty once loaded
+    std::optional<Camera> camera;     // from a scene file; absent for a bare OBJ
+    RenderDefaults defaults;
+    std::string source;  // the file it came from, for messages
+
+    Aabb bounds() const {
+        Aabb b;
+        for (const Triangle& t : triangles) b.grow(t.bounds());
+        return b;
+    }
+};
+
+// A camera that frames the whole bounding box, looking down -z, for scenes that bring none.
+Camera frameBounds(const Aabb& bounds, float fovY = 40.0f);
+
+}  // namespace fp
