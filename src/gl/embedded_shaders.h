@@ -1,5 +1,5 @@
 #pragma once
-// The glsl/ tree compiled into the binary (see cmake/embed_shaders.cmake), keyed by path below glsl/.
+// The glsl/ tree compiled into the binary (see cmake/embed_files.cmake), keyed by path below glsl/.
 #include <map>
 #include <string>
 

@@ -64,7 +64,8 @@ struct Scene {
     }
 };
 
-// A camera that frames the whole bounding box, looking down -z, for scenes that bring none.
+// A camera that frames the whole bounding box from the -z side looking along +z (as the Cornell box
+// camera does), for scenes that bring none.
 Camera frameBounds(const Aabb& bounds, float fovY = 40.0f);
 
 }  // namespace fp
