@@ -69,3 +69,11 @@ struct Scene {
 Camera frameBounds(const Aabb& bounds, float fovY = 40.0f);
 
 }  // namespace fp
+
+namespace fp {
+
+// Throws fp::Error (prefixed with `where`) for a camera that cannot form an image: non-finite values,
+// eye == target, up zero or parallel to the view direction, field of view outside (0, 180).
+void validateCamera(const Camera& camera, const std::string& where);
+
+}  // namespace fp

@@ -1,0 +1,46 @@
+// The path-tracing pass: adds uSamplesPerPass samples per pixel to the running sums it reads from the
+// previous accumulation target (ping-pong). The integrator is chosen at compile time: INTEGRATOR_FILE
+// names one of glsl/integrators/*.glsl, each of which defines radiance(Ray).
+#include "common/rng.glsl"
+#include "common/sampling.glsl"
+#include "common/scene_data.glsl"
+#include "common/intersect.glsl"
+#include "common/surface.glsl"
+#include "common/lights.glsl"
+#include "common/camera.glsl"
+
+uniform int uMaxDepth;
+uniform uint uSeed;
+uniform uint uFirstSample;  // index k of this pass's first sample at every pixel
+uniform int uSamplesPerPass;
+uniform sampler2D uPreviousSum;
+uniform sampler2D uPreviousSquares;
+uniform sampler2D uPreviousCounters;
+
+#include INTEGRATOR_FILE
+
+layout(location = 0) out vec4 outSum;      // (sum of radiance, number of samples)
+layout(location = 1) out vec4 outSquares;  // (sum of squared radiance, number of non-finite samples dropped)
+layout(location = 2) out vec4 outCounters; // (rays traced, 0, 0, 0)
+
+void main() {
+    ivec2 pixel = ivec2(gl_FragCoord.xy);
+    vec4 sum = texelFetch(uPreviousSum, pixel, 0);
+    vec4 squares = texelFetch(uPreviousSquares, pixel, 0);
+    gRayCount = texelFetch(uPreviousCounters, pixel, 0).x;
+    for (int i = 0; i < uSamplesPerPass; ++i) {
+        rngInit(uSeed, uvec2(pixel), uFirstSample + uint(i));
+        // Box filter: a uniformly jittered position inside the pixel.
+        vec3 c = radiance(cameraRay(vec2(pixel) + rand2()));
+        // A NaN or Inf sample would poison the pixel forever: count it, and add 0 instead.
+        if (any(isnan(c)) || any(isinf(c))) {
+            squares.a += 1.0;
+            c = vec3(0.0);
+        }
+        sum += vec4(c, 1.0);
+        squares.rgb += c * c;
+    }
+    outSum = sum;
+    outSquares = squares;
+    outCounters = vec4(gRayCount, 0.0, 0.0, 0.0);
+}

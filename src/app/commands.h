@@ -1,0 +1,10 @@
+#pragma once
+// The subcommands of build/fragpath, one file each; `args` excludes the program and command names.
+#include <string>
+#include <vector>
+
+namespace fp {
+
+int renderCommand(const std::vector<std::string>& args);
+
+}  // namespace fp

@@ -1,0 +1,38 @@
+// build/fragpath: one binary, one subcommand per front end.
+#include <cstdio>
+#include <string>
+#include <vector>
+
+#include "app/commands.h"
+#include "core/error.h"
+
+static const char* kUsage =
+    "fragpath: a path tracer that runs in an OpenGL fragment shader\n"
+    "\n"
+    "usage: fragpath <command> [options]\n"
+    "\n"
+    "commands:\n"
+    "  render [SCENE]   render an OBJ or scene file (default: the built-in Cornell box) to an image\n"
+    "\n"
+    "Run 'fragpath <command> --help' for the options of a command.\n";
+
+int main(int argc, char** argv) {
+    std::vector<std::string> args(argv + 1, argv + argc);
+    if (args.empty() || args[0] == "--help" || args[0] == "-h" || args[0] == "help") {
+        std::fputs(kUsage, args.empty() ? stderr : stdout);
+        return args.empty() ? 2 : 0;
+    }
+    std::string command = args[0];
+    args.erase(args.begin());
+    try {
+        if (command == "render") return fp::renderCommand(args);
+        std::fprintf(stderr, "fragpath: unknown command '%s'\n\n%s", command.c_str(), kUsage);
+        return 2;
+    } catch (const fp::Error& e) {
+        std::fprintf(stderr, "fragpath: error: %s\n", e.what());
+        return 1;
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "fragpath: internal error: %s\n", e.what());
+        return 3;
+    }
+}

@@ -1,0 +1,170 @@
+// `fragpath render`: the offscreen batch renderer (OSMesa, no display, no GPU needed).
+#include <unistd.h>
+
+#include <atomic>
+#include <chrono>
+#include <csignal>
+#include <cstdio>
+#include <ctime>
+#include <filesystem>
+
+#include "app/args.h"
+#include "app/commands.h"
+#include "app/progress.h"
+#include "core/error.h"
+#include "gl/context.h"
+#include "image/tone_map.h"
+#include "render/renderer.h"
+#include "scene/builtin_scene.h"
+#include "scene/load.h"
+
+namespace fp {
+
+namespace {
+
+const char* kRenderUsage =
+    "usage: fragpath render [SCENE] [options]\n"
+    "\n"
+    "Renders SCENE (an .obj with its .mtl, or a .json scene file; default: the built-in Cornell box)\n"
+    "offscreen and writes an image whose format follows the extension of -o: .png (sRGB, tone-mapped),\n"
+    ".exr or .pfm (linear radiance).\n"
+    "\n"
+    "options:\n"
+    "  -o, --output FILE     output image (default: render.png)\n"
+    "  --size WxH            image size (default: the scene file's, else 512x512)\n"
+    "  --spp N               samples per pixel (default: the scene file's, else 64)\n"
+    "  --max-depth D         bounces: 0 shows emitters only, 1 direct light, ... (default 5)\n"
+    "  --seed S              random seed; the same seed gives the same image bit for bit (default 0)\n"
+    "  --integrator NAME     naive | bsdf | nee (default nee: light sampling with MIS)\n"
+    "  --eye X,Y,Z --target X,Y,Z --up X,Y,Z --fov DEG\n"
+    "                        camera (default: the scene file's, else one that frames the scene)\n"
+    "  --exposure STOPS      PNG only: scale by 2^STOPS before tone mapping (default 0)\n"
+    "  --tonemap NAME        PNG only: clamp | reinhard | aces (default clamp)\n"
+    "  --samples-per-pass N  samples each pixel takes per draw call (default 1)\n"
+    "  --shader-dir DIR      read shaders from DIR instead of the ones built in\n"
+    "  --stats               print scene, BVH, memory and timing statistics\n"
+    "  --quiet               no progress bar or summary line\n"
+    "  -h, --help            this text\n"
+    "\n"
+    "Ctrl-C (SIGINT) or SIGTERM stops early and still writes the samples done so far.\n";
+
+std::atomic<bool> interrupted{false};
+
+extern "C" void onInterrupt(int) { interrupted = true; }
+
+double processCpuSeconds() { return double(std::clock()) / CLOCKS_PER_SEC; }
+
+// Fails before a long render, not after it, when the output cannot be written.
+void checkOutputPath(const std::string& path) {
+    std::string ext = std::filesystem::path(path).extension().string();
+    for (char& c : ext) c = char(std::tolower(static_cast<unsigned char>(c)));
+    if (ext != ".png" && ext != ".exr" && ext != ".pfm")
+        throw Error("output " + path + ": unknown image format '" + ext + "' (use .png, .exr or .pfm)");
+    std::filesystem::path dir = std::filesystem::path(path).parent_path();
+    if (dir.empty()) dir = ".";
+    if (!std::filesystem::is_directory(dir)) throw Error("output " + path + ": directory " + dir.string() + " does not exist");
+    if (access(dir.c_str(), W_OK) != 0) throw Error("output " + path + ": directory " + dir.string() + " is not writable");
+    if (std::filesystem::is_directory(path)) throw Error("output " + path + " is a directory");
+}
+
+}  // namespace
+
+int renderCommand(const std::vector<std::string>& argv) {
+    Args args(argv,
+              {"-o", "--output", "--size", "--spp", "--max-depth", "--seed", "--integrator", "--eye", "--target",
+               "--up", "--fov", "--exposure", "--tonemap", "--samples-per-pass", "--shader-dir"},
+              {"--stats", "--quiet", "-h", "--help"});
+    if (args.has("-h") || args.has("--help")) {
+        std::fputs(kRenderUsage, stdout);
+        return 0;
+    }
+    if (args.positional().size() > 1) throw Error("render takes one scene file, got " + std::to_string(args.positional().size()));
+    std::string output = args.text("-o").value_or(args.text("--output").value_or("render.png"));
+    checkOutputPath(output);
+    DisplaySettings display;
+    display.exposure = args.number("--exposure").value_or(0.0f);
+    if (auto t = args.text("--tonemap")) display.toneMap = parseToneMap(*t);
+    bool quiet = args.has("--quiet"), showStats = args.has("--stats");
+
+    auto start = std::chrono::steady_clock::now();
+    Scene scene = args.positional().empty() ? builtinCornellBox() : loadScene(args.positional()[0]);
+
+    RenderSettings settings;
+    const RenderDefaults& d = scene.defaults;
+    settings.width = d.width.value_or(512);
+    settings.height = d.height.value_or(512);
+    if (auto s = args.size("--size")) settings.width = s->x, settings.height = s->y;
+    int spp = args.integer("--spp", 1, 1 << 24).value_or(d.spp.value_or(64));
+    settings.maxDepth = args.integer("--max-depth", 0, 1000).value_or(d.maxDepth.value_or(5));
+    settings.seed = uint32_t(args.integer("--seed", 0, 2147483647).value_or(int(d.seed.value_or(0))));
+    settings.integrator = parseIntegrator(args.text("--integrator").value_or(d.integrator.value_or("nee")));
+    settings.samplesPerPass = args.integer("--samples-per-pass", 1, 4096).value_or(1);
+
+    Camera camera = scene.camera.value_or(frameBounds(scene.bounds()));
+    if (auto v = args.vec3("--eye")) camera.eye = *v;
+    if (auto v = args.vec3("--target")) camera.target = *v;
+    if (auto v = args.vec3("--up")) camera.up = *v;
+    if (auto v = args.number("--fov")) camera.fovY = *v;
+    validateCamera(camera, "camera");
+
+    std::unique_ptr<GlContext> context = createOsMesaContext();
+    Renderer renderer(scene, ShaderLibrary(args.text("--shader-dir").value_or("")));
+    renderer.configure(settings, camera);
+
+    // The first pass includes the shader JIT; time it apart from the steady-state passes.
+    std::signal(SIGINT, onInterrupt);
+    std::signal(SIGTERM, onInterrupt);
+    Progress progress(spp);
+    auto traceStart = std::chrono::steady_clock::now();
+    double cpuStart = processCpuSeconds();
+    double firstFrameSeconds = 0.0;
+    renderer.render(spp, [&](int done) {
+        if (firstFrameSeconds == 0.0)
+            firstFrameSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        if (!quiet) progress.update(done);
+        return !interrupted.load();
+    });
+    double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - traceStart).count();
+    double cpuSeconds = processCpuSeconds() - cpuStart;
+    progress.finish();
+    std::signal(SIGINT, SIG_DFL);
+    std::signal(SIGTERM, SIG_DFL);
+
+    Accumulation acc = renderer.readback();
+    writeImage(output, acc.mean(), display);
+
+    int done = renderer.samples();
+    double paths = double(settings.width) * settings.height * done;
+    if (!quiet)
+        std::fprintf(stderr, "%s: %d spp at %dx%d, %s, depth %d: %.2f s, %.3g paths/s, %.3g rays/s\n", output.c_str(),
+                     done, settings.width, settings.height, integratorName(settings.integrator), settings.maxDepth,
+                     seconds, paths / seconds, acc.raysTraced() / seconds);
+    if (showStats) {
+        const SceneStats& s = renderer.stats();
+        std::printf("renderer         %s\n", context->description().c_str());
+        std::printf("scene            %s\n", scene.source.c_str());
+        std::printf("triangles        %u (%u emissive)\n", s.triangles, s.emitters);
+        std::printf("bvh              %u nodes, %u leaves, depth %u, leaf size %u..%u (mean %.2f), SAH cost %.2f\n",
+                    s.bvh.nodeCount, s.bvh.leafCount, s.bvh.maxDepth, s.bvh.minLeafSize, s.bvh.maxLeafSize,
+                    s.bvh.meanLeafSize, s.bvh.sahCost);
+        std::printf("bvh build        %.3f s (%.3g triangles/s)\n", s.bvhBuildSeconds,
+                    s.bvhBuildSeconds > 0 ? s.triangles / s.bvhBuildSeconds : 0.0);
+        std::printf("gpu memory       %zu bytes (%.1f per triangle; positions + BVH %.1f per triangle)\n", s.gpuBytes,
+                    double(s.gpuBytes) / s.triangles, double(s.gpuGeometryBytes) / s.triangles);
+        std::printf("first frame      %.3f s after start (load, build, upload, shader compile, first pass)\n",
+                    firstFrameSeconds);
+        std::printf("samples          %d per pixel, %.0f paths, %.0f rays (%.2f rays per path)\n", done, paths,
+                    acc.raysTraced(), acc.raysTraced() / paths);
+        std::printf("throughput       %.3g paths/s, %.3g rays/s, %.3g paths per CPU-second\n", paths / seconds,
+                    acc.raysTraced() / seconds, paths / cpuSeconds);
+        std::printf("dropped samples  %llu (NaN or Inf, replaced by 0)\n", (unsigned long long)acc.droppedSamples());
+    }
+    if (done < spp) {
+        std::fprintf(stderr, "fragpath: interrupted after %d of %d spp; %s holds those samples\n", done, spp,
+                     output.c_str());
+        return 130;
+    }
+    return 0;
+}
+
+}  // namespace fp

@@ -1,0 +1,55 @@
+// OSMesa must be included after glad so that it does not pull in the system GL header.
+#include "gl/gl.h"
+// clang-format off
+#include <GL/osmesa.h>
+// clang-format on
+
+#include <vector>
+
+#include "core/error.h"
+#include "gl/context.h"
+
+namespace fp {
+
+namespace {
+
+class OsMesaContext : public GlContext {
+  public:
+    OsMesaContext() {
+        // Core profile contexts are only offered through the attribute list; ask for the newest
+        // version first and fall back to the 4.1 the shaders need.
+        for (int minor : {5, 1}) {
+            const int attribs[] = {OSMESA_FORMAT, OSMESA_RGBA,          OSMESA_DEPTH_BITS,           0,
+                                   OSMESA_PROFILE, OSMESA_CORE_PROFILE, OSMESA_CONTEXT_MAJOR_VERSION, 4,
+                                   OSMESA_CONTEXT_MINOR_VERSION, minor, 0};
+            context_ = OSMesaCreateContextAttribs(attribs, nullptr);
+            if (context_) break;
+        }
+        if (!context_)
+            throw Error("OSMesa: could not create an OpenGL 4.1 core context (is Mesa's libosmesa6 installed?)");
+        // OSMesa will not make a context current without a client buffer, even though all rendering
+        // goes to framebuffer objects; a tiny one is enough.
+        buffer_.resize(16 * 16 * 4);
+        if (!OSMesaMakeCurrent(context_, buffer_.data(), GL_UNSIGNED_BYTE, 16, 16)) {
+            OSMesaDestroyContext(context_);
+            throw Error("OSMesa: could not make the context current");
+        }
+        try {
+            loadGlFunctions(reinterpret_cast<GlProcLoader>(OSMesaGetProcAddress), "OSMesa");
+        } catch (...) {
+            OSMesaDestroyContext(context_);
+            throw;
+        }
+    }
+    ~OsMesaContext() override { OSMesaDestroyContext(context_); }
+
+  private:
+    OSMesaContext context_ = nullptr;
+    std::vector<unsigned char> buffer_;
+};
+
+}  // namespace
+
+std::unique_ptr<GlContext> createOsMesaContext() { return std::make_unique<OsMesaContext>(); }
+
+}  // namespace fp

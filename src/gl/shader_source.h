@@ -1,0 +1,39 @@
+#pragma once
+// GLSL sources with a small #include mechanism. Files come from the embedded glsl/ tree or, for hot
+// reloading and experiments, from a directory on disk. Expansion inserts `#line L F` directives so
+// that compiler messages can be mapped back to the original file and line.
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace fp {
+
+using ShaderDefines = std::vector<std::pair<std::string, std::string>>;
+
+struct ExpandedShader {
+    std::string text;                // ready for glShaderSource: #version, defines, then the files
+    std::vector<std::string> files;  // source-string number used in #line -> path below glsl/
+};
+
+class ShaderLibrary {
+  public:
+    // An empty directory means the shaders compiled into the binary.
+    explicit ShaderLibrary(std::string directory = "");
+    const std::string& directory() const { return directory_; }
+
+    // The text of one file, by its path below glsl/; throws fp::Error if there is none.
+    std::string read(const std::string& path) const;
+
+    // Resolves `#include "path"` (relative to glsl/, each file at most once) and prepends the
+    // #version line and the defines. Throws fp::Error naming file and line for a bad include.
+    ExpandedShader expand(const std::string& path, const ShaderDefines& defines) const;
+
+  private:
+    std::string directory_;
+};
+
+// Rewrites "0:12(5): error" style references of a driver's compile log (Mesa, NVIDIA and AMD forms)
+// into "glsl/<file>:12: error", using the file table of the expansion.
+std::string mapCompileLog(const std::string& log, const std::vector<std::string>& files);
+
+}  // namespace fp

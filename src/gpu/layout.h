@@ -1,0 +1,43 @@
+#pragma once
+// THE GPU SCENE LAYOUT: the one place that says what every texel of the scene's buffer textures holds.
+// The packer (gpu/pack.cpp) writes it; glsl/common/scene_data.glsl reads it through the defines that
+// layoutDefines() injects, so the two cannot drift apart.
+//
+// All buffers are GL_TEXTURE_BUFFERs (fastest way to read scene data on llvmpipe, see BENCHMARKS.md).
+// Triangles are stored in BVH leaf order; "triangle i" below means packed index i.
+//
+//  buffer        format     texels per item  contents
+//  triangles     RGBA32F    3 per triangle   (v0.xyz, material index)  (e1.xyz, light pmf)  (e2.xyz, 0)
+//                                            e1 = v1 - v0, e2 = v2 - v0; light pmf = probability that
+//                                            light sampling picks this triangle (0 if not emissive)
+//  normals       RGBA32F    3 per triangle   (n0.xyz, 0) (n1.xyz, 0) (n2.xyz, 0)  unit shading normals
+//  nodeBounds    RGBA32F    3 per node       both children's boxes, packed 12 floats:
+//                                            (L.lo.xyz, L.hi.x) (L.hi.yz, R.lo.xy) (R.lo.z, R.hi.xyz)
+//  nodeLinks     RGBA32UI   1 per node       (left first, left count, right first, right count):
+//                                            count > 0: a leaf of triangles [first, first + count);
+//                                            count = 0: an interior node at index `first`. Node 0 is the root.
+//  materials     RGBA32F    2 per material   (Kd.rgb, 0) (Ke.rgb, 0)
+//  lights        RGBA32F    1 per emitter    (triangle index, cdf up to and including it, pmf, area)
+//
+// Indices stored in float channels are exact integers below 2^24, which every GPU keeps exactly.
+#include <cstdint>
+
+#include "gl/shader_source.h"
+
+namespace fp::layout {
+
+constexpr int kTriangleTexels = 3;
+constexpr int kNormalTexels = 3;
+constexpr int kNodeBoundsTexels = 3;
+constexpr int kNodeLinkTexels = 1;
+constexpr int kMaterialTexels = 2;
+constexpr int kLightTexels = 1;
+constexpr uint32_t kMaxFloatIndex = 1u << 24;
+
+// Texture units the scene buffers are bound to while tracing.
+enum Unit : int { kTrianglesUnit = 0, kNormalsUnit, kNodeBoundsUnit, kNodeLinksUnit, kMaterialsUnit, kLightsUnit,
+                  kFirstFreeUnit };
+
+ShaderDefines layoutDefines();
+
+}  // namespace fp::layout

@@ -1,0 +1,125 @@
+#include "gpu/pack.h"
+
+#include <algorithm>
+#include <string>
+
+#include "core/error.h"
+#include "gpu/layout.h"
+
+namespace fp {
+
+float luminance(const glm::vec3& rgb) { return glm::dot(rgb, glm::vec3(0.2126f, 0.7152f, 0.0722f)); }
+
+size_t PackedScene::bytes() const {
+    return sizeof(glm::vec4) * (triangles.size() + normals.size() + nodeBounds.size() + materials.size() +
+                                lights.size()) +
+           sizeof(glm::uvec4) * nodeLinks.size();
+}
+
+size_t PackedScene::geometryBytes() const {
+    return sizeof(glm::vec4) * (triangles.size() + nodeBounds.size()) + sizeof(glm::uvec4) * nodeLinks.size();
+}
+
+namespace {
+
+// One child as the parent stores it: its box and its link (see gpu/layout.h).
+struct ChildRef {
+    Aabb bounds;
+    uint32_t first, count;
+};
+
+struct NodePacker {
+    const Bvh& bvh;
+    PackedScene& out;
+
+    // Appends the interior node `cpuIndex` (and, depth first, its interior descendants); returns its index.
+    uint32_t packInterior(uint32_t cpuIndex, uint32_t depth) {
+        out.bvhDepth = std::max(out.bvhDepth, depth);
+        const BvhNode& node = bvh.nodes[cpuIndex];
+        uint32_t index = uint32_t(out.nodeLinks.size());
+        out.nodeLinks.emplace_back();
+        out.nodeBounds.resize(out.nodeBounds.size() + layout::kNodeBoundsTexels);
+        ChildRef left = child(cpuIndex + 1, depth), right = child(node.first, depth);
+        store(index, left, right);
+        return index;
+    }
+
+    ChildRef child(uint32_t cpuIndex, uint32_t parentDepth) {
+        const BvhNode& node = bvh.nodes[cpuIndex];
+        if (node.isLeaf()) return {node.bounds, node.first, node.count};
+        return {node.bounds, packInterior(cpuIndex, parentDepth + 1), 0};
+    }
+
+    void store(uint32_t index, const ChildRef& l, const ChildRef& r) {
+        glm::vec4* b = &out.nodeBounds[size_t(index) * layout::kNodeBoundsTexels];
+        b[0] = {l.bounds.lo.x, l.bounds.lo.y, l.bounds.lo.z, l.bounds.hi.x};
+        b[1] = {l.bounds.hi.y, l.bounds.hi.z, r.bounds.lo.x, r.bounds.lo.y};
+        b[2] = {r.bounds.lo.z, r.bounds.hi.x, r.bounds.hi.y, r.bounds.hi.z};
+        out.nodeLinks[index] = {l.first, l.count, r.first, r.count};
+    }
+};
+
+}  // namespace
+
+PackedScene packScene(const Scene& scene, const Bvh& bvh) {
+    PackedScene out;
+    const size_t n = bvh.primIndex.size();
+    if (n != scene.triangles.size() || n == 0 || bvh.nodes.empty())
+        throw Error("internal: BVH does not match the scene's " + std::to_string(scene.triangles.size()) +
+                    " triangles");
+    if (n >= layout::kMaxFloatIndex || scene.materials.size() >= layout::kMaxFloatIndex)
+        throw Error(scene.source + ": " + std::to_string(n) + " triangles and " +
+                    std::to_string(scene.materials.size()) + " materials; the GPU layout addresses at most " +
+                    std::to_string(layout::kMaxFloatIndex - 1) + " of each");
+    out.triangleCount = uint32_t(n);
+
+    // Emitters and their selection probabilities, proportional to emitted power (luminance * area).
+    std::vector<float> power(n, 0.0f);
+    for (size_t i = 0; i < n; ++i) {
+        const Triangle& t = scene.triangles[bvh.primIndex[i]];
+        const Material& m = scene.materials[t.material];
+        if (m.isEmissive()) power[i] = luminance(m.emission) * t.area();
+        out.totalLightPower += power[i];
+    }
+
+    out.triangles.reserve(n * layout::kTriangleTexels);
+    out.normals.reserve(n * layout::kNormalTexels);
+    float cdf = 0.0f;
+    for (size_t i = 0; i < n; ++i) {
+        const Triangle& t = scene.triangles[bvh.primIndex[i]];
+        float pmf = out.totalLightPower > 0.0f ? power[i] / out.totalLightPower : 0.0f;
+        out.triangles.emplace_back(t.p[0], float(t.material));
+        out.triangles.emplace_back(t.p[1] - t.p[0], pmf);
+        out.triangles.emplace_back(t.p[2] - t.p[0], 0.0f);
+        for (const glm::vec3& normal : t.n) out.normals.emplace_back(normal, 0.0f);
+        if (pmf > 0.0f) {
+            cdf += pmf;
+            out.lights.emplace_back(float(i), cdf, pmf, t.area());
+        }
+    }
+    // The last cdf entry is 1 exactly, so a uniform number in [0, 1) always finds an emitter.
+    if (!out.lights.empty()) out.lights.back().y = 1.0f;
+    out.lightCount = uint32_t(out.lights.size());
+
+    for (const Material& m : scene.materials) {
+        out.materials.emplace_back(m.diffuse, 0.0f);
+        out.materials.emplace_back(m.emission, 0.0f);
+    }
+
+    NodePacker packer{bvh, out};
+    const BvhNode& root = bvh.nodes[0];
+    if (root.isLeaf()) {
+        // The layout has no leaf-only tree: a root "interior" node whose two children are the one leaf
+        // (testing a handful of triangles twice costs nothing).
+        out.nodeLinks.emplace_back();
+        out.nodeBounds.resize(layout::kNodeBoundsTexels);
+        ChildRef leaf{root.bounds, root.first, root.count};
+        packer.store(0, leaf, leaf);
+    } else {
+        packer.packInterior(0, 0);
+    }
+    out.nodeCount = uint32_t(out.nodeLinks.size());
+    return out;
+}
+
+}  // namespace fp

@@ -1,0 +1,30 @@
+#pragma once
+// Scene + BVH -> the texel arrays described in gpu/layout.h (CPU only; upload is in scene_textures.h).
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "bvh/bvh.h"
+#include "scene/scene.h"
+
+namespace fp {
+
+struct PackedScene {
+    std::vector<glm::vec4> triangles, normals, nodeBounds, materials, lights;
+    std::vector<glm::uvec4> nodeLinks;
+    uint32_t triangleCount = 0, nodeCount = 0, lightCount = 0;
+    uint32_t bvhDepth = 0;        // deepest interior node (root = 0): the traversal stack must hold it
+    float totalLightPower = 0.0f;  // sum over emitters of luminance(Ke) * area
+
+    size_t bytes() const;
+    size_t geometryBytes() const;  // positions + BVH only
+};
+
+// Throws fp::Error if the scene cannot be addressed by the layout (over 2^24 triangles or materials).
+PackedScene packScene(const Scene& scene, const Bvh& bvh);
+
+float luminance(const glm::vec3& rgb);
+
+}  // namespace fp

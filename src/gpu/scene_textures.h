@@ -1,0 +1,26 @@
+#pragma once
+// The packed scene uploaded into buffer textures (layout in gpu/layout.h), bound to fixed units.
+#include <array>
+
+#include "gl/gl.h"
+#include "gpu/pack.h"
+
+namespace fp {
+
+class SceneTextures {
+  public:
+    // Throws fp::Error if a buffer exceeds GL_MAX_TEXTURE_BUFFER_SIZE, before anything is uploaded.
+    explicit SceneTextures(const PackedScene& scene);
+    ~SceneTextures();
+    SceneTextures(const SceneTextures&) = delete;
+    SceneTextures& operator=(const SceneTextures&) = delete;
+
+    // Binds every buffer texture to its unit (layout::Unit).
+    void bind() const;
+
+  private:
+    static constexpr int kCount = 6;
+    std::array<GLuint, kCount> buffers_{}, textures_{};
+};
+
+}  // namespace fp

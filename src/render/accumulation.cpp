@@ -1,0 +1,39 @@
+#include "render/accumulation.h"
+
+#include <algorithm>
+
+namespace fp {
+
+Image Accumulation::mean() const {
+    Image image(width, height);
+    for (size_t i = 0; i < sum.size(); ++i)
+        image.pixels[i] = sum[i].w > 0.0f ? glm::vec3(sum[i]) / sum[i].w : glm::vec3(0.0f);
+    return image;
+}
+
+Image Accumulation::varianceOfMean() const {
+    Image image(width, height);
+    for (size_t i = 0; i < sum.size(); ++i) {
+        float n = sum[i].w;
+        if (n < 2.0f) continue;
+        glm::vec3 m = glm::vec3(sum[i]) / n;
+        // Unbiased sample variance (sum x^2 - n m^2) / (n - 1), then / n for the mean.
+        glm::vec3 variance = glm::max(glm::vec3(squares[i]) - n * m * m, glm::vec3(0.0f)) / (n - 1.0f);
+        image.pixels[i] = variance / n;
+    }
+    return image;
+}
+
+uint64_t Accumulation::droppedSamples() const {
+    uint64_t dropped = 0;
+    for (const glm::vec4& s : squares) dropped += uint64_t(s.w);
+    return dropped;
+}
+
+double Accumulation::raysTraced() const {
+    double rays = 0.0;
+    for (const glm::vec4& c : counters) rays += double(c.x);
+    return rays;
+}
+
+}  // namespace fp

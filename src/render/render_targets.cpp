@@ -1,0 +1,84 @@
+#include "render/render_targets.h"
+
+#include <algorithm>
+#include <string>
+
+#include "core/error.h"
+
+namespace fp {
+
+RenderTargets::RenderTargets(int width, int height) : width_(width), height_(height) {
+    GLint maxSize = 0;
+    glGetIntegerv(GL_MAX_TEXTURE_SIZE, &maxSize);
+    if (width < 1 || height < 1 || width > maxSize || height > maxSize)
+        throw Error("image size " + std::to_string(width) + "x" + std::to_string(height) +
+                    " is outside what this GPU supports (1 to " + std::to_string(maxSize) + " per side)");
+    glGenFramebuffers(2, framebuffers_.data());
+    for (int f = 0; f < 2; ++f) {
+        glGenTextures(kAttachments, textures_[size_t(f)].data());
+        glBindFramebuffer(GL_FRAMEBUFFER, framebuffers_[size_t(f)]);
+        for (int a = 0; a < kAttachments; ++a) {
+            glBindTexture(GL_TEXTURE_2D, textures_[size_t(f)][size_t(a)]);
+            glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA32F, width, height, 0, GL_RGBA, GL_FLOAT, nullptr);
+            glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+            glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+            glFramebufferTexture2D(GL_FRAMEBUFFER, GLenum(GL_COLOR_ATTACHMENT0 + a), GL_TEXTURE_2D,
+                                   textures_[size_t(f)][size_t(a)], 0);
+        }
+        const GLenum buffers[] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1, GL_COLOR_ATTACHMENT2};
+        glDrawBuffers(kAttachments, buffers);
+        GLenum status = glCheckFramebufferStatus(GL_FRAMEBUFFER);
+        if (status != GL_FRAMEBUFFER_COMPLETE)
+            throw Error("float render targets are not supported here (framebuffer status 0x" +
+                        std::to_string(status) + ")");
+    }
+    if (glGetError() == GL_OUT_OF_MEMORY)
+        throw Error("out of GPU memory for " + std::to_string(width) + "x" + std::to_string(height) +
+                    " render targets");
+    clear();
+}
+
+RenderTargets::~RenderTargets() {
+    for (auto& t : textures_) glDeleteTextures(kAttachments, t.data());
+    glDeleteFramebuffers(2, framebuffers_.data());
+}
+
+void RenderTargets::clear() {
+    const float zero[4] = {0.0f, 0.0f, 0.0f, 0.0f};
+    for (GLuint fb : framebuffers_) {
+        glBindFramebuffer(GL_FRAMEBUFFER, fb);
+        for (int a = 0; a < kAttachments; ++a) glClearBufferfv(GL_COLOR, a, zero);
+    }
+    current_ = 0;
+}
+
+void RenderTargets::beginPass(int firstUnit) {
+    for (int a = 0; a < kAttachments; ++a) {
+        glActiveTexture(GLenum(GL_TEXTURE0 + firstUnit + a));
+        glBindTexture(GL_TEXTURE_2D, textures_[size_t(current_)][size_t(a)]);
+    }
+    glBindFramebuffer(GL_FRAMEBUFFER, framebuffers_[size_t(current_ ^ 1)]);
+    glViewport(0, 0, width_, height_);
+}
+
+Accumulation RenderTargets::read() const {
+    Accumulation acc;
+    acc.width = width_;
+    acc.height = height_;
+    std::vector<glm::vec4>* outputs[kAttachments] = {&acc.sum, &acc.squares, &acc.counters};
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, framebuffers_[size_t(current_)]);
+    std::vector<glm::vec4> rows(size_t(width_) * size_t(height_));
+    for (int a = 0; a < kAttachments; ++a) {
+        glReadBuffer(GLenum(GL_COLOR_ATTACHMENT0 + a));
+        glPixelStorei(GL_PACK_ALIGNMENT, 4);
+        glReadPixels(0, 0, width_, height_, GL_RGBA, GL_FLOAT, rows.data());
+        // GL rows run bottom to top; images here run top to bottom.
+        std::vector<glm::vec4>& out = *outputs[a];
+        out.resize(rows.size());
+        for (int y = 0; y < height_; ++y)
+            std::copy_n(&rows[size_t(height_ - 1 - y) * size_t(width_)], width_, &out[size_t(y) * size_t(width_)]);
+    }
+    return acc;
+}
+
+}  // namespace fp

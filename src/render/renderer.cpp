@@ -1,0 +1,145 @@
+#include "render/renderer.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+
+#include "core/error.h"
+#include "gpu/layout.h"
+
+namespace fp {
+
+namespace {
+
+double secondsSince(std::chrono::steady_clock::time_point start) {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+constexpr int kSumUnit = layout::kFirstFreeUnit;  // then the squares and the counters
+constexpr int kSpareUnit = kSumUnit + RenderTargets::kAttachments;
+
+}  // namespace
+
+Renderer::Renderer(const Scene& scene, ShaderLibrary shaders, const BvhBuildOptions& bvhOptions)
+    : shaders_(std::move(shaders)) {
+    auto start = std::chrono::steady_clock::now();
+    std::vector<Aabb> bounds;
+    bounds.reserve(scene.triangles.size());
+    for (const Triangle& t : scene.triangles) bounds.push_back(t.bounds());
+    Bvh bvh = buildBinnedSah(bounds, bvhOptions);
+    stats_.bvhBuildSeconds = secondsSince(start);
+    stats_.bvh = computeStats(bvh, bvhOptions);
+
+    start = std::chrono::steady_clock::now();
+    PackedScene packed = packScene(scene, bvh);
+    textures_ = std::make_unique<SceneTextures>(packed);
+    stats_.uploadSeconds = secondsSince(start);
+    stats_.triangles = packed.triangleCount;
+    stats_.emitters = packed.lightCount;
+    stats_.gpuBytes = packed.bytes();
+    stats_.gpuGeometryBytes = packed.geometryBytes();
+    // The traversal stack holds at most one entry per level below the root.
+    stats_.stackSize = std::max<uint32_t>(32, packed.bvhDepth + 2);
+    lightCount_ = packed.lightCount;
+
+    // A self-intersection offset relative to the scene's size and distance from the origin, where
+    // float spacing grows.
+    Aabb box = scene.bounds();
+    float reach = std::max({glm::length(box.extent()), glm::length(box.lo), glm::length(box.hi)});
+    rayOffset_ = 1e-5f * reach;
+    glGenVertexArrays(1, &vertexArray_);
+}
+
+Renderer::~Renderer() { glDeleteVertexArrays(1, &vertexArray_); }
+
+void Renderer::compile() {
+    ShaderDefines defines = layout::layoutDefines();
+    defines.emplace_back("BVH_STACK_SIZE", std::to_string(stats_.stackSize));
+    defines.emplace_back("INTEGRATOR_FILE",
+                         std::string("\"integrators/") + integratorName(settings_.integrator) + ".glsl\"");
+    program_ = std::make_unique<Program>(shaders_, "passes/fullscreen.vert.glsl", "passes/trace.frag.glsl", defines);
+}
+
+void Renderer::reloadShaders() {
+    std::unique_ptr<Program> previous = std::move(program_);
+    try {
+        compile();
+    } catch (...) {
+        program_ = std::move(previous);
+        throw;
+    }
+    samples_ = 0;
+    if (targets_) targets_->clear();
+}
+
+void Renderer::configure(const RenderSettings& settings, const Camera& camera) {
+    if (settings.maxDepth < 0) throw Error("max depth must be 0 or more");
+    if (settings.samplesPerPass < 1) throw Error("samples per pass must be 1 or more");
+    bool recompile = !program_ || settings.integrator != settings_.integrator;
+    settings_ = settings;
+    camera_ = camera;
+    if (recompile) compile();
+    if (!targets_ || targets_->width() != settings.width || targets_->height() != settings.height) {
+        glActiveTexture(GLenum(GL_TEXTURE0 + kSpareUnit));  // never rebind a scene texture's unit
+        targets_.reset();
+        targets_ = std::make_unique<RenderTargets>(settings.width, settings.height);
+    }
+    targets_->clear();
+    samples_ = 0;
+    configured_ = true;
+}
+
+void Renderer::render(int samples, const std::function<bool(int)>& progress) {
+    if (!configured_) throw Error("internal: Renderer::render before configure");
+    Program& p = *program_;
+    p.use();
+    p.set("uTriangles", int(layout::kTrianglesUnit));
+    p.set("uNormals", int(layout::kNormalsUnit));
+    p.set("uNodeBounds", int(layout::kNodeBoundsUnit));
+    p.set("uNodeLinks", int(layout::kNodeLinksUnit));
+    p.set("uMaterials", int(layout::kMaterialsUnit));
+    p.set("uLights", int(layout::kLightsUnit));
+    p.set("uLightCount", int(lightCount_));
+    p.set("uPreviousSum", kSumUnit);
+    p.set("uPreviousSquares", kSumUnit + 1);
+    p.set("uPreviousCounters", kSumUnit + 2);
+    p.set("uRayOffset", rayOffset_);
+    p.set("uMaxDepth", settings_.maxDepth);
+    p.set("uSeed", settings_.seed);
+
+    // Camera basis: right and up are scaled so that normalised device coordinates map onto the image plane.
+    glm::vec3 forward = glm::normalize(camera_.target - camera_.eye);
+    glm::vec3 right = glm::normalize(glm::cross(forward, camera_.up));
+    glm::vec3 up = glm::cross(right, forward);
+    float tanHalf = std::tan(0.5f * glm::radians(camera_.fovY));
+    float aspect = float(settings_.width) / float(settings_.height);
+    p.set("uCameraEye", camera_.eye);
+    p.set("uCameraForward", forward);
+    p.set("uCameraRight", right * tanHalf * aspect);
+    p.set("uCameraUp", up * tanHalf);
+    p.set("uResolution", glm::vec2(settings_.width, settings_.height));
+
+    textures_->bind();
+    glBindVertexArray(vertexArray_);
+    int done = 0;
+    while (done < samples) {
+        int count = std::min(settings_.samplesPerPass, samples - done);
+        p.set("uFirstSample", unsigned(samples_));
+        p.set("uSamplesPerPass", count);
+        targets_->beginPass(kSumUnit);
+        glDrawArrays(GL_TRIANGLES, 0, 3);
+        targets_->endPass();
+        glFinish();
+        samples_ += count;
+        done += count;
+        if (progress && !progress(done)) break;
+    }
+    glActiveTexture(GLenum(GL_TEXTURE0 + kSpareUnit));
+}
+
+Accumulation Renderer::readback() const {
+    if (!targets_) throw Error("internal: Renderer::readback before configure");
+    return targets_->read();
+}
+
+}  // namespace fp

@@ -1,0 +1,23 @@
+#pragma once
+// What a render is asked to do, independent of the front end that asks.
+#include <cstdint>
+#include <string>
+
+namespace fp {
+
+// The estimators, in the order a course would teach them (glsl/integrators/<name>.glsl).
+enum class Integrator { Naive, Bsdf, Nee };
+
+Integrator parseIntegrator(const std::string& name);  // throws fp::Error listing the choices
+const char* integratorName(Integrator integrator);
+
+struct RenderSettings {
+    int width = 512, height = 512;
+    // Bounces, as in pbrt: 0 shows only emitters seen directly, 1 adds direct lighting, ...
+    int maxDepth = 5;
+    uint32_t seed = 0;
+    Integrator integrator = Integrator::Nee;
+    int samplesPerPass = 1;  // samples each pixel takes in one draw call
+};
+
+}  // namespace fp

@@ -1,0 +1,91 @@
+#pragma once
+// Shared pieces of the GPU tests: one OSMesa context per test binary, small analytic scenes, and
+// statistics of accumulated images for tolerances derived from the sample variance.
+#include <cmath>
+#include <memory>
+
+#include "gl/context.h"
+#include "render/renderer.h"
+#include "scene/scene.h"
+
+namespace fp::test {
+
+inline void ensureGlContext() {
+    static std::unique_ptr<GlContext> context = createOsMesaContext();
+}
+
+// The closed cube [-1, 1]^3 with every face facing inward, one material for all of it.
+inline Scene furnaceBox(float albedo, float emission) {
+    Scene scene;
+    scene.source = "furnace box";
+    Material m;
+    m.name = "furnace";
+    m.diffuse = glm::vec3(albedo);
+    m.emission = glm::vec3(emission);
+    scene.materials.push_back(m);
+    for (int axis = 0; axis < 3; ++axis) {
+        for (float side : {-1.0f, 1.0f}) {
+            glm::vec3 c[4];
+            int a = (axis + 1) % 3, b = (axis + 2) % 3;
+            const float corners[4][2] = {{-1, -1}, {1, -1}, {1, 1}, {-1, 1}};
+            for (int i = 0; i < 4; ++i) {
+                c[i][axis] = side;
+                c[i][a] = corners[i][0];
+                c[i][b] = corners[i][1];
+            }
+            for (auto tri : {std::array<int, 3>{0, 1, 2}, std::array<int, 3>{0, 2, 3}}) {
+                Triangle t;
+                t.p = {c[tri[0]], c[tri[1]], c[tri[2]]};
+                // Face the inside: the geometric normal must point back toward the centre.
+                if (glm::dot(t.geometricNormal(), t.p[0]) > 0.0f) std::swap(t.p[1], t.p[2]);
+                glm::vec3 n = glm::normalize(t.geometricNormal());
+                t.n = {n, n, n};
+                scene.triangles.push_back(t);
+            }
+        }
+    }
+    return scene;
+}
+
+inline Camera insideCamera() {
+    Camera c;
+    c.eye = glm::vec3(0.1f, 0.2f, -0.3f);
+    c.target = glm::vec3(0.3f, 0.1f, 1.0f);
+    c.fovY = 80.0f;
+    return c;
+}
+
+struct ImageEstimate {
+    glm::vec3 mean{0.0f};            // average over pixels of the per-pixel estimates
+    glm::vec3 standardError{0.0f};   // of that average, from the per-pixel sample variances
+};
+
+// Pixels are independent (separate random streams), so Var(average) = sum of Var(pixel means) / P^2.
+inline ImageEstimate estimate(const Accumulation& acc, int x0 = 0, int y0 = 0, int w = -1, int h = -1) {
+    if (w < 0) w = acc.width;
+    if (h < 0) h = acc.height;
+    Image mean = acc.mean(), variance = acc.varianceOfMean();
+    glm::dvec3 sum(0.0), varSum(0.0);
+    for (int y = y0; y < y0 + h; ++y)
+        for (int x = x0; x < x0 + w; ++x) {
+            sum += glm::dvec3(mean.at(x, y));
+            varSum += glm::dvec3(variance.at(x, y));
+        }
+    double count = double(w) * double(h);
+    return {glm::vec3(sum / count), glm::vec3(glm::sqrt(varSum) / count)};
+}
+
+inline Accumulation renderScene(Renderer& renderer, const Camera& camera, Integrator integrator, int size,
+                                int spp, int maxDepth, uint32_t seed = 1) {
+    RenderSettings s;
+    s.width = s.height = size;
+    s.integrator = integrator;
+    s.maxDepth = maxDepth;
+    s.seed = seed;
+    s.samplesPerPass = spp;  // one draw: tests want throughput, not progress
+    renderer.configure(s, camera);
+    renderer.render(spp);
+    return renderer.readback();
+}
+
+}  // namespace fp::test
