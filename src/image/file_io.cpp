@@ -1,0 +1,75 @@
+#include "image/file_io.h"
+
+#include <unistd.h>
+
+#include <atomic>
+#include <cctype>
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+
+#include "core/error.h"
+
+namespace fp {
+
+namespace {
+
+std::string reason(int error) {
+    return std::strerror(error);
+}
+
+// Unique per process and per call, so two writes racing on one path never share a temporary file.
+std::string temporaryPathFor(const std::string& path) {
+    static std::atomic<unsigned> counter{0};
+    return path + ".tmp-" + std::to_string(::getpid()) + "-" + std::to_string(counter++);
+}
+
+}  // namespace
+
+std::vector<std::uint8_t> readFileBytes(const std::string& path) {
+    std::FILE* file = std::fopen(path.c_str(), "rb");
+    if (!file) throw Error("cannot read '" + path + "': " + reason(errno));
+    std::vector<std::uint8_t> bytes;
+    std::uint8_t buffer[1 << 16];
+    size_t count = 0;
+    while ((count = std::fread(buffer, 1, sizeof buffer, file)) > 0) {
+        bytes.insert(bytes.end(), buffer, buffer + count);
+    }
+    // fopen succeeds on a directory on Linux; the read then fails with EISDIR, caught here.
+    const bool failed = std::ferror(file) != 0;
+    const int error = errno;
+    std::fclose(file);
+    if (failed) throw Error("cannot read '" + path + "': " + reason(error));
+    return bytes;
+}
+
+void writeFileAtomically(const std::string& path, const std::vector<std::uint8_t>& bytes) {
+    const std::string temporary = temporaryPathFor(path);
+    std::FILE* file = std::fopen(temporary.c_str(), "wb");
+    if (!file) throw Error("cannot write '" + path + "': " + reason(errno));
+
+    bool ok = bytes.empty() || std::fwrite(bytes.data(), 1, bytes.size(), file) == bytes.size();
+    int error = errno;
+    // fclose flushes the stdio buffer, so a full disk may only show up here.
+    if (std::fclose(file) != 0 && ok) {
+        ok = false;
+        error = errno;
+    }
+    if (ok && std::rename(temporary.c_str(), path.c_str()) != 0) {
+        ok = false;
+        error = errno;
+    }
+    if (!ok) {
+        std::remove(temporary.c_str());
+        throw Error("cannot write '" + path + "': " + reason(error));
+    }
+}
+
+std::string lowerCaseExtension(const std::string& path) {
+    std::string extension = std::filesystem::path(path).extension().string();
+    for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    return extension;
+}
+
+}  // namespace fp

@@ -1,0 +1,28 @@
+// writeImage / readImage from image.h: pick the format by the file name's extension.
+#include "core/error.h"
+#include "image/exr.h"
+#include "image/file_io.h"
+#include "image/image.h"
+#include "image/pfm.h"
+#include "image/png.h"
+
+namespace fp {
+
+void writeImage(const std::string& path, const Image& image, const DisplaySettings& display) {
+    const std::string extension = lowerCaseExtension(path);
+    if (extension == ".pfm") return writePfm(path, image);
+    if (extension == ".exr") return writeExr(path, image);
+    if (extension == ".png") return writePng(path, image, display);
+    throw Error("cannot write '" + path + "': unknown image extension '" + extension +
+                "' (use .png, .exr or .pfm)");
+}
+
+Image readImage(const std::string& path) {
+    const std::string extension = lowerCaseExtension(path);
+    if (extension == ".pfm") return readPfm(path);
+    if (extension == ".exr") return readExr(path);
+    throw Error("cannot read '" + path + "': unsupported image extension '" + extension +
+                "' (only linear .exr and .pfm images can be read)");
+}
+
+}  // namespace fp

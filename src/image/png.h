@@ -1,0 +1,19 @@
+#pragma once
+// 8-bit sRGB PNG for viewing: exposure, tone curve and sRGB encoding from tone_map.h, then stb.
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "image/image.h"
+
+namespace fp {
+
+// The display codes of `image`: 3 bytes (R, G, B) per pixel, top row first, each channel
+// quantize8(displayEncode(pixel, display)). This is what the PNG stores and what the GL display pass
+// must reproduce.
+std::vector<std::uint8_t> toDisplay8(const Image& image, const DisplaySettings& display);
+
+std::vector<std::uint8_t> encodePng(const Image& image, const DisplaySettings& display);
+void writePng(const std::string& path, const Image& image, const DisplaySettings& display);
+
+}  // namespace fp
