@@ -1,5 +1,6 @@
 #include "app/args.h"
 
+#include <cctype>
 #include <cmath>
 #include <cstdlib>
 #include <sstream>
@@ -16,7 +17,10 @@ Args::Args(const std::vector<std::string>& argv, const std::set<std::string>& va
             if (switches.count(a)) {
                 values_[a] = "";
             } else if (valued.count(a)) {
-                if (i + 1 >= argv.size()) throw Error("option " + a + " needs a value");
+                // A value may be negative ("--eye -1,0,0") but is never another option.
+                bool nextIsOption = i + 1 < argv.size() && argv[i + 1].size() > 1 && argv[i + 1][0] == '-' &&
+                                    !std::isdigit(static_cast<unsigned char>(argv[i + 1][1])) && argv[i + 1][1] != '.';
+                if (i + 1 >= argv.size() || nextIsOption) throw Error("option " + a + " needs a value");
                 values_[a] = argv[++i];
             } else {
                 throw Error("unknown option " + a + " (see --help)");

@@ -86,6 +86,9 @@ int renderCommand(const std::vector<std::string>& argv) {
     if (auto t = args.text("--tonemap")) display.toneMap = parseToneMap(*t);
     bool quiet = args.has("--quiet"), showStats = args.has("--stats");
 
+    // From here on an interrupt stops the render after the current pass, and the image is still written.
+    std::signal(SIGINT, onInterrupt);
+    std::signal(SIGTERM, onInterrupt);
     auto start = std::chrono::steady_clock::now();
     Scene scene = args.positional().empty() ? builtinCornellBox() : loadScene(args.positional()[0]);
 
@@ -111,9 +114,6 @@ int renderCommand(const std::vector<std::string>& argv) {
     Renderer renderer(scene, ShaderLibrary(args.text("--shader-dir").value_or("")));
     renderer.configure(settings, camera);
 
-    // The first pass includes the shader JIT; time it apart from the steady-state passes.
-    std::signal(SIGINT, onInterrupt);
-    std::signal(SIGTERM, onInterrupt);
     Progress progress(spp);
     auto traceStart = std::chrono::steady_clock::now();
     double cpuStart = processCpuSeconds();
@@ -127,8 +127,6 @@ int renderCommand(const std::vector<std::string>& argv) {
     double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - traceStart).count();
     double cpuSeconds = processCpuSeconds() - cpuStart;
     progress.finish();
-    std::signal(SIGINT, SIG_DFL);
-    std::signal(SIGTERM, SIG_DFL);
 
     Accumulation acc = renderer.readback();
     writeImage(output, acc.mean(), display);

@@ -23,15 +23,26 @@ struct Bvh {
 };
 
 struct BvhBuildOptions {
-    int binCount = 16;     // SAH candidate planes per axis in the binned builder
-    int maxLeafSize = 4;   // a node with more primitives is always split
+    int binCount = 16;           // SAH candidate planes per axis in the binned builder
+    int maxLeafSize = 4;         // a node with more primitives is always split
     float traversalCost = 1.0f;  // SAH cost of one node visit, relative to...
     float intersectCost = 1.0f;  // ...one primitive test
 };
 
-// Binned SAH (Wald 2007, "On fast construction of SAH-based bounding volume hierarchies").
+// Both builders share these rules:
+// - primBounds must be non-empty, finite boxes (one per primitive); nodes store exact unions of them.
+// - No primitives gives an empty Bvh (no nodes, no primIndex); one primitive gives a single leaf.
+// - Every leaf holds 1..maxLeafSize primitives, without exception: a larger node whose centroids all
+//   coincide (no plane separates them) is split into the two halves of its index range.
+// - The output depends only on the input and options (same input, same tree).
+// - binCount < 2 or maxLeafSize < 1 throws std::invalid_argument.
+
+// Binned SAH (Wald 2007, "On fast construction of SAH-based bounding volume hierarchies"): each node
+// is split at the lowest-cost of the binCount - 1 planes per axis between equal-width bins over its
+// centroid bounds, or made a leaf when that is strictly cheaper and it holds at most maxLeafSize.
 Bvh buildBinnedSah(const std::vector<Aabb>& primBounds, const BvhBuildOptions& options = {});
 // Object median split along the longest centroid axis: the baseline the SAH builder must beat.
+// Nodes with at most maxLeafSize primitives become leaves; binCount and the costs are not used.
 Bvh buildMedianSplit(const std::vector<Aabb>& primBounds, const BvhBuildOptions& options = {});
 
 struct BvhStats {
@@ -40,8 +51,10 @@ struct BvhStats {
     float meanLeafSize = 0.0f;
     // Expected cost of a random ray (MacDonald & Booth 1990): sum over nodes of
     // area(node)/area(root) * (traversalCost for interior, intersectCost * count for leaves).
+    // A root of zero area (all primitives on one line or point) counts every node with ratio 1.
     float sahCost = 0.0f;
 };
+// All zeros for an empty Bvh.
 BvhStats computeStats(const Bvh& bvh, const BvhBuildOptions& options = {});
 
 }  // namespace fp

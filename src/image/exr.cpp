@@ -8,6 +8,7 @@
 #include <set>
 
 #include "core/error.h"
+#include "core/file.h"
 #include "image/file_io.h"
 #include "image/image_check.h"
 
@@ -241,7 +242,8 @@ void writeExr(const std::string& path, const Image& image, const ExrAttributes& 
 }
 
 Image readExr(const std::string& path, ExrAttributes* attributes) {
-    return decodeExr(readFileBytes(path), path, attributes);
+    const std::string bytes = readFileBytes(path);
+    return decodeExr(std::vector<std::uint8_t>(bytes.begin(), bytes.end()), path, attributes);
 }
 
 }  // namespace fp

@@ -27,23 +27,6 @@ std::string temporaryPathFor(const std::string& path) {
 
 }  // namespace
 
-std::vector<std::uint8_t> readFileBytes(const std::string& path) {
-    std::FILE* file = std::fopen(path.c_str(), "rb");
-    if (!file) throw Error("cannot read '" + path + "': " + reason(errno));
-    std::vector<std::uint8_t> bytes;
-    std::uint8_t buffer[1 << 16];
-    size_t count = 0;
-    while ((count = std::fread(buffer, 1, sizeof buffer, file)) > 0) {
-        bytes.insert(bytes.end(), buffer, buffer + count);
-    }
-    // fopen succeeds on a directory on Linux; the read then fails with EISDIR, caught here.
-    const bool failed = std::ferror(file) != 0;
-    const int error = errno;
-    std::fclose(file);
-    if (failed) throw Error("cannot read '" + path + "': " + reason(error));
-    return bytes;
-}
-
 void writeFileAtomically(const std::string& path, const std::vector<std::uint8_t>& bytes) {
     const std::string temporary = temporaryPathFor(path);
     std::FILE* file = std::fopen(temporary.c_str(), "wb");

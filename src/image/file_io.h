@@ -6,9 +6,6 @@
 
 namespace fp {
 
-// The whole file; throws fp::Error naming `path` and the reason (strerror) if it cannot be read.
-std::vector<std::uint8_t> readFileBytes(const std::string& path);
-
 // Writes `bytes` to a temporary file next to `path` and renames it over `path`, so readers never see
 // a half-written image and a failed write leaves any previous file untouched. On failure the temporary
 // file is removed and fp::Error names `path` and the reason.

@@ -7,6 +7,7 @@
 #include <cstring>
 
 #include "core/error.h"
+#include "core/file.h"
 #include "image/file_io.h"
 #include "image/image_check.h"
 
@@ -163,7 +164,8 @@ void writePfm(const std::string& path, const Image& image) {
 }
 
 Image readPfm(const std::string& path) {
-    return decodePfm(readFileBytes(path), path);
+    const std::string bytes = readFileBytes(path);
+    return decodePfm(std::vector<std::uint8_t>(bytes.begin(), bytes.end()), path);
 }
 
 }  // namespace fp

@@ -111,7 +111,7 @@ TEST(ImageIo, MalformedImagesAreRejectedBeforeWriting) {
 TEST(ImageIo, ReadErrorsNameTheFile) {
     TempDir dir;
     const std::string missing = dir.file("none.exr");
-    expectMentions(errorMessage([&] { readImage(missing); }), missing, "No such file or directory");
+    expectMentions(errorMessage([&] { readImage(missing); }), missing, "no such file");
 
     const std::string png = dir.file("shown.png");
     writeImage(png, Image(1, 1));
@@ -127,7 +127,7 @@ TEST(ImageIo, ReadErrorsNameTheFile) {
 
     const std::string folder = dir.file("folder.pfm");
     std::filesystem::create_directory(folder);
-    expectMentions(errorMessage([&] { readImage(folder); }), folder, "Is a directory");
+    expectMentions(errorMessage([&] { readImage(folder); }), folder, "is a directory");
 }
 
 }  // namespace

@@ -160,7 +160,7 @@ TEST(Pfm, MissingFileIsRejectedNamingTheFile) {
     const std::string path = dir.file("absent.pfm");
     const std::string message = errorMessage([&] { readImage(path); });
     EXPECT_NE(message.find(path), std::string::npos) << message;
-    EXPECT_NE(message.find("No such file"), std::string::npos) << message;
+    EXPECT_NE(message.find("no such file"), std::string::npos) << message;
 }
 
 }  // namespace

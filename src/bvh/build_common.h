@@ -1,0 +1,137 @@
+#pragma once
+// What the two top-down builders share (internal to src/bvh): primitive references that are
+// partitioned in place, and the depth-first flattening into Bvh::nodes.
+#include <cstdint>
+#include <cstring>
+#include <limits>
+#include <stdexcept>
+#include <vector>
+
+#include "bvh/bvh.h"
+
+namespace fp::detail {
+
+// Four floats with lane-wise min/max in one SIMD instruction each (GCC and Clang vector extensions,
+// on any target); glm::vec3 operations stay scalar. Binning is bound by these read-modify-writes.
+typedef float Lanes __attribute__((vector_size(16)));
+// Same operand order, so the same NaN handling, as glm::min/max.
+inline Lanes min(Lanes a, Lanes b) {
+    return b < a ? b : a;
+}
+inline Lanes max(Lanes a, Lanes b) {
+    return a < b ? b : a;
+}
+
+// A box as lanes x, y, z; the fourth lane carries nothing that is ever read back.
+struct LaneBox {
+    Lanes lo = Lanes{} + std::numeric_limits<float>::infinity();
+    Lanes hi = Lanes{} - std::numeric_limits<float>::infinity();
+
+    void grow(const Lanes& boxLo, const Lanes& boxHi) {
+        lo = detail::min(lo, boxLo);
+        hi = detail::max(hi, boxHi);
+    }
+    void grow(const LaneBox& b) { grow(b.lo, b.hi); }
+    Aabb aabb() const { return {{lo[0], lo[1], lo[2]}, {hi[0], hi[1], hi[2]}}; }
+};
+
+// A primitive's bounds and original index. The builders move these rather than primIndex entries so
+// that a node's primitives are contiguous in memory while it is binned and partitioned.
+struct PrimRef {
+    Lanes lo;  // x, y, z and 0
+    Lanes hi;  // x, y, z and the primitive index's bits (min/max carry them along unread)
+
+    PrimRef() = default;
+    PrimRef(const Aabb& b, uint32_t index)
+        : lo{b.lo.x, b.lo.y, b.lo.z, 0.0f}, hi{b.hi.x, b.hi.y, b.hi.z, 0.0f} {
+        std::memcpy(reinterpret_cast<char*>(&hi) + 12, &index, sizeof index);
+    }
+    uint32_t index() const {
+        uint32_t i;
+        std::memcpy(&i, reinterpret_cast<const char*>(&hi) + 12, sizeof i);
+        return i;
+    }
+    // Twice the centroid: the builders only compare and bin centroids, so the 0.5 is never needed.
+    glm::vec3 centroid2() const { return {lo[0] + hi[0], lo[1] + hi[1], lo[2] + hi[2]}; }
+};
+
+// Bounds of a node's primitives, and of their (doubled) centroids.
+struct RangeBounds {
+    Aabb bounds;
+    Aabb centroids;
+};
+
+inline RangeBounds rangeBounds(const PrimRef* refs, uint32_t begin, uint32_t end) {
+    LaneBox bounds;
+    RangeBounds rb;
+    for (uint32_t i = begin; i < end; ++i) {
+        bounds.grow(refs[i].lo, refs[i].hi);
+        rb.centroids.grow(refs[i].centroid2());
+    }
+    rb.bounds = bounds.aabb();
+    return rb;
+}
+
+inline void validateOptions(const BvhBuildOptions& options, size_t primCount) {
+    if (options.binCount < 2) throw std::invalid_argument("BvhBuildOptions::binCount must be at least 2");
+    if (options.maxLeafSize < 1)
+        throw std::invalid_argument("BvhBuildOptions::maxLeafSize must be at least 1");
+    // Node indices (up to 2n - 1) must fit the 32-bit node fields.
+    if (primCount > std::numeric_limits<uint32_t>::max() / 2)
+        throw std::length_error("too many primitives for a 32-bit BVH");
+}
+
+// Builds top-down, emitting nodes in depth-first order so that a left child directly follows its
+// parent; the right child's index is patched into its parent when the right child is emitted.
+// `split(refs, begin, end, rangeBounds)` partitions refs[begin, end) and returns the split position
+// mid with begin < mid < end, or any other value to ask for a leaf. It is only called for two or more
+// primitives; a refused split of more than maxLeafSize primitives is overridden by halving the range.
+template <class Split>
+Bvh buildTopDown(const std::vector<Aabb>& primBounds, const BvhBuildOptions& options, Split&& split) {
+    validateOptions(options, primBounds.size());
+    Bvh bvh;
+    const auto n = static_cast<uint32_t>(primBounds.size());
+    if (n == 0) return bvh;
+
+    std::vector<PrimRef> refs(n);
+    for (uint32_t i = 0; i < n; ++i) refs[i] = PrimRef(primBounds[i], i);
+
+    const auto maxLeafSize = static_cast<uint32_t>(options.maxLeafSize);
+    constexpr uint32_t kNoParent = std::numeric_limits<uint32_t>::max();
+    struct Task {
+        uint32_t begin, end;
+        uint32_t parent;  // for a right child: the interior node whose `first` must point here
+    };
+    std::vector<Task> stack;
+    stack.reserve(64);
+    stack.push_back({0, n, kNoParent});
+    bvh.nodes.reserve(2 * size_t(n) - 1);  // the most a binary tree with at most n leaves can have
+
+    while (!stack.empty()) {
+        const Task task = stack.back();
+        stack.pop_back();
+        const auto index = static_cast<uint32_t>(bvh.nodes.size());
+        if (task.parent != kNoParent) bvh.nodes[task.parent].first = index;
+
+        // One streaming pass per node; cheap next to binning and partitioning.
+        const RangeBounds rb = rangeBounds(refs.data(), task.begin, task.end);
+        const uint32_t count = task.end - task.begin;
+        uint32_t mid = count > 1 ? split(refs.data(), task.begin, task.end, rb) : task.begin;
+        if (mid <= task.begin || mid >= task.end) {
+            if (count <= maxLeafSize) {
+                bvh.nodes.push_back({rb.bounds, task.begin, count});
+                continue;
+            }
+            mid = task.begin + count / 2;
+        }
+        bvh.nodes.push_back({rb.bounds, 0, 0});
+        stack.push_back({mid, task.end, index});        // popped after the whole left subtree
+        stack.push_back({task.begin, mid, kNoParent});  // popped next: becomes node index + 1
+    }
+
+    bvh.primIndex.resize(n);
+    for (uint32_t i = 0; i < n; ++i) bvh.primIndex[i] = refs[i].index();
+    return bvh;
+}
+
+}  // namespace fp::detail

@@ -1,0 +1,29 @@
+#include "core/file.h"
+
+#include <cerrno>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+
+#include "core/error.h"
+
+namespace fp {
+
+namespace fs = std::filesystem;
+
+std::string readFileBytes(const std::string& path) {
+    if (path.empty()) throw Error("no input file given (empty path)");
+    std::error_code ec;
+    fs::file_status status = fs::status(path, ec);
+    if (!fs::exists(status)) throw Error(path + ": no such file");
+    if (fs::is_directory(status)) throw Error(path + ": is a directory, not a file");
+    if (!fs::is_regular_file(status)) throw Error(path + ": is not a regular file");
+    std::ifstream in(path, std::ios::binary);
+    if (!in) throw Error(path + ": cannot open: " + std::strerror(errno));
+    std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    if (in.bad()) throw Error(path + ": read error");
+    return bytes;
+}
+
+}  // namespace fp

@@ -1,0 +1,81 @@
+#include <cmath>
+
+#include "scene/obj_mesh.h"
+#include "scene/triangulate.h"
+
+namespace fp {
+
+namespace {
+
+// Sets *out to the unit vector along v; false if v has no usable direction (zero, NaN, infinite).
+bool unitVector(const glm::dvec3& v, glm::vec3* out) {
+    double length = glm::length(v);
+    if (!std::isfinite(length) || !(length > 0.0)) return false;
+    glm::vec3 unit(v / length);
+    if (!std::isfinite(unit.x) || !std::isfinite(unit.y) || !std::isfinite(unit.z)) return false;
+    *out = unit;
+    return true;
+}
+
+}  // namespace
+
+std::vector<Triangle> buildTriangles(const ObjMesh& mesh, MeshRepairs* repairs) {
+    // Positions as the renderer will store them (float), so that the degeneracy test judges exactly the
+    // triangles downstream stages see.
+    std::vector<glm::dvec3> stored(mesh.positions.size());
+    std::vector<bool> finite(mesh.positions.size());
+    for (size_t i = 0; i < stored.size(); ++i) {
+        glm::vec3 p(mesh.positions[i]);
+        finite[i] = mesh.positionFinite[i] && std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z);
+        stored[i] = glm::dvec3(p);
+    }
+
+    std::vector<Triangle> triangles;
+    triangles.reserve(mesh.corners.size());
+    std::vector<glm::dvec3> polygon;
+    for (const ObjFace& face : mesh.faces) {
+        const ObjCorner* corners = &mesh.corners[face.firstCorner];
+        size_t expected = face.cornerCount - 2;  // triangles a polygon of this size yields
+
+        bool allFinite = true;
+        polygon.clear();
+        for (uint32_t i = 0; i < face.cornerCount; ++i) {
+            allFinite = allFinite && finite[corners[i].vertex];
+            polygon.push_back(stored[corners[i].vertex]);
+        }
+        if (!allFinite) {
+            repairs->nonFinite.add(face.line, expected);
+            continue;
+        }
+
+        std::vector<std::array<uint32_t, 3>> pieces = triangulate(polygon);
+        if (pieces.empty()) repairs->degenerate.add(face.line, expected);
+        bool badNormal = false;
+        for (const std::array<uint32_t, 3>& piece : pieces) {
+            Triangle t;
+            for (int k = 0; k < 3; ++k) t.p[k] = glm::vec3(polygon[piece[k]]);
+            const glm::dvec3 &p0 = polygon[piece[0]], &p1 = polygon[piece[1]], &p2 = polygon[piece[2]];
+            glm::vec3 geometric;
+            if (isDegenerate(p0, p1, p2) || !unitVector(glm::cross(p1 - p0, p2 - p0), &geometric)) {
+                repairs->degenerate.add(face.line);
+                continue;
+            }
+            for (int k = 0; k < 3; ++k) {
+                int32_t n = corners[piece[k]].normal;
+                if (n < 0) {
+                    t.n[k] = geometric;  // the file gives no normal here: flat shading
+                } else if (!mesh.normalFinite[static_cast<size_t>(n)] ||
+                           !unitVector(mesh.normals[static_cast<size_t>(n)], &t.n[k])) {
+                    t.n[k] = geometric;
+                    badNormal = true;
+                }
+            }
+            t.material = static_cast<uint32_t>(face.materialSlot + 1);
+            triangles.push_back(t);
+        }
+        if (badNormal) repairs->badNormals.add(face.line);
+    }
+    return triangles;
+}
+
+}  // namespace fp

@@ -1,0 +1,232 @@
+#include "scene/scene_file.h"
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <filesystem>
+#include <limits>
+
+#include <nlohmann/json.hpp>
+
+#include "core/error.h"
+#include "core/log.h"
+#include "scene/load.h"
+#include "scene/text_file.h"
+
+namespace fp {
+
+namespace {
+
+using nlohmann::json;
+
+// Reads values out of the parsed JSON, naming the file and the key path ("camera.fov") in errors.
+class Fields {
+  public:
+    explicit Fields(const std::string& name) : name_(name) {}
+
+    [[noreturn]] void fail(const std::string& message) const { throw Error(name_ + ": " + message); }
+
+    // Collects keys of `object` that are not `known`, for one warning at the end: typos like "fov_y"
+    // would otherwise be silently ignored.
+    void checkKeys(const json& object, const std::string& prefix, std::initializer_list<const char*> known) {
+        for (const auto& item : object.items()) {
+            bool found =
+                std::any_of(known.begin(), known.end(), [&](const char* k) { return item.key() == k; });
+            if (!found) unknown_.push_back("'" + prefix + item.key() + "'");
+        }
+    }
+    void warnUnknownKeys() const {
+        if (unknown_.empty()) return;
+        std::string list;
+        for (const std::string& k : unknown_) list += (list.empty() ? "" : ", ") + k;
+        warn(name_ + ": ignoring unknown key" + (unknown_.size() == 1 ? " " : "s ") + list);
+    }
+
+    const json& object(const json& value, const std::string& path) const {
+        if (!value.is_object()) fail(path + " must be a JSON object, got " + shown(value));
+        return value;
+    }
+
+    std::string string(const json& value, const std::string& path) const {
+        if (!value.is_string()) fail(path + " must be a string, got " + shown(value));
+        return value.get<std::string>();
+    }
+
+    // A finite number that stays finite as a float.
+    float real(const json& value, const std::string& path) const {
+        if (!value.is_number()) fail(path + " must be a number, got " + shown(value));
+        double d = value.get<double>();
+        if (!std::isfinite(static_cast<float>(d)))
+            fail(path + " must be a finite number, got " + shown(value));
+        return static_cast<float>(d);
+    }
+
+    glm::vec3 vec3(const json& value, const std::string& path) const {
+        if (!value.is_array() || value.size() != 3)
+            fail(path + " must be an array of 3 numbers, got " + shown(value));
+        glm::vec3 v;
+        for (int i = 0; i < 3; ++i)
+            v[i] = real(value[static_cast<size_t>(i)], path + "[" + std::to_string(i) + "]");
+        return v;
+    }
+
+    // An integer in [lo, hi]; 512.0 counts as an integer, 512.5 does not.
+    long long integer(const json& value, const std::string& path, long long lo, long long hi) const {
+        std::string range = "[" + std::to_string(lo) + ", " + std::to_string(hi) + "]";
+        if (value.is_number_unsigned()) {
+            unsigned long long v = value.get<unsigned long long>();
+            // nlohmann stores every non-negative integer (0 too) as unsigned.
+            if (v > static_cast<unsigned long long>(hi) || static_cast<long long>(v) < lo)
+                fail(path + " must be in " + range + ", got " + shown(value));
+            return static_cast<long long>(v);
+        }
+        if (value.is_number_integer()) {
+            long long v = value.get<long long>();
+            if (v < lo || v > hi) fail(path + " must be in " + range + ", got " + shown(value));
+            return v;
+        }
+        if (value.is_number_float()) {
+            double d = value.get<double>();
+            if (!std::isfinite(d) || d != std::floor(d))
+                fail(path + " must be an integer, got " + shown(value));
+            if (d < static_cast<double>(lo) || d > static_cast<double>(hi))
+                fail(path + " must be in " + range + ", got " + shown(value));
+            return static_cast<long long>(d);
+        }
+        fail(path + " must be an integer, got " + shown(value));
+    }
+
+  private:
+    // The offending value as JSON, shortened for the message.
+    static std::string shown(const json& value) {
+        std::string text = value.dump(-1, ' ', false, json::error_handler_t::replace);
+        return text.size() > 60 ? text.substr(0, 57) + "..." : text;
+    }
+
+    const std::string& name_;
+    std::vector<std::string> unknown_;
+};
+
+// nlohmann's message without its "[json.exception.parse_error.101] " prefix; what remains says where
+// ("parse error at line 3, column 5: ...").
+std::string withoutId(const json::exception& e) {
+    std::string what = e.what();
+    size_t start = what.find("] ");
+    return start == std::string::npos ? what : what.substr(start + 2);
+}
+
+Camera parseCamera(const json& camera, Fields& fields) {
+    fields.object(camera, "camera");
+    fields.checkKeys(camera, "camera.", {"eye", "target", "up", "fov"});
+    bool hasEye = camera.contains("eye"), hasTarget = camera.contains("target");
+    // Defaulting one of the two would put the camera somewhere the author did not choose.
+    if (!hasEye || !hasTarget)
+        fields.fail(std::string("camera needs both eye and target (") + (hasEye ? "target" : "eye") +
+                    " is missing)");
+    Camera c;
+    c.eye = fields.vec3(camera["eye"], "camera.eye");
+    c.target = fields.vec3(camera["target"], "camera.target");
+    if (camera.contains("up")) c.up = fields.vec3(camera["up"], "camera.up");
+    if (camera.contains("fov")) c.fovY = fields.real(camera["fov"], "camera.fov");
+
+    glm::dvec3 view = glm::dvec3(c.target) - glm::dvec3(c.eye), up(c.up);
+    if (glm::length(view) == 0.0) fields.fail("camera.eye and camera.target are the same point");
+    if (glm::length(up) == 0.0) fields.fail("camera.up must not be the zero vector");
+    double sine = glm::length(glm::cross(view, up)) / (glm::length(view) * glm::length(up));
+    if (!(sine > 1e-6)) fields.fail("camera.up is parallel to the view direction (target - eye)");
+    if (!(c.fovY > 0.0f && c.fovY < 180.0f))
+        fields.fail("camera.fov must be in (0, 180) degrees, got " + std::to_string(c.fovY));
+    return c;
+}
+
+RenderDefaults parseRender(const json& render, Fields& fields) {
+    fields.object(render, "render");
+    fields.checkKeys(render, "render.", {"width", "height", "spp", "max_depth", "seed", "integrator"});
+    constexpr long long kIntMax = std::numeric_limits<int>::max();
+    RenderDefaults d;
+    if (render.contains("width"))
+        d.width = static_cast<int>(fields.integer(render["width"], "render.width", 1, kIntMax));
+    if (render.contains("height"))
+        d.height = static_cast<int>(fields.integer(render["height"], "render.height", 1, kIntMax));
+    if (render.contains("spp"))
+        d.spp = static_cast<int>(fields.integer(render["spp"], "render.spp", 1, kIntMax));
+    if (render.contains("max_depth"))
+        d.maxDepth = static_cast<int>(fields.integer(render["max_depth"], "render.max_depth", 0, kIntMax));
+    if (render.contains("seed"))
+        d.seed = static_cast<uint32_t>(
+            fields.integer(render["seed"], "render.seed", 0, std::numeric_limits<uint32_t>::max()));
+    if (render.contains("integrator")) {
+        std::string integrator = fields.string(render["integrator"], "render.integrator");
+        if (integrator != "naive" && integrator != "bsdf" && integrator != "nee")
+            fields.fail("render.integrator must be one of naive, bsdf, nee; got '" + integrator + "'");
+        d.integrator = integrator;
+    }
+    return d;
+}
+
+}  // namespace
+
+Scene parseSceneFile(std::string_view bytes, const std::string& name, const MeshLoader& loadMesh) {
+    std::string_view text = requireText(bytes, name);
+    json root;
+    try {
+        root = json::parse(text.begin(), text.end(), nullptr, /*allow_exceptions=*/true,
+                           /*ignore_comments=*/true);
+    } catch (const json::parse_error& e) {
+        throw Error(name + ": invalid JSON: " + withoutId(e) + " (byte " + std::to_string(e.byte) + ")");
+    } catch (const json::exception& e) {
+        // Numbers beyond double range (1e999) are refused while parsing, without a position.
+        throw Error(name + ": invalid JSON: " + withoutId(e));
+    }
+    Fields fields(name);
+    fields.object(root, "the top level");
+    fields.checkKeys(root, "", {"mesh", "camera", "render"});
+    if (!root.contains("mesh")) fields.fail("missing \"mesh\" (the OBJ file to render)");
+    std::string mesh = fields.string(root["mesh"], "mesh");
+    if (mesh.empty()) fields.fail("mesh must not be empty");
+    std::optional<Camera> camera;
+    if (root.contains("camera")) camera = parseCamera(root["camera"], fields);
+    RenderDefaults defaults;
+    if (root.contains("render")) defaults = parseRender(root["render"], fields);
+    // Only after the whole file checked out: a typo in it should not cost a long mesh load first.
+    Scene scene = loadMesh(mesh);
+    fields.warnUnknownKeys();
+    scene.camera = camera;
+    scene.defaults = defaults;
+    scene.source = name;
+    return scene;
+}
+
+namespace fs = std::filesystem;
+
+static std::string lowercaseExtension(const fs::path& path) {
+    std::string ext = path.extension().string();
+    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
+    return ext;
+}
+
+Scene loadSceneFile(const std::string& path) {
+    std::string bytes = readFileBytes(path);
+    fs::path directory = fs::path(path).parent_path();
+    return parseSceneFile(bytes, path, [&](const std::string& mesh) {
+        fs::path meshPath = fs::path(mesh).is_absolute() ? fs::path(mesh) : directory / mesh;
+        if (lowercaseExtension(meshPath) != ".obj")
+            throw Error(path + ": mesh '" + mesh + "' must be an .obj file");
+        std::error_code ec;
+        if (!fs::exists(meshPath, ec))
+            throw Error(path + ": mesh '" + mesh + "' not found (looked for " + meshPath.string() + ")");
+        return loadObj(meshPath.string());
+    });
+}
+
+Scene loadScene(const std::string& path) {
+    if (path.empty()) throw Error("no scene file given (empty path)");
+    std::error_code ec;
+    if (!fs::exists(path, ec)) throw Error(path + ": no such file");
+    std::string ext = lowercaseExtension(path);
+    if (ext == ".obj") return loadObj(path);
+    if (ext == ".json") return loadSceneFile(path);
+    throw Error(path + ": unknown scene file type '" + ext + "' (expected .obj or .json)");
+}
+
+}  // namespace fp

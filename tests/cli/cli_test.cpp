@@ -1,0 +1,157 @@
+// build/fragpath as a user runs it: exit codes, messages and the files it writes (or must not write).
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+
+#include "image/image.h"
+#include "image/image_stats.h"
+
+namespace fp {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct CliRun {
+    int exitCode;
+    std::string output;  // stdout and stderr together
+};
+
+CliRun fragpath(const std::string& args) {
+    std::string command = std::string("LP_NUM_THREADS=2 ") + FP_BINARY + " " + args + " 2>&1";
+    FILE* pipe = popen(command.c_str(), "r");
+    std::string output;
+    char buffer[4096];
+    while (size_t n = fread(buffer, 1, sizeof buffer, pipe)) output.append(buffer, n);
+    int status = pclose(pipe);
+    return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, output};
+}
+
+class Cli : public ::testing::Test {
+  protected:
+    void SetUp() override {
+        dir_ = fs::temp_directory_path() / ("fragpath_cli_" + std::to_string(getpid()) + "_" +
+                                            ::testing::UnitTest::GetInstance()->current_test_info()->name());
+        fs::create_directories(dir_);
+    }
+    void TearDown() override { fs::remove_all(dir_); }
+    std::string path(const std::string& name) const { return (dir_ / name).string(); }
+    std::string write(const std::string& name, const std::string& text) const {
+        std::ofstream(dir_ / name, std::ios::binary) << text;
+        return path(name);
+    }
+    // Expects failure with a message containing `fragment`, and no image written.
+    void expectError(const std::string& args, const std::string& fragment) {
+        CliRun r = fragpath(args + " -o " + path("out.png"));
+        EXPECT_EQ(r.exitCode, 1) << r.output;
+        EXPECT_NE(r.output.find("fragpath: error: "), std::string::npos) << r.output;
+        EXPECT_NE(r.output.find(fragment), std::string::npos) << "expected '" << fragment << "' in: " << r.output;
+        EXPECT_FALSE(fs::exists(path("out.png")));
+    }
+    fs::path dir_;
+};
+
+const char* kTriangleObj = "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 2 3\nf 1 3 4\n";
+
+TEST_F(Cli, RendersTheBuiltInCornellBoxToEveryFormat) {
+    for (const char* ext : {"png", "exr", "pfm"}) {
+        CliRun r = fragpath("render --size 16x12 --spp 2 -o " + path(std::string("cornell.") + ext));
+        ASSERT_EQ(r.exitCode, 0) << r.output;
+        EXPECT_NE(r.output.find("paths/s"), std::string::npos) << r.output;
+        EXPECT_TRUE(fs::file_size(path(std::string("cornell.") + ext)) > 0);
+    }
+    Image exr = readImage(path("cornell.exr")), pfm = readImage(path("cornell.pfm"));
+    EXPECT_EQ(exr.width, 16);
+    EXPECT_EQ(exr.height, 12);
+    EXPECT_EQ(exr.pixels, pfm.pixels) << "same seed, same samples, same linear image in both formats";
+    EXPECT_TRUE(allFinite(exr));
+    EXPECT_GT(meanColor(exr).x, 0.01);
+}
+
+TEST_F(Cli, HelpListsTheOptions) {
+    CliRun r = fragpath("render --help");
+    EXPECT_EQ(r.exitCode, 0);
+    for (const char* flag : {"--size", "--spp", "--max-depth", "--seed", "--integrator", "--eye", "--target", "--up",
+                             "--fov", "--stats", "--exposure", "--tonemap"})
+        EXPECT_NE(r.output.find(flag), std::string::npos) << flag;
+}
+
+TEST_F(Cli, StatsReportTheSceneAndTheBvh) {
+    CliRun r = fragpath("render --size 8x8 --spp 1 --stats -o " + path("s.png"));
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    for (const char* field : {"triangles        32 (2 emissive)", "SAH cost", "gpu memory", "llvmpipe", "rays per path"})
+        EXPECT_NE(r.output.find(field), std::string::npos) << field << " in " << r.output;
+}
+
+TEST_F(Cli, CameraFlagsOverrideTheScene) {
+    ASSERT_EQ(fragpath("render --size 8x8 --spp 1 -o " + path("a.pfm")).exitCode, 0);
+    CliRun r = fragpath("render --size 8x8 --spp 1 --eye 278,273,-800 --target 278,273,0 --fov 10 -o " + path("b.pfm"));
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_NE(readImage(path("a.pfm")).pixels, readImage(path("b.pfm")).pixels);
+}
+
+TEST_F(Cli, RendersAnObjWithoutCameraByFramingIt) {
+    CliRun r = fragpath("render " + write("t.obj", kTriangleObj) + " --size 8x8 --spp 1 -o " + path("t.pfm"));
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_TRUE(fs::exists(path("t.pfm")));
+}
+
+TEST_F(Cli, BadFlagsAreErrors) {
+    expectError("render --bogus", "unknown option --bogus");
+    expectError("render --spp", "needs a value");
+    expectError("render --spp 0", "--spp");
+    expectError("render --spp ten", "--spp");
+    expectError("render --size 10", "WIDTHxHEIGHT");
+    expectError("render --size 0x10", "WIDTHxHEIGHT");
+    expectError("render --max-depth -1", "--max-depth");
+    expectError("render --integrator magic", "naive, bsdf or nee");
+    expectError("render --tonemap sepia", "sepia");
+    expectError("render --eye 1,2", "X,Y,Z");
+    expectError("render --eye 1,2,nan", "finite");
+    expectError("render --fov 180", "field of view");
+    expectError("render --eye 1,1,1 --target 1,1,1", "same point");
+    expectError("render --up 0,0,1", "parallel");
+}
+
+TEST_F(Cli, BadInputFilesAreErrorsNamingTheFile) {
+    expectError("render " + path("missing.obj"), "missing.obj");
+    expectError("render " + dir_.string(), dir_.string());
+    expectError("render " + write("empty.obj", ""), "empty.obj");
+    expectError("render " + write("bad.obj", "v 0 0 0\nv 1 abc 0\nv 0 1 0\nf 1 2 3\n"), "bad.obj:2");
+    expectError("render " + write("bad.json", "{\"mesh\": "), "bad.json");
+}
+
+TEST_F(Cli, UnwritableOrUnknownOutputIsAnErrorBeforeRendering) {
+    CliRun r = fragpath("render --spp 1 -o " + path("no/such/dir/out.png"));
+    EXPECT_EQ(r.exitCode, 1);
+    EXPECT_NE(r.output.find("does not exist"), std::string::npos) << r.output;
+    r = fragpath("render --spp 1 -o " + path("out.bmp"));
+    EXPECT_EQ(r.exitCode, 1);
+    EXPECT_NE(r.output.find("unknown image format"), std::string::npos) << r.output;
+    EXPECT_FALSE(fs::exists(path("out.bmp")));
+}
+
+TEST_F(Cli, InterruptedRenderStillWritesWhatItHas) {
+    // SIGINT a long render once it has started; it must write an image of the samples done so far.
+    std::string out = path("partial.pfm");
+    std::string command = std::string("LP_NUM_THREADS=2 ") + FP_BINARY + " render --size 64x64 --spp 100000 -o " + out +
+                          " > " + path("log.txt") + " 2>&1 & pid=$!; sleep 3; kill -INT $pid; wait $pid; echo $? > " +
+                          path("code.txt");
+    ASSERT_EQ(std::system(command.c_str()), 0);
+    std::ifstream code(path("code.txt"));
+    int exitCode = -1;
+    code >> exitCode;
+    std::ifstream logFile(path("log.txt"));
+    std::string log((std::istreambuf_iterator<char>(logFile)), std::istreambuf_iterator<char>());
+    EXPECT_EQ(exitCode, 130) << log;
+    EXPECT_NE(log.find("interrupted after"), std::string::npos) << log;
+    Image partial = readImage(out);
+    EXPECT_EQ(partial.width, 64);
+    EXPECT_GT(meanColor(partial).x, 0.01);
+}
+
+}  // namespace
+}  // namespace fp
