@@ -6,5 +6,6 @@
 namespace fp {
 
 int renderCommand(const std::vector<std::string>& args);
+int benchCommand(const std::vector<std::string>& args);
 
 }  // namespace fp

@@ -13,6 +13,7 @@ static const char* kUsage =
     "\n"
     "commands:\n"
     "  render [SCENE]   render an OBJ or scene file (default: the built-in Cornell box) to an image\n"
+    "  bench [SCENE]    measure time to first frame, paths/s and rays/s (median of several runs)\n"
     "\n"
     "Run 'fragpath <command> --help' for the options of a command.\n";
 
@@ -26,6 +27,7 @@ int main(int argc, char** argv) {
     args.erase(args.begin());
     try {
         if (command == "render") return fp::renderCommand(args);
+        if (command == "bench") return fp::benchCommand(args);
         std::fprintf(stderr, "fragpath: unknown command '%s'\n\n%s", command.c_str(), kUsage);
         return 2;
     } catch (const fp::Error& e) {

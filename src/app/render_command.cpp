@@ -108,7 +108,7 @@ int renderCommand(const std::vector<std::string>& argv) {
     if (auto v = args.vec3("--target")) camera.target = *v;
     if (auto v = args.vec3("--up")) camera.up = *v;
     if (auto v = args.number("--fov")) camera.fovY = *v;
-    validateCamera(camera, "camera");
+    validateCamera(camera, "camera");  // flags can break a valid scene camera
 
     std::unique_ptr<GlContext> context = createOsMesaContext();
     Renderer renderer(scene, ShaderLibrary(args.text("--shader-dir").value_or("")));

@@ -53,7 +53,7 @@ class BinnedSahSplitter {
     explicit BinnedSahSplitter(const BvhBuildOptions& options)
         : options_(options),
           binCount_(options.binCount),
-          bins_(6 * size_t(binCount_)),
+          bins_(3 * size_t(binCount_)),
           used_(binCount_),
           rightBounds_(binCount_),
           rightCount_(binCount_) {}
@@ -73,29 +73,15 @@ class BinnedSahSplitter {
         if (end - begin == 2) return splitPair(refs, begin, rb, mapping);
 
         // One pass bins every primitive along all three axes at once (Wald 2007, section 3.2).
-        auto binOne = [&](const PrimRef& r, Bin* set) {
-            const glm::vec3 c = r.centroid2();
+        for (uint32_t i = begin; i < end; ++i) {
+            const glm::vec3 c = refs[i].centroid2();
             for (int axis = 0; axis < 3; ++axis) {
-                Bin& bin = set[size_t(axis) * binCount_ + mapping[axis](c[axis])];
-                bin.bounds.grow(r.lo, r.hi);
+                const int k = mapping[axis](c[axis]);
+                Bin& bin = bins_[size_t(axis) * binCount_ + k];
+                bin.bounds.grow(refs[i].lo, refs[i].hi);
                 ++bin.count;
             }
-        };
-        Bin* set0 = bins_.data();
-        uint32_t i = begin;
-        if (end - begin >= 64) {
-            Bin* set1 = set0 + 3 * size_t(binCount_);
-            for (; i + 1 < end; i += 2) {
-                binOne(refs[i], set0);
-                binOne(refs[i + 1], set1);
-            }
-            for (int k = 0; k < 3 * binCount_; ++k) {
-                set0[k].bounds.grow(set1[k].bounds);
-                set0[k].count += set1[k].count;
-                set1[k] = Bin{};
-            }
         }
-        for (; i < end; ++i) binOne(refs[i], set0);
 
         // A plane between bins p - 1 and p splits them into [0, p) and [p, binCount). Its SAH cost is
         // traversalCost + intersectCost * (A_L N_L + A_R N_R) / A; only the bracket is compared here.

@@ -4,6 +4,8 @@
 #include <GL/osmesa.h>
 // clang-format on
 
+#include <cstdlib>
+#include <string>
 #include <vector>
 
 #include "core/error.h"
@@ -16,6 +18,11 @@ namespace {
 class OsMesaContext : public GlContext {
   public:
     OsMesaContext() {
+        // Mesa crashes inside OSMesaCreateContextAttribs when GALLIUM_DRIVER names a driver it lacks.
+        const char* driver = std::getenv("GALLIUM_DRIVER");
+        if (driver && std::string(driver) != "llvmpipe" && std::string(driver) != "softpipe")
+            throw Error(std::string("OSMesa: GALLIUM_DRIVER=") + driver +
+                        " is not a software driver OSMesa can use (unset it, or use llvmpipe)");
         // Core profile contexts are only offered through the attribute list; ask for the newest
         // version first and fall back to the 4.1 the shaders need.
         for (int minor : {5, 1}) {
@@ -25,8 +32,13 @@ class OsMesaContext : public GlContext {
             context_ = OSMesaCreateContextAttribs(attribs, nullptr);
             if (context_) break;
         }
-        if (!context_)
-            throw Error("OSMesa: could not create an OpenGL 4.1 core context (is Mesa's libosmesa6 installed?)");
+        if (!context_) {
+            std::string hint;
+            for (const char* variable : {"MESA_GL_VERSION_OVERRIDE", "GALLIUM_DRIVER"})
+                if (const char* value = std::getenv(variable))
+                    hint += std::string("; ") + variable + "=" + value + " is set and may be the cause";
+            throw Error("OSMesa: could not create an OpenGL 4.1 core context" + hint);
+        }
         // OSMesa will not make a context current without a client buffer, even though all rendering
         // goes to framebuffer objects; a tiny one is enough.
         buffer_.resize(16 * 16 * 4);

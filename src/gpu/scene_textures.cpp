@@ -19,7 +19,7 @@ struct BufferSpec {
 
 }  // namespace
 
-SceneTextures::SceneTextures(const PackedScene& s) {
+SceneTextures::SceneTextures(const PackedScene& s, size_t maxTexels) {
     // A zero-size buffer texture is not allowed; empty lists (no lights) get one unused texel.
     static const glm::vec4 kUnused(0.0f);
     auto spec = [](const char* name, const auto& v, GLenum format) {
@@ -32,10 +32,13 @@ SceneTextures::SceneTextures(const PackedScene& s) {
         spec("BVH node bounds", s.nodeBounds, GL_RGBA32F), spec("BVH node links", s.nodeLinks, GL_RGBA32UI),
         spec("materials", s.materials, GL_RGBA32F), spec("lights", s.lights, GL_RGBA32F)};
 
-    GLint maxTexels = 0;
-    glGetIntegerv(GL_MAX_TEXTURE_BUFFER_SIZE, &maxTexels);
+    if (maxTexels == 0) {
+        GLint limit = 0;
+        glGetIntegerv(GL_MAX_TEXTURE_BUFFER_SIZE, &limit);
+        maxTexels = size_t(limit);
+    }
     for (const BufferSpec& b : specs)
-        if (b.texels > size_t(maxTexels))
+        if (b.texels > maxTexels)
             throw Error("scene too large for this GPU: the " + std::string(b.name) + " buffer needs " +
                         std::to_string(b.texels) + " texels, GL_MAX_TEXTURE_BUFFER_SIZE is " +
                         std::to_string(maxTexels) + " (" + std::to_string(s.triangleCount) + " triangles)");

@@ -9,8 +9,9 @@ namespace fp {
 
 class SceneTextures {
   public:
-    // Throws fp::Error if a buffer exceeds GL_MAX_TEXTURE_BUFFER_SIZE, before anything is uploaded.
-    explicit SceneTextures(const PackedScene& scene);
+    // Throws fp::Error if a buffer exceeds GL_MAX_TEXTURE_BUFFER_SIZE (or `maxTexels`, when given, to
+    // check the message without a multi-gigabyte scene), before anything is uploaded.
+    explicit SceneTextures(const PackedScene& scene, size_t maxTexels = 0);
     ~SceneTextures();
     SceneTextures(const SceneTextures&) = delete;
     SceneTextures& operator=(const SceneTextures&) = delete;

@@ -27,14 +27,16 @@ namespace fp {
 void validateCamera(const Camera& c, const std::string& where) {
     auto finite = [](const glm::vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); };
     if (!finite(c.eye) || !finite(c.target) || !finite(c.up) || !std::isfinite(c.fovY))
-        throw Error(where + ": camera values must be finite numbers");
-    if (c.eye == c.target) throw Error(where + ": camera eye and target are the same point");
-    if (glm::length(c.up) == 0.0f) throw Error(where + ": camera up vector is zero");
-    glm::vec3 forward = glm::normalize(c.target - c.eye);
-    if (glm::length(glm::cross(forward, glm::normalize(c.up))) < 1e-6f)
-        throw Error(where + ": camera up vector is parallel to the viewing direction");
+        throw Error(where + " values must be finite numbers");
+    // In double: target - eye of two huge floats would overflow in float and slip past the checks.
+    glm::dvec3 view = glm::dvec3(c.target) - glm::dvec3(c.eye), up(c.up);
+    if (glm::length(view) == 0.0) throw Error(where + ".eye and " + where + ".target are the same point");
+    if (glm::length(up) == 0.0) throw Error(where + ".up must not be the zero vector");
+    double sine = glm::length(glm::cross(view, up)) / (glm::length(view) * glm::length(up));
+    if (!(sine > 1e-6)) throw Error(where + ".up is parallel to the view direction (target - eye)");
     if (!(c.fovY > 0.0f && c.fovY < 180.0f))
-        throw Error(where + ": field of view must be between 0 and 180 degrees, got " + std::to_string(c.fovY));
+        throw Error(where + ".fov must be in (0, 180) degrees (the vertical field of view), got " +
+                    std::to_string(c.fovY));
 }
 
 }  // namespace fp

@@ -72,8 +72,9 @@ Camera frameBounds(const Aabb& bounds, float fovY = 40.0f);
 
 namespace fp {
 
-// Throws fp::Error (prefixed with `where`) for a camera that cannot form an image: non-finite values,
-// eye == target, up zero or parallel to the view direction, field of view outside (0, 180).
+// Throws fp::Error for a camera that cannot form an image: non-finite values, eye == target, up zero
+// or parallel to the view direction, field of view outside (0, 180). `where` names the camera in the
+// message as its fields are named ("camera" gives "camera.fov ...").
 void validateCamera(const Camera& camera, const std::string& where);
 
 }  // namespace fp

@@ -129,13 +129,11 @@ Camera parseCamera(const json& camera, Fields& fields) {
     if (camera.contains("up")) c.up = fields.vec3(camera["up"], "camera.up");
     if (camera.contains("fov")) c.fovY = fields.real(camera["fov"], "camera.fov");
 
-    glm::dvec3 view = glm::dvec3(c.target) - glm::dvec3(c.eye), up(c.up);
-    if (glm::length(view) == 0.0) fields.fail("camera.eye and camera.target are the same point");
-    if (glm::length(up) == 0.0) fields.fail("camera.up must not be the zero vector");
-    double sine = glm::length(glm::cross(view, up)) / (glm::length(view) * glm::length(up));
-    if (!(sine > 1e-6)) fields.fail("camera.up is parallel to the view direction (target - eye)");
-    if (!(c.fovY > 0.0f && c.fovY < 180.0f))
-        fields.fail("camera.fov must be in (0, 180) degrees, got " + std::to_string(c.fovY));
+    try {
+        validateCamera(c, "camera");
+    } catch (const Error& e) {
+        fields.fail(e.what());
+    }
     return c;
 }
 

@@ -101,6 +101,29 @@ inline Mesh unevenDensity(size_t denseCount, size_t sparseCount, uint32_t seed) 
     return mesh;
 }
 
+// Needles and slivers, where Möller–Trumbore's determinant is mostly rounding error: two vertices a
+// rounding step apart, or three nearly on a line.
+inline Mesh sliverSoup(size_t count, uint32_t seed) {
+    std::mt19937 rng(seed);
+    Mesh mesh;
+    const Aabb centers{glm::vec3(0.0f), glm::vec3(4.0f)};
+    for (size_t i = 0; i < count; ++i) {
+        glm::vec3 a = uniformIn(rng, centers), b = a + unitVector(rng);
+        glm::vec3 c = i % 2 ? b + 1e-6f * unitVector(rng) : 0.5f * (a + b) + 1e-6f * unitVector(rng);
+        mesh.push_back({a, b, c});
+    }
+    return mesh;
+}
+
+inline Mesh translated(Mesh mesh, glm::vec3 offset) {
+    for (TriangleVerts& t : mesh) {
+        t.p0 += offset;
+        t.p1 += offset;
+        t.p2 += offset;
+    }
+    return mesh;
+}
+
 struct NamedMesh {
     std::string name;
     Mesh mesh;
@@ -114,6 +137,8 @@ inline std::vector<NamedMesh> testMeshes() {
         {"coincidentGrid", coincidentGrid(12, 3)},
         {"identical", identicalTriangles(200)},
         {"uneven", unevenDensity(2000, 200, 2)},
+        {"slivers", sliverSoup(1000, 5)},
+        {"farFromOrigin", translated(randomSoup(1000, 6), {3000.0f, -2000.0f, 1000.0f})},
         {"one", randomSoup(1, 3)},
         {"two", randomSoup(2, 4)},
         {"empty", {}},

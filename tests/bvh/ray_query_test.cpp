@@ -328,8 +328,8 @@ TEST(ClosestHit, MatchesBruteForceOnEveryMeshAndBuilder) {
                 options.maxLeafSize = maxLeafSize;
                 size_t hits = 0;
                 EXPECT_TRUE(agrees(b.build(bounds, options), m.mesh, rays, expected, hits));
-                // Not vacuous: a good share of the rays hit something.
-                EXPECT_GT(hits, rays.size() / 5);
+                // Not vacuous: a fair share of the rays hit something (slivers are hit least).
+                EXPECT_GT(hits, rays.size() / 10);
             }
     }
 }

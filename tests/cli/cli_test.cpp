@@ -20,8 +20,8 @@ struct CliRun {
     std::string output;  // stdout and stderr together
 };
 
-CliRun fragpath(const std::string& args) {
-    std::string command = std::string("LP_NUM_THREADS=2 ") + FP_BINARY + " " + args + " 2>&1";
+CliRun fragpath(const std::string& args, const std::string& environment = "") {
+    std::string command = "LP_NUM_THREADS=2 " + environment + " " + FP_BINARY + " " + args + " 2>&1";
     FILE* pipe = popen(command.c_str(), "r");
     std::string output;
     char buffer[4096];
@@ -112,6 +112,7 @@ TEST_F(Cli, BadFlagsAreErrors) {
     expectError("render --eye 1,2", "X,Y,Z");
     expectError("render --eye 1,2,nan", "finite");
     expectError("render --fov 180", "field of view");
+    expectError("render --eye 1e38,0,0 --target -1e38,0,0 --up 1,0,0", "parallel");
     expectError("render --eye 1,1,1 --target 1,1,1", "same point");
     expectError("render --up 0,0,1", "parallel");
 }
@@ -132,6 +133,18 @@ TEST_F(Cli, UnwritableOrUnknownOutputIsAnErrorBeforeRendering) {
     EXPECT_EQ(r.exitCode, 1);
     EXPECT_NE(r.output.find("unknown image format"), std::string::npos) << r.output;
     EXPECT_FALSE(fs::exists(path("out.bmp")));
+}
+
+TEST_F(Cli, NoSuitableGlContextIsAClearError) {
+    // Capping Mesa at OpenGL 3.3 leaves no 4.1 core context to create.
+    CliRun r = fragpath("render --spp 1 -o " + path("x.png"), "MESA_GL_VERSION_OVERRIDE=3.3");
+    EXPECT_EQ(r.exitCode, 1) << r.output;
+    EXPECT_NE(r.output.find("could not create an OpenGL 4.1 core context"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("MESA_GL_VERSION_OVERRIDE=3.3 is set"), std::string::npos) << r.output;
+    EXPECT_FALSE(fs::exists(path("x.png")));
+    r = fragpath("render --spp 1 -o " + path("x.png"), "GALLIUM_DRIVER=nosuchdriver");
+    EXPECT_EQ(r.exitCode, 1) << r.output;
+    EXPECT_NE(r.output.find("GALLIUM_DRIVER=nosuchdriver"), std::string::npos) << r.output;
 }
 
 TEST_F(Cli, InterruptedRenderStillWritesWhatItHas) {
