@@ -19,7 +19,8 @@ Args::Args(const std::vector<std::string>& argv, const std::set<std::string>& va
             } else if (valued.count(a)) {
                 // A value may be negative ("--eye -1,0,0") but is never another option.
                 bool nextIsOption = i + 1 < argv.size() && argv[i + 1].size() > 1 && argv[i + 1][0] == '-' &&
-                                    !std::isdigit(static_cast<unsigned char>(argv[i + 1][1])) && argv[i + 1][1] != '.';
+                                    !std::isdigit(static_cast<unsigned char>(argv[i + 1][1])) &&
+                                    argv[i + 1][1] != '.';
                 if (i + 1 >= argv.size() || nextIsOption) throw Error("option " + a + " needs a value");
                 values_[a] = argv[++i];
             } else {
@@ -51,8 +52,8 @@ std::optional<int> Args::integer(const std::string& flag, int min, int max) cons
     char* end = nullptr;
     long v = std::strtol(s->c_str(), &end, 10);
     if (s->empty() || end != s->c_str() + s->size() || v < min || v > max)
-        throw Error("option " + flag + ": '" + *s + "' is not a whole number from " + std::to_string(min) + " to " +
-                    std::to_string(max));
+        throw Error("option " + flag + ": '" + *s + "' is not a whole number from " + std::to_string(min) +
+                    " to " + std::to_string(max));
     return int(v);
 }
 

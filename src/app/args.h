@@ -22,8 +22,8 @@ class Args {
     std::optional<std::string> text(const std::string& flag) const;
     std::optional<int> integer(const std::string& flag, int min, int max) const;
     std::optional<float> number(const std::string& flag) const;
-    std::optional<glm::vec3> vec3(const std::string& flag) const;     // "X,Y,Z"
-    std::optional<glm::ivec2> size(const std::string& flag) const;    // "WxH"
+    std::optional<glm::vec3> vec3(const std::string& flag) const;   // "X,Y,Z"
+    std::optional<glm::ivec2> size(const std::string& flag) const;  // "WxH"
     const std::vector<std::string>& positional() const { return positional_; }
 
   private:

@@ -50,9 +50,13 @@ const char* kRenderUsage =
 
 std::atomic<bool> interrupted{false};
 
-extern "C" void onInterrupt(int) { interrupted = true; }
+extern "C" void onInterrupt(int) {
+    interrupted = true;
+}
 
-double processCpuSeconds() { return double(std::clock()) / CLOCKS_PER_SEC; }
+double processCpuSeconds() {
+    return double(std::clock()) / CLOCKS_PER_SEC;
+}
 
 // Fails before a long render, not after it, when the output cannot be written.
 void checkOutputPath(const std::string& path) {
@@ -62,8 +66,10 @@ void checkOutputPath(const std::string& path) {
         throw Error("output " + path + ": unknown image format '" + ext + "' (use .png, .exr or .pfm)");
     std::filesystem::path dir = std::filesystem::path(path).parent_path();
     if (dir.empty()) dir = ".";
-    if (!std::filesystem::is_directory(dir)) throw Error("output " + path + ": directory " + dir.string() + " does not exist");
-    if (access(dir.c_str(), W_OK) != 0) throw Error("output " + path + ": directory " + dir.string() + " is not writable");
+    if (!std::filesystem::is_directory(dir))
+        throw Error("output " + path + ": directory " + dir.string() + " does not exist");
+    if (access(dir.c_str(), W_OK) != 0)
+        throw Error("output " + path + ": directory " + dir.string() + " is not writable");
     if (std::filesystem::is_directory(path)) throw Error("output " + path + " is a directory");
 }
 
@@ -71,14 +77,15 @@ void checkOutputPath(const std::string& path) {
 
 int renderCommand(const std::vector<std::string>& argv) {
     Args args(argv,
-              {"-o", "--output", "--size", "--spp", "--max-depth", "--seed", "--integrator", "--eye", "--target",
-               "--up", "--fov", "--exposure", "--tonemap", "--samples-per-pass", "--shader-dir"},
+              {"-o", "--output", "--size", "--spp", "--max-depth", "--seed", "--integrator", "--eye",
+               "--target", "--up", "--fov", "--exposure", "--tonemap", "--samples-per-pass", "--shader-dir"},
               {"--stats", "--quiet", "-h", "--help"});
     if (args.has("-h") || args.has("--help")) {
         std::fputs(kRenderUsage, stdout);
         return 0;
     }
-    if (args.positional().size() > 1) throw Error("render takes one scene file, got " + std::to_string(args.positional().size()));
+    if (args.positional().size() > 1)
+        throw Error("render takes one scene file, got " + std::to_string(args.positional().size()));
     std::string output = args.text("-o").value_or(args.text("--output").value_or("render.png"));
     checkOutputPath(output);
     DisplaySettings display;
@@ -120,7 +127,8 @@ int renderCommand(const std::vector<std::string>& argv) {
     double firstFrameSeconds = 0.0;
     renderer.render(spp, [&](int done) {
         if (firstFrameSeconds == 0.0)
-            firstFrameSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+            firstFrameSeconds =
+                std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         if (!quiet) progress.update(done);
         return !interrupted.load();
     });
@@ -134,28 +142,31 @@ int renderCommand(const std::vector<std::string>& argv) {
     int done = renderer.samples();
     double paths = double(settings.width) * settings.height * done;
     if (!quiet)
-        std::fprintf(stderr, "%s: %d spp at %dx%d, %s, depth %d: %.2f s, %.3g paths/s, %.3g rays/s\n", output.c_str(),
-                     done, settings.width, settings.height, integratorName(settings.integrator), settings.maxDepth,
-                     seconds, paths / seconds, acc.raysTraced() / seconds);
+        std::fprintf(stderr, "%s: %d spp at %dx%d, %s, depth %d: %.2f s, %.3g paths/s, %.3g rays/s\n",
+                     output.c_str(), done, settings.width, settings.height,
+                     integratorName(settings.integrator), settings.maxDepth, seconds, paths / seconds,
+                     acc.raysTraced() / seconds);
     if (showStats) {
         const SceneStats& s = renderer.stats();
         std::printf("renderer         %s\n", context->description().c_str());
         std::printf("scene            %s\n", scene.source.c_str());
         std::printf("triangles        %u (%u emissive)\n", s.triangles, s.emitters);
-        std::printf("bvh              %u nodes, %u leaves, depth %u, leaf size %u..%u (mean %.2f), SAH cost %.2f\n",
-                    s.bvh.nodeCount, s.bvh.leafCount, s.bvh.maxDepth, s.bvh.minLeafSize, s.bvh.maxLeafSize,
-                    s.bvh.meanLeafSize, s.bvh.sahCost);
+        std::printf(
+            "bvh              %u nodes, %u leaves, depth %u, leaf size %u..%u (mean %.2f), SAH cost %.2f\n",
+            s.bvh.nodeCount, s.bvh.leafCount, s.bvh.maxDepth, s.bvh.minLeafSize, s.bvh.maxLeafSize,
+            s.bvh.meanLeafSize, s.bvh.sahCost);
         std::printf("bvh build        %.3f s (%.3g triangles/s)\n", s.bvhBuildSeconds,
                     s.bvhBuildSeconds > 0 ? s.triangles / s.bvhBuildSeconds : 0.0);
-        std::printf("gpu memory       %zu bytes (%.1f per triangle; positions + BVH %.1f per triangle)\n", s.gpuBytes,
-                    double(s.gpuBytes) / s.triangles, double(s.gpuGeometryBytes) / s.triangles);
+        std::printf("gpu memory       %zu bytes (%.1f per triangle; positions + BVH %.1f per triangle)\n",
+                    s.gpuBytes, double(s.gpuBytes) / s.triangles, double(s.gpuGeometryBytes) / s.triangles);
         std::printf("first frame      %.3f s after start (load, build, upload, shader compile, first pass)\n",
                     firstFrameSeconds);
-        std::printf("samples          %d per pixel, %.0f paths, %.0f rays (%.2f rays per path)\n", done, paths,
-                    acc.raysTraced(), acc.raysTraced() / paths);
-        std::printf("throughput       %.3g paths/s, %.3g rays/s, %.3g paths per CPU-second\n", paths / seconds,
-                    acc.raysTraced() / seconds, paths / cpuSeconds);
-        std::printf("dropped samples  %llu (NaN or Inf, replaced by 0)\n", (unsigned long long)acc.droppedSamples());
+        std::printf("samples          %d per pixel, %.0f paths, %.0f rays (%.2f rays per path)\n", done,
+                    paths, acc.raysTraced(), acc.raysTraced() / paths);
+        std::printf("throughput       %.3g paths/s, %.3g rays/s, %.3g paths per CPU-second\n",
+                    paths / seconds, acc.raysTraced() / seconds, paths / cpuSeconds);
+        std::printf("dropped samples  %llu (NaN or Inf, replaced by 0)\n",
+                    (unsigned long long)acc.droppedSamples());
     }
     if (done < spp) {
         std::fprintf(stderr, "fragpath: interrupted after %d of %d spp; %s holds those samples\n", done, spp,

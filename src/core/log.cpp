@@ -14,8 +14,12 @@ void warn(const std::string& message) {
     std::fprintf(stderr, "warning: %s\n", message.c_str());
 }
 
-WarningCapture::WarningCapture() : previous_(activeCapture) { activeCapture = this; }
-WarningCapture::~WarningCapture() { activeCapture = previous_; }
+WarningCapture::WarningCapture() : previous_(activeCapture) {
+    activeCapture = this;
+}
+WarningCapture::~WarningCapture() {
+    activeCapture = previous_;
+}
 
 bool WarningCapture::contains(const std::string& fragment) const {
     for (const std::string& m : messages_)

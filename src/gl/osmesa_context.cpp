@@ -26,9 +26,11 @@ class OsMesaContext : public GlContext {
         // Core profile contexts are only offered through the attribute list; ask for the newest
         // version first and fall back to the 4.1 the shaders need.
         for (int minor : {5, 1}) {
-            const int attribs[] = {OSMESA_FORMAT, OSMESA_RGBA,          OSMESA_DEPTH_BITS,           0,
-                                   OSMESA_PROFILE, OSMESA_CORE_PROFILE, OSMESA_CONTEXT_MAJOR_VERSION, 4,
-                                   OSMESA_CONTEXT_MINOR_VERSION, minor, 0};
+            // clang-format off
+            const int attribs[] = {OSMESA_FORMAT, OSMESA_RGBA, OSMESA_DEPTH_BITS, 0,
+                                   OSMESA_PROFILE, OSMESA_CORE_PROFILE,
+                                   OSMESA_CONTEXT_MAJOR_VERSION, 4, OSMESA_CONTEXT_MINOR_VERSION, minor, 0};
+            // clang-format on
             context_ = OSMesaCreateContextAttribs(attribs, nullptr);
             if (context_) break;
         }
@@ -62,6 +64,8 @@ class OsMesaContext : public GlContext {
 
 }  // namespace
 
-std::unique_ptr<GlContext> createOsMesaContext() { return std::make_unique<OsMesaContext>(); }
+std::unique_ptr<GlContext> createOsMesaContext() {
+    return std::make_unique<OsMesaContext>();
+}
 
 }  // namespace fp

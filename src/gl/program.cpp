@@ -61,7 +61,9 @@ Program::Program(const ShaderLibrary& library, const std::string& vertexPath, co
     }
 }
 
-Program::~Program() { glDeleteProgram(id_); }
+Program::~Program() {
+    glDeleteProgram(id_);
+}
 
 GLint Program::location(const char* name) {
     auto it = locations_.find(name);
@@ -71,11 +73,23 @@ GLint Program::location(const char* name) {
     return loc;
 }
 
-void Program::set(const char* name, int value) { glUniform1i(location(name), value); }
-void Program::set(const char* name, unsigned value) { glUniform1ui(location(name), value); }
-void Program::set(const char* name, float value) { glUniform1f(location(name), value); }
-void Program::set(const char* name, const glm::vec2& v) { glUniform2f(location(name), v.x, v.y); }
-void Program::set(const char* name, const glm::vec3& v) { glUniform3f(location(name), v.x, v.y, v.z); }
-void Program::set(const char* name, const glm::ivec2& v) { glUniform2i(location(name), v.x, v.y); }
+void Program::set(const char* name, int value) {
+    glUniform1i(location(name), value);
+}
+void Program::set(const char* name, unsigned value) {
+    glUniform1ui(location(name), value);
+}
+void Program::set(const char* name, float value) {
+    glUniform1f(location(name), value);
+}
+void Program::set(const char* name, const glm::vec2& v) {
+    glUniform2f(location(name), v.x, v.y);
+}
+void Program::set(const char* name, const glm::vec3& v) {
+    glUniform3f(location(name), v.x, v.y, v.z);
+}
+void Program::set(const char* name, const glm::ivec2& v) {
+    glUniform2i(location(name), v.x, v.y);
+}
 
 }  // namespace fp

@@ -47,7 +47,8 @@ struct Expander {
         std::istringstream in(library.read(path));
         out.text += "#line 1 " + std::to_string(fileIndex) + "\n";
         // `#include "path"`, or `#include NAME` where NAME is a define whose value is a quoted path.
-        static const std::regex includeLine(R"re(^\s*#\s*include\s*(?:"([^"]+)"|([A-Za-z_]\w*))\s*(//.*)?$)re");
+        static const std::regex includeLine(
+            R"re(^\s*#\s*include\s*(?:"([^"]+)"|([A-Za-z_]\w*))\s*(//.*)?$)re");
         std::string line;
         int lineNumber = 0;
         while (std::getline(in, line)) {
@@ -60,7 +61,8 @@ struct Expander {
                     throw Error("glsl/" + path + ":" + std::to_string(lineNumber) + ": " + e.what());
                 }
                 // GLSL 4.x: the line after `#line L F` is line L.
-                out.text += "#line " + std::to_string(lineNumber + 1) + " " + std::to_string(fileIndex) + "\n";
+                out.text +=
+                    "#line " + std::to_string(lineNumber + 1) + " " + std::to_string(fileIndex) + "\n";
             } else {
                 out.text += line + "\n";
             }

@@ -15,7 +15,8 @@
 //                                            (L.lo.xyz, L.hi.x) (L.hi.yz, R.lo.xy) (R.lo.z, R.hi.xyz)
 //  nodeLinks     RGBA32UI   1 per node       (left first, left count, right first, right count):
 //                                            count > 0: a leaf of triangles [first, first + count);
-//                                            count = 0: an interior node at index `first`. Node 0 is the root.
+//                                            count = 0: an interior node at index `first`. Node 0 is the
+//                                            root.
 //  materials     RGBA32F    2 per material   (Kd.rgb, 0) (Ke.rgb, 0)
 //  lights        RGBA32F    1 per emitter    (triangle index, cdf up to and including it, pmf, area)
 //
@@ -35,8 +36,15 @@ constexpr int kLightTexels = 1;
 constexpr uint32_t kMaxFloatIndex = 1u << 24;
 
 // Texture units the scene buffers are bound to while tracing.
-enum Unit : int { kTrianglesUnit = 0, kNormalsUnit, kNodeBoundsUnit, kNodeLinksUnit, kMaterialsUnit, kLightsUnit,
-                  kFirstFreeUnit };
+enum Unit : int {
+    kTrianglesUnit = 0,
+    kNormalsUnit,
+    kNodeBoundsUnit,
+    kNodeLinksUnit,
+    kMaterialsUnit,
+    kLightsUnit,
+    kFirstFreeUnit
+};
 
 ShaderDefines layoutDefines();
 

@@ -8,11 +8,13 @@
 
 namespace fp {
 
-float luminance(const glm::vec3& rgb) { return glm::dot(rgb, glm::vec3(0.2126f, 0.7152f, 0.0722f)); }
+float luminance(const glm::vec3& rgb) {
+    return glm::dot(rgb, glm::vec3(0.2126f, 0.7152f, 0.0722f));
+}
 
 size_t PackedScene::bytes() const {
-    return sizeof(glm::vec4) * (triangles.size() + normals.size() + nodeBounds.size() + materials.size() +
-                                lights.size()) +
+    return sizeof(glm::vec4) *
+               (triangles.size() + normals.size() + nodeBounds.size() + materials.size() + lights.size()) +
            sizeof(glm::uvec4) * nodeLinks.size();
 }
 

@@ -28,9 +28,9 @@ SceneTextures::SceneTextures(const PackedScene& s, size_t maxTexels) {
                           v.empty() ? 1 : v.size(), sizeof(T), format};
     };
     const BufferSpec specs[kCount] = {
-        spec("triangles", s.triangles, GL_RGBA32F), spec("normals", s.normals, GL_RGBA32F),
+        spec("triangles", s.triangles, GL_RGBA32F),        spec("normals", s.normals, GL_RGBA32F),
         spec("BVH node bounds", s.nodeBounds, GL_RGBA32F), spec("BVH node links", s.nodeLinks, GL_RGBA32UI),
-        spec("materials", s.materials, GL_RGBA32F), spec("lights", s.lights, GL_RGBA32F)};
+        spec("materials", s.materials, GL_RGBA32F),        spec("lights", s.lights, GL_RGBA32F)};
 
     if (maxTexels == 0) {
         GLint limit = 0;

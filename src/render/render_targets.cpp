@@ -76,7 +76,8 @@ Accumulation RenderTargets::read() const {
         std::vector<glm::vec4>& out = *outputs[a];
         out.resize(rows.size());
         for (int y = 0; y < height_; ++y)
-            std::copy_n(&rows[size_t(height_ - 1 - y) * size_t(width_)], width_, &out[size_t(y) * size_t(width_)]);
+            std::copy_n(&rows[size_t(height_ - 1 - y) * size_t(width_)], width_,
+                        &out[size_t(y) * size_t(width_)]);
     }
     return acc;
 }

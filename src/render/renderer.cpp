@@ -50,14 +50,17 @@ Renderer::Renderer(const Scene& scene, ShaderLibrary shaders, const BvhBuildOpti
     glGenVertexArrays(1, &vertexArray_);
 }
 
-Renderer::~Renderer() { glDeleteVertexArrays(1, &vertexArray_); }
+Renderer::~Renderer() {
+    glDeleteVertexArrays(1, &vertexArray_);
+}
 
 void Renderer::compile() {
     ShaderDefines defines = layout::layoutDefines();
     defines.emplace_back("BVH_STACK_SIZE", std::to_string(stats_.stackSize));
     defines.emplace_back("INTEGRATOR_FILE",
                          std::string("\"integrators/") + integratorName(settings_.integrator) + ".glsl\"");
-    program_ = std::make_unique<Program>(shaders_, "passes/fullscreen.vert.glsl", "passes/trace.frag.glsl", defines);
+    program_ =
+        std::make_unique<Program>(shaders_, "passes/fullscreen.vert.glsl", "passes/trace.frag.glsl", defines);
 }
 
 void Renderer::reloadShaders() {

@@ -13,9 +13,12 @@ Integrator parseIntegrator(const std::string& name) {
 
 const char* integratorName(Integrator integrator) {
     switch (integrator) {
-        case Integrator::Naive: return "naive";
-        case Integrator::Bsdf: return "bsdf";
-        case Integrator::Nee: return "nee";
+        case Integrator::Naive:
+            return "naive";
+        case Integrator::Bsdf:
+            return "bsdf";
+        case Integrator::Nee:
+            return "nee";
     }
     return "?";
 }

@@ -25,7 +25,9 @@ Camera frameBounds(const Aabb& bounds, float fovY) {
 namespace fp {
 
 void validateCamera(const Camera& c, const std::string& where) {
-    auto finite = [](const glm::vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); };
+    auto finite = [](const glm::vec3& v) {
+        return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
+    };
     if (!finite(c.eye) || !finite(c.target) || !finite(c.up) || !std::isfinite(c.fovY))
         throw Error(where + " values must be finite numbers");
     // In double: target - eye of two huge floats would overflow in float and slip past the checks.

@@ -48,7 +48,8 @@ class Cli : public ::testing::Test {
         CliRun r = fragpath(args + " -o " + path("out.png"));
         EXPECT_EQ(r.exitCode, 1) << r.output;
         EXPECT_NE(r.output.find("fragpath: error: "), std::string::npos) << r.output;
-        EXPECT_NE(r.output.find(fragment), std::string::npos) << "expected '" << fragment << "' in: " << r.output;
+        EXPECT_NE(r.output.find(fragment), std::string::npos)
+            << "expected '" << fragment << "' in: " << r.output;
         EXPECT_FALSE(fs::exists(path("out.png")));
     }
     fs::path dir_;
@@ -74,21 +75,23 @@ TEST_F(Cli, RendersTheBuiltInCornellBoxToEveryFormat) {
 TEST_F(Cli, HelpListsTheOptions) {
     CliRun r = fragpath("render --help");
     EXPECT_EQ(r.exitCode, 0);
-    for (const char* flag : {"--size", "--spp", "--max-depth", "--seed", "--integrator", "--eye", "--target", "--up",
-                             "--fov", "--stats", "--exposure", "--tonemap"})
+    for (const char* flag : {"--size", "--spp", "--max-depth", "--seed", "--integrator", "--eye", "--target",
+                             "--up", "--fov", "--stats", "--exposure", "--tonemap"})
         EXPECT_NE(r.output.find(flag), std::string::npos) << flag;
 }
 
 TEST_F(Cli, StatsReportTheSceneAndTheBvh) {
     CliRun r = fragpath("render --size 8x8 --spp 1 --stats -o " + path("s.png"));
     ASSERT_EQ(r.exitCode, 0) << r.output;
-    for (const char* field : {"triangles        32 (2 emissive)", "SAH cost", "gpu memory", "llvmpipe", "rays per path"})
+    for (const char* field :
+         {"triangles        32 (2 emissive)", "SAH cost", "gpu memory", "llvmpipe", "rays per path"})
         EXPECT_NE(r.output.find(field), std::string::npos) << field << " in " << r.output;
 }
 
 TEST_F(Cli, CameraFlagsOverrideTheScene) {
     ASSERT_EQ(fragpath("render --size 8x8 --spp 1 -o " + path("a.pfm")).exitCode, 0);
-    CliRun r = fragpath("render --size 8x8 --spp 1 --eye 278,273,-800 --target 278,273,0 --fov 10 -o " + path("b.pfm"));
+    CliRun r = fragpath("render --size 8x8 --spp 1 --eye 278,273,-800 --target 278,273,0 --fov 10 -o " +
+                        path("b.pfm"));
     ASSERT_EQ(r.exitCode, 0) << r.output;
     EXPECT_NE(readImage(path("a.pfm")).pixels, readImage(path("b.pfm")).pixels);
 }
@@ -150,9 +153,9 @@ TEST_F(Cli, NoSuitableGlContextIsAClearError) {
 TEST_F(Cli, InterruptedRenderStillWritesWhatItHas) {
     // SIGINT a long render once it has started; it must write an image of the samples done so far.
     std::string out = path("partial.pfm");
-    std::string command = std::string("LP_NUM_THREADS=2 ") + FP_BINARY + " render --size 64x64 --spp 100000 -o " + out +
-                          " > " + path("log.txt") + " 2>&1 & pid=$!; sleep 3; kill -INT $pid; wait $pid; echo $? > " +
-                          path("code.txt");
+    std::string command = std::string("LP_NUM_THREADS=2 ") + FP_BINARY +
+                          " render --size 64x64 --spp 100000 -o " + out + " > " + path("log.txt") +
+                          " 2>&1 & pid=$!; sleep 3; kill -INT $pid; wait $pid; echo $? > " + path("code.txt");
     ASSERT_EQ(std::system(command.c_str()), 0);
     std::ifstream code(path("code.txt"));
     int exitCode = -1;

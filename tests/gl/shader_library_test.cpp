@@ -62,9 +62,12 @@ TEST_F(ShaderDir, MissingIncludeNamesTheIncludingFileAndLine) {
 
 TEST(CompileLog, DriverReferencesBecomeFileAndLine) {
     std::vector<std::string> files = {"passes/trace.frag.glsl", "common/rng.glsl"};
-    EXPECT_EQ(mapCompileLog("1:12(5): error: `x' undeclared", files), "glsl/common/rng.glsl:12: error: `x' undeclared");
-    EXPECT_EQ(mapCompileLog("ERROR: 0:7: 'y' : undeclared", files), "ERROR: glsl/passes/trace.frag.glsl:7: 'y' : undeclared");
-    EXPECT_EQ(mapCompileLog("1(3) : error C1008: undefined", files), "glsl/common/rng.glsl:3 : error C1008: undefined");
+    EXPECT_EQ(mapCompileLog("1:12(5): error: `x' undeclared", files),
+              "glsl/common/rng.glsl:12: error: `x' undeclared");
+    EXPECT_EQ(mapCompileLog("ERROR: 0:7: 'y' : undeclared", files),
+              "ERROR: glsl/passes/trace.frag.glsl:7: 'y' : undeclared");
+    EXPECT_EQ(mapCompileLog("1(3) : error C1008: undefined", files),
+              "glsl/common/rng.glsl:3 : error C1008: undefined");
 }
 
 TEST(EmbeddedShaders, EveryShippedFileExpands) {
@@ -76,8 +79,10 @@ TEST(EmbeddedShaders, EveryShippedFileExpands) {
 TEST_F(ShaderDir, RealCompileErrorReportsTheOriginalFileAndLine) {
     static std::unique_ptr<GlContext> context = createOsMesaContext();
     write("vert.glsl", "void main() { gl_Position = vec4(0.0); }\n");
-    write("common/broken.glsl", "// a comment\nfloat ok() { return 1.0; }\nfloat broken() { return undeclaredThing; }\n");
-    write("frag.glsl", "#include \"common/broken.glsl\"\nout vec4 color;\nvoid main() { color = vec4(broken()); }\n");
+    write("common/broken.glsl",
+          "// a comment\nfloat ok() { return 1.0; }\nfloat broken() { return undeclaredThing; }\n");
+    write("frag.glsl",
+          "#include \"common/broken.glsl\"\nout vec4 color;\nvoid main() { color = vec4(broken()); }\n");
     try {
         Program program(ShaderLibrary(dir_.string()), "vert.glsl", "frag.glsl");
         FAIL() << "expected a compile error";

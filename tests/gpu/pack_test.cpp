@@ -46,7 +46,8 @@ Aabb childBounds(const PackedScene& p, uint32_t i, int side) {
 }
 
 bool contains(const Aabb& outer, const Aabb& inner) {
-    return glm::all(glm::lessThanEqual(outer.lo, inner.lo)) && glm::all(glm::greaterThanEqual(outer.hi, inner.hi));
+    return glm::all(glm::lessThanEqual(outer.lo, inner.lo)) &&
+           glm::all(glm::greaterThanEqual(outer.hi, inner.hi));
 }
 
 Aabb packedTriangleBounds(const PackedScene& p, uint32_t i) {

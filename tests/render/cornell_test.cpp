@@ -40,7 +40,8 @@ std::vector<float> blockZScores(const Accumulation& a, const Accumulation& b, in
         for (int x = 0; x < a.width; x += block) {
             ImageEstimate ea = estimate(a, x, y, block, block), eb = estimate(b, x, y, block, block);
             for (int c = 0; c < 3; ++c) {
-                float se = std::sqrt(ea.standardError[c] * ea.standardError[c] + eb.standardError[c] * eb.standardError[c]);
+                float se = std::sqrt(ea.standardError[c] * ea.standardError[c] +
+                                     eb.standardError[c] * eb.standardError[c]);
                 if (se > 0.0f) z.push_back((ea.mean[c] - eb.mean[c]) / se);
             }
         }
@@ -50,9 +51,11 @@ std::vector<float> blockZScores(const Accumulation& a, const Accumulation& b, in
 void expectSameMean(const Accumulation& a, const Accumulation& b, const char* what) {
     ImageEstimate ea = estimate(a), eb = estimate(b);
     for (int c = 0; c < 3; ++c) {
-        float se = std::sqrt(ea.standardError[c] * ea.standardError[c] + eb.standardError[c] * eb.standardError[c]);
+        float se =
+            std::sqrt(ea.standardError[c] * ea.standardError[c] + eb.standardError[c] * eb.standardError[c]);
         EXPECT_NEAR(ea.mean[c], eb.mean[c], 5.0f * se) << what << ", channel " << c;
-        EXPECT_LT(se, 0.02f * ea.mean[c]) << what << ": the comparison must be sharp enough to mean something";
+        EXPECT_LT(se, 0.02f * ea.mean[c])
+            << what << ": the comparison must be sharp enough to mean something";
     }
 }
 
@@ -102,7 +105,8 @@ TEST_F(CornellBox, DifferentSeedDifferentNoiseSameMean) {
     EXPECT_GT(differing, a.sum.size() * 9 / 10);
     ImageEstimate ea = estimate(a), eb = estimate(b);
     for (int c = 0; c < 3; ++c) {
-        float se = std::sqrt(ea.standardError[c] * ea.standardError[c] + eb.standardError[c] * eb.standardError[c]);
+        float se =
+            std::sqrt(ea.standardError[c] * ea.standardError[c] + eb.standardError[c] * eb.standardError[c]);
         EXPECT_NEAR(ea.mean[c], eb.mean[c], 5.0f * se);
     }
 }
@@ -121,8 +125,9 @@ TEST_F(CornellBox, SamplesPerPassDoesNotChangeTheImage) {
     renderer_->configure(s, *scene_->camera);
     renderer_->render(6);
     Accumulation fourPerPass = renderer_->readback();
-    EXPECT_EQ(std::memcmp(onePerPass.sum.data(), fourPerPass.sum.data(), onePerPass.sum.size() * sizeof(glm::vec4)),
-              0);
+    EXPECT_EQ(
+        std::memcmp(onePerPass.sum.data(), fourPerPass.sum.data(), onePerPass.sum.size() * sizeof(glm::vec4)),
+        0);
 }
 
 TEST_F(CornellBox, DepthZeroShowsOnlyTheLightExactly) {

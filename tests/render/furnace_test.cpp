@@ -26,7 +26,8 @@ TEST_P(Furnace, MeanRadianceMatchesTheGeometricSeries) {
         // Five standard errors of the mean, plus float rounding of the sums.
         float tolerance = 5.0f * e.standardError[ch] + 1e-5f * expected;
         EXPECT_NEAR(e.mean[ch], expected, tolerance)
-            << integratorName(c.integrator) << " depth " << c.maxDepth << " standard error " << e.standardError[ch];
+            << integratorName(c.integrator) << " depth " << c.maxDepth << " standard error "
+            << e.standardError[ch];
     }
     EXPECT_EQ(acc.droppedSamples(), 0u);
     if (c.maxDepth == 0) {
@@ -38,16 +39,18 @@ TEST_P(Furnace, MeanRadianceMatchesTheGeometricSeries) {
     }
 }
 
-INSTANTIATE_TEST_SUITE_P(
-    AllIntegrators, Furnace,
-    ::testing::Values(FurnaceCase{Integrator::Naive, 0}, FurnaceCase{Integrator::Naive, 1},
-                      FurnaceCase{Integrator::Naive, 3}, FurnaceCase{Integrator::Bsdf, 0},
-                      FurnaceCase{Integrator::Bsdf, 1}, FurnaceCase{Integrator::Bsdf, 3},
-                      FurnaceCase{Integrator::Nee, 0}, FurnaceCase{Integrator::Nee, 1},
-                      FurnaceCase{Integrator::Nee, 3}, FurnaceCase{Integrator::Nee, 12}),
-    [](const ::testing::TestParamInfo<FurnaceCase>& param) {
-        return std::string(integratorName(param.param.integrator)) + "_depth" + std::to_string(param.param.maxDepth);
-    });
+INSTANTIATE_TEST_SUITE_P(AllIntegrators, Furnace,
+                         ::testing::Values(FurnaceCase{Integrator::Naive, 0},
+                                           FurnaceCase{Integrator::Naive, 1},
+                                           FurnaceCase{Integrator::Naive, 3},
+                                           FurnaceCase{Integrator::Bsdf, 0}, FurnaceCase{Integrator::Bsdf, 1},
+                                           FurnaceCase{Integrator::Bsdf, 3}, FurnaceCase{Integrator::Nee, 0},
+                                           FurnaceCase{Integrator::Nee, 1}, FurnaceCase{Integrator::Nee, 3},
+                                           FurnaceCase{Integrator::Nee, 12}),
+                         [](const ::testing::TestParamInfo<FurnaceCase>& param) {
+                             return std::string(integratorName(param.param.integrator)) + "_depth" +
+                                    std::to_string(param.param.maxDepth);
+                         });
 
 }  // namespace
 }  // namespace fp::test

@@ -56,8 +56,8 @@ inline Camera insideCamera() {
 }
 
 struct ImageEstimate {
-    glm::vec3 mean{0.0f};            // average over pixels of the per-pixel estimates
-    glm::vec3 standardError{0.0f};   // of that average, from the per-pixel sample variances
+    glm::vec3 mean{0.0f};           // average over pixels of the per-pixel estimates
+    glm::vec3 standardError{0.0f};  // of that average, from the per-pixel sample variances
 };
 
 // Pixels are independent (separate random streams), so Var(average) = sum of Var(pixel means) / P^2.
