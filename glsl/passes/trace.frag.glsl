@@ -18,6 +18,7 @@ uniform sampler2D uPreviousSquares;
 uniform sampler2D uPreviousCounters;
 
 #include INTEGRATOR_FILE
+#include "passes/debug_views.glsl"
 
 layout(location = 0) out vec4 outSum;      // (sum of radiance, number of samples)
 layout(location = 1) out vec4 outSquares;  // (sum of squared radiance, number of non-finite samples dropped)
@@ -30,8 +31,12 @@ void main() {
     gRayCount = texelFetch(uPreviousCounters, pixel, 0).x;
     for (int i = 0; i < uSamplesPerPass; ++i) {
         rngInit(uSeed, uvec2(pixel), uFirstSample + uint(i));
+#if DEBUG_VIEW == 0
         // Box filter: a uniformly jittered position inside the pixel.
         vec3 c = radiance(cameraRay(vec2(pixel) + rand2()));
+#else
+        vec3 c = debugView(cameraRay(vec2(pixel) + 0.5));
+#endif
         // A NaN or Inf sample would poison the pixel forever: count it, and add 0 instead.
         if (any(isnan(c)) || any(isinf(c))) {
             squares.a += 1.0;

@@ -38,6 +38,8 @@ const char* kRenderUsage =
     "  --integrator NAME     naive | bsdf | nee (default nee: light sampling with MIS)\n"
     "  --eye X,Y,Z --target X,Y,Z --up X,Y,Z --fov DEG\n"
     "                        camera (default: the scene file's, else one that frames the scene)\n"
+    "  --view NAME           radiance | depth | normal | albedo: the image, or what the primary ray\n"
+    "                        through each pixel centre hits (default radiance)\n"
     "  --exposure STOPS      PNG only: scale by 2^STOPS before tone mapping (default 0)\n"
     "  --tonemap NAME        PNG only: clamp | reinhard | aces (default clamp)\n"
     "  --samples-per-pass N  samples each pixel takes per draw call (default 1)\n"
@@ -78,7 +80,7 @@ void checkOutputPath(const std::string& path) {
 int renderCommand(const std::vector<std::string>& argv) {
     Args args(argv,
               {"-o", "--output", "--size", "--spp", "--max-depth", "--seed", "--integrator", "--eye",
-               "--target", "--up", "--fov", "--exposure", "--tonemap", "--samples-per-pass", "--shader-dir"},
+               "--target", "--up", "--fov", "--view", "--exposure", "--tonemap", "--samples-per-pass", "--shader-dir"},
               {"--stats", "--quiet", "-h", "--help"});
     if (args.has("-h") || args.has("--help")) {
         std::fputs(kRenderUsage, stdout);
@@ -108,6 +110,7 @@ int renderCommand(const std::vector<std::string>& argv) {
     settings.maxDepth = args.integer("--max-depth", 0, 1000).value_or(d.maxDepth.value_or(5));
     settings.seed = uint32_t(args.integer("--seed", 0, 2147483647).value_or(int(d.seed.value_or(0))));
     settings.integrator = parseIntegrator(args.text("--integrator").value_or(d.integrator.value_or("nee")));
+    if (auto v = args.text("--view")) settings.view = parseView(*v);
     settings.samplesPerPass = args.integer("--samples-per-pass", 1, 4096).value_or(1);
 
     Camera camera = scene.camera.value_or(frameBounds(scene.bounds()));

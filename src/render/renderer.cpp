@@ -59,6 +59,7 @@ void Renderer::compile() {
     defines.emplace_back("BVH_STACK_SIZE", std::to_string(stats_.stackSize));
     defines.emplace_back("INTEGRATOR_FILE",
                          std::string("\"integrators/") + integratorName(settings_.integrator) + ".glsl\"");
+    defines.emplace_back("DEBUG_VIEW", std::to_string(int(settings_.view)));
     program_ =
         std::make_unique<Program>(shaders_, "passes/fullscreen.vert.glsl", "passes/trace.frag.glsl", defines);
 }
@@ -78,7 +79,7 @@ void Renderer::reloadShaders() {
 void Renderer::configure(const RenderSettings& settings, const Camera& camera) {
     if (settings.maxDepth < 0) throw Error("max depth must be 0 or more");
     if (settings.samplesPerPass < 1) throw Error("samples per pass must be 1 or more");
-    bool recompile = !program_ || settings.integrator != settings_.integrator;
+    bool recompile = !program_ || settings.integrator != settings_.integrator || settings.view != settings_.view;
     settings_ = settings;
     camera_ = camera;
     if (recompile) compile();

@@ -23,4 +23,20 @@ const char* integratorName(Integrator integrator) {
     return "?";
 }
 
+View parseView(const std::string& name) {
+    for (View v : {View::Radiance, View::Depth, View::Normal, View::Albedo})
+        if (name == viewName(v)) return v;
+    throw Error("unknown view '" + name + "' (choose radiance, depth, normal or albedo)");
+}
+
+const char* viewName(View view) {
+    switch (view) {
+        case View::Radiance: return "radiance";
+        case View::Depth: return "depth";
+        case View::Normal: return "normal";
+        case View::Albedo: return "albedo";
+    }
+    return "?";
+}
+
 }  // namespace fp

@@ -11,12 +11,19 @@ enum class Integrator { Naive, Bsdf, Nee };
 Integrator parseIntegrator(const std::string& name);  // throws fp::Error listing the choices
 const char* integratorName(Integrator integrator);
 
+// What each pixel shows: the rendered radiance, or one property of the first hit (glsl/passes/debug_views.glsl).
+enum class View { Radiance = 0, Depth = 1, Normal = 2, Albedo = 3 };
+
+View parseView(const std::string& name);  // throws fp::Error listing the choices
+const char* viewName(View view);
+
 struct RenderSettings {
     int width = 512, height = 512;
     // Bounces, as in pbrt: 0 shows only emitters seen directly, 1 adds direct lighting, ...
     int maxDepth = 5;
     uint32_t seed = 0;
     Integrator integrator = Integrator::Nee;
+    View view = View::Radiance;
     int samplesPerPass = 1;  // samples each pixel takes in one draw call
 };
 

@@ -1,0 +1,90 @@
+// The GLSL BVH traversal against brute force on the CPU: the depth view of a few thousand random
+// triangles (a deep tree) must show, pixel for pixel, the distance a CPU brute-force search finds.
+#include <gtest/gtest.h>
+
+#include <random>
+
+#include "bvh/ray_query.h"
+#include "render_test_util.h"
+
+namespace fp::test {
+namespace {
+
+Scene randomSoup(int count, float size, uint32_t seed) {
+    std::mt19937 rng(seed);
+    std::uniform_real_distribution<float> u(-1.0f, 1.0f);
+    Scene s;
+    s.source = "random soup";
+    s.materials.resize(1);
+    while (int(s.triangles.size()) < count) {
+        Triangle t;
+        glm::vec3 c(u(rng), u(rng), u(rng));
+        for (auto& p : t.p) p = c + size * glm::vec3(u(rng), u(rng), u(rng));
+        if (t.area() < 1e-6f) continue;
+        glm::vec3 n = glm::normalize(t.geometricNormal());
+        t.n = {n, n, n};
+        s.triangles.push_back(t);
+    }
+    return s;
+}
+
+// The primary ray through the centre of pixel (x, row) as glsl/common/camera.glsl builds it.
+fp::Ray pixelRay(const Camera& c, int x, int row, int size) {
+    glm::vec3 forward = glm::normalize(c.target - c.eye);
+    glm::vec3 right = glm::normalize(glm::cross(forward, c.up));
+    glm::vec3 up = glm::cross(right, forward);
+    float tanHalf = std::tan(0.5f * glm::radians(c.fovY));
+    int glY = size - 1 - row;  // images are stored top row first, GL counts from the bottom
+    glm::vec2 ndc = 2.0f * (glm::vec2(x, glY) + 0.5f) / float(size) - 1.0f;
+    fp::Ray r;
+    r.origin = c.eye;
+    r.dir = glm::normalize(forward + ndc.x * tanHalf * right + ndc.y * tanHalf * up);
+    return r;
+}
+
+void expectDepthMatchesBruteForce(const Scene& scene, const Camera& camera) {
+    ensureGlContext();
+    const int size = 64;
+    Renderer renderer(scene);
+    RenderSettings settings;
+    settings.width = settings.height = size;
+    settings.view = View::Depth;
+    renderer.configure(settings, camera);
+    renderer.render(1);
+    Image depth = renderer.readback().mean();
+
+    std::vector<TriangleVerts> tris;
+    for (const Triangle& t : scene.triangles) tris.push_back({t.p[0], t.p[1], t.p[2]});
+    int hits = 0, mismatches = 0;
+    for (int y = 0; y < size; ++y)
+        for (int x = 0; x < size; ++x) {
+            RayHit h = closestHitBruteForce(tris, pixelRay(camera, x, y, size));
+            float expected = h.hit() ? h.t : 0.0f;
+            hits += h.hit();
+            // The GPU evaluates the same formulas in a different order: allow float rounding.
+            if (std::abs(depth.at(x, y).x - expected) > 1e-4f * std::max(1.0f, expected)) ++mismatches;
+        }
+    EXPECT_GT(hits, size * size / 2) << "the view should be mostly covered";
+    // A ray that grazes an edge can go either way by a rounding; a traversal bug loses whole subtrees.
+    EXPECT_LE(mismatches, size * size / 400) << mismatches << " of " << size * size << " pixels differ";
+    EXPECT_EQ(renderer.stats().triangles, scene.triangles.size());
+}
+
+TEST(GpuTraversal, DeepTreeOfSmallTrianglesMatchesBruteForce) {
+    Camera c;
+    c.eye = glm::vec3(0.3f, 0.2f, -4.0f);
+    c.fovY = 35.0f;
+    expectDepthMatchesBruteForce(randomSoup(4000, 0.08f, 1), c);
+}
+
+TEST(GpuTraversal, OverlappingLongTrianglesFromInsideMatchBruteForce) {
+    // Large overlapping triangles make every box overlap its siblings: both children must be visited.
+    Camera c;
+    c.eye = glm::vec3(0.05f, -0.1f, 0.02f);
+    c.target = glm::vec3(1.0f, 0.3f, 0.5f);
+    c.fovY = 90.0f;
+    expectDepthMatchesBruteForce(randomSoup(600, 0.9f, 2), c);
+}
+
+}  // namespace
+}  // namespace fp::test
