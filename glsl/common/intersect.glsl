@@ -31,11 +31,13 @@ bool intersectTriangle(Ray ray, vec3 v0, vec3 e1, vec3 e2, float tMax, out float
 }
 
 // Slab test (Kay & Kajiya 1986): entry distance, or INF when the box is missed within (0, tMax).
+// The exit distance is widened by a few ulps (Ize 2013, "Robust BVH Ray Traversal") so that rounding
+// never culls a box the ray grazes.
 float boxEntry(vec3 origin, vec3 invDir, vec3 lo, vec3 hi, float tMax) {
     vec3 t0 = (lo - origin) * invDir, t1 = (hi - origin) * invDir;
     vec3 tNear = min(t0, t1), tFar = max(t0, t1);
     float enter = max(max(tNear.x, tNear.y), max(tNear.z, 0.0));
-    float exit = min(min(tFar.x, tFar.y), min(tFar.z, tMax));
+    float exit = min(min(min(tFar.x, tFar.y), tFar.z) * 1.0000004, tMax);
     return enter <= exit ? enter : INF;
 }
 

@@ -7,10 +7,9 @@
 namespace fp {
 namespace {
 
+using detail::LaneBox;
 using detail::PrimRef;
 using detail::RangeBounds;
-
-using detail::LaneBox;
 
 struct Bin {
     LaneBox bounds;
@@ -27,8 +26,9 @@ struct BinMapping {
     int operator()(float c) const {
         const float f = (c - origin) * scale;
         // f >= 0 since c >= origin; the clamp catches c at the top of the range, where f == binCount.
-        // Written so that a NaN (from non-finite input) also clamps instead of converting undefinedly.
-        return f < float(lastBin) ? int(f) : lastBin;
+        // In this form it is a branch-free min, and a NaN (from non-finite input) also clamps instead
+        // of converting to int undefinedly.
+        return int(f < float(lastBin) ? f : float(lastBin));
     }
 };
 
@@ -55,7 +55,7 @@ class BinnedSahSplitter {
           binCount_(options.binCount),
           bins_(3 * size_t(binCount_)),
           used_(binCount_),
-          rightBounds_(binCount_),
+          rightArea_(binCount_),
           rightCount_(binCount_) {}
 
     uint32_t operator()(PrimRef* refs, uint32_t begin, uint32_t end, const RangeBounds& rb) {
@@ -72,7 +72,7 @@ class BinnedSahSplitter {
             return begin;  // centroids coincide: no plane separates them
         if (end - begin == 2) return splitPair(refs, begin, rb, mapping);
 
-        // One pass bins every primitive along all three axes at once (Wald 2007, section 3.2).
+        // One pass bins every primitive along all three axes at once (as in Wald 2007).
         for (uint32_t i = begin; i < end; ++i) {
             const glm::vec3 c = refs[i].centroid2();
             for (int axis = 0; axis < 3; ++axis) {
@@ -104,7 +104,7 @@ class BinnedSahSplitter {
                 for (int i = used - 1; i > 0; --i) {  // sweep from the right...
                     acc.grow(bins[used_[i]].bounds);
                     count += bins[used_[i]].count;
-                    rightBounds_[i] = acc;
+                    rightArea_[i] = acc.area();
                     rightCount_[i] = count;
                 }
                 acc = LaneBox{};
@@ -112,8 +112,8 @@ class BinnedSahSplitter {
                 for (int i = 0; i + 1 < used; ++i) {  // ...then from the left, evaluating each plane
                     acc.grow(bins[used_[i]].bounds);
                     count += bins[used_[i]].count;
-                    const float cost = acc.aabb().area() * float(count) +
-                                       rightBounds_[i + 1].aabb().area() * float(rightCount_[i + 1]);
+                    const float cost =
+                        acc.area() * float(count) + rightArea_[i + 1] * float(rightCount_[i + 1]);
                     if (cost < bestCost) {
                         bestCost = cost;
                         bestAxis = axis;
@@ -147,7 +147,7 @@ class BinnedSahSplitter {
         PrimRef& a = refs[begin];
         PrimRef& b = refs[begin + 1];
         const int axis = mapping[0].scale != 0.0f ? 0 : (mapping[1].scale != 0.0f ? 1 : 2);
-        const float cost = LaneBox{a.lo, a.hi}.aabb().area() + LaneBox{b.lo, b.hi}.aabb().area();
+        const float cost = LaneBox{a.lo, a.hi}.area() + LaneBox{b.lo, b.hi}.area();
         if (preferLeaf(cost, 2, rb)) return begin;
         if (a.lo[axis] + a.hi[axis] > b.lo[axis] + b.hi[axis]) std::swap(a, b);
         return begin + 1;
@@ -157,14 +157,14 @@ class BinnedSahSplitter {
     int binCount_;
     std::vector<Bin> bins_;             // axis-major: bins_[axis * binCount + bin]; empty between calls
     std::vector<int> used_;             // scratch: one axis's occupied bins, in order
-    std::vector<LaneBox> rightBounds_;  // scratch: union of used_[i..] bins
+    std::vector<float> rightArea_;      // scratch: area of the union of bins used_[i..]
     std::vector<uint32_t> rightCount_;  // scratch: primitives in them
 };
 
 }  // namespace
 
 Bvh buildBinnedSah(const std::vector<Aabb>& primBounds, const BvhBuildOptions& options) {
-    detail::validateOptions(options, primBounds.size());
+    detail::validateOptions(options, primBounds.size());  // before binCount sizes anything
     BinnedSahSplitter splitter(options);
     return detail::buildTopDown(primBounds, options, splitter);
 }

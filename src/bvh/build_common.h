@@ -13,6 +13,10 @@ namespace fp::detail {
 
 // Four floats with lane-wise min/max in one SIMD instruction each (GCC and Clang vector extensions,
 // on any target); glm::vec3 operations stay scalar. Binning is bound by these read-modify-writes.
+// Only min/max ever touch the fourth lane, so whatever bits it holds are harmless.
+#if !defined(__GNUC__)
+#error "src/bvh needs the GCC/Clang vector extensions"
+#endif
 typedef float Lanes __attribute__((vector_size(16)));
 // Same operand order, so the same NaN handling, as glm::min/max.
 inline Lanes min(Lanes a, Lanes b) {
@@ -33,13 +37,18 @@ struct LaneBox {
     }
     void grow(const LaneBox& b) { grow(b.lo, b.hi); }
     Aabb aabb() const { return {{lo[0], lo[1], lo[2]}, {hi[0], hi[1], hi[2]}}; }
+    // Aabb::area() of a non-empty box, with the same operations in the same order.
+    float area() const {
+        const float ex = hi[0] - lo[0], ey = hi[1] - lo[1], ez = hi[2] - lo[2];
+        return 2.0f * (ex * ey + ey * ez + ez * ex);
+    }
 };
 
 // A primitive's bounds and original index. The builders move these rather than primIndex entries so
 // that a node's primitives are contiguous in memory while it is binned and partitioned.
 struct PrimRef {
     Lanes lo;  // x, y, z and 0
-    Lanes hi;  // x, y, z and the primitive index's bits (min/max carry them along unread)
+    Lanes hi;  // x, y, z and the primitive index's bits, which fill what would be padding
 
     PrimRef() = default;
     PrimRef(const Aabb& b, uint32_t index)

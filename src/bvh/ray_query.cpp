@@ -87,12 +87,13 @@ bool slabTest(const Aabb& box, const Ray& ray, const glm::vec3& invDir, float tM
         const float t0 = ((negative ? box.hi[axis] : box.lo[axis]) - ray.origin[axis]) * invDir[axis];
         const float t1 = ((negative ? box.lo[axis] : box.hi[axis]) - ray.origin[axis]) * invDir[axis];
         // With dir[axis] == 0 these are -inf/+inf inside the slab and both +inf or both -inf outside
-        // it (culled below). On a slab plane one of them is NaN (0 * inf); a NaN loses both
-        // comparisons, so the running value is kept and the ray counts as inside the closed slab.
+        // it (culled below). With the origin on a slab plane, one (both, for a flat box) is 0 * inf =
+        // NaN. A NaN loses the comparisons below, which keep the running value: no constraint, so
+        // the ray counts as inside the closed slab.
         tNear = t0 > tNear ? t0 : tNear;
         tFar = t1 < tFar ? t1 : tFar;
     }
-    // Widen the far end for rounding in the three operations above (Ize 2013, section 3).
+    // Widen the far end for the rounding in the operations above (Ize 2013).
     tFar *= tFar > 0.0f ? 1.0f + 2.0f * kGamma3 : 1.0f - 2.0f * kGamma3;
     tEnter = tNear;
     // tNear == +inf only for a zero direction outside the box, which tFar == +inf would let pass.

@@ -1,12 +1,14 @@
 #pragma once
-// CPU ray queries against triangles through a Bvh: the reference that tests (and a native renderer)
-// use, written with the same conventions as the GLSL traversal so both answer alike:
+// CPU ray queries against triangles through a Bvh: the reference for tests (and a native renderer),
+// and the conventions the GLSL traversal must share so that both answer alike:
 // - Möller–Trumbore triangle test, two-sided, edges and vertices inclusive, hits with tMin < t < tMax,
-//   kept only if the ray reaches the triangle's bounding box by then (see intersectTriangleConfirmed);
+//   kept only if the ray reaches the triangle's bounding box by then (intersectTriangleConfirmed);
 // - slab box test with a precomputed 1/dir, where zero direction components become IEEE infinities
-//   and a NaN slab distance (0 * inf, origin exactly on a slab plane) constrains nothing;
-// - the box's far distance widened by 1 + 2*gamma(3) (Ize 2013) so rounding never culls a box that
-//   the ray touches, nearer child visited first.
+//   and a NaN slab distance (0 * inf: origin exactly on a slab plane) constrains nothing; written
+//   with explicit comparisons, since GLSL min/max leave NaN handling undefined;
+// - the box's far distance widened by 1 + 2 gamma(3) (Ize 2013) so that rounding never culls a box
+//   the ray touches;
+// - stack traversal visiting the nearer child first.
 #include <cstdint>
 #include <limits>
 #include <vector>

@@ -48,7 +48,7 @@ TEST(BvhBuild, OnePrimitiveIsOneLeaf) {
     }
 }
 
-TEST(BvhBuild, TwoDistantPrimitivesAreSplitTwoCoincidentOnesShareALeaf) {
+TEST(BvhBuild, TwoDistantPrimitivesAreSplitTwoOverlappingOnesShareALeaf) {
     const Aabb a{glm::vec3(0.0f), glm::vec3(1.0f)}, far{glm::vec3(100.0f), glm::vec3(101.0f)};
     // Split: 1 + (6 + 6) / area(root) ~ 1.0002 < leaf cost 2.
     Bvh split = buildBinnedSah({far, a});
@@ -58,7 +58,7 @@ TEST(BvhBuild, TwoDistantPrimitivesAreSplitTwoCoincidentOnesShareALeaf) {
     EXPECT_EQ(split.primIndex, (std::vector<uint32_t>{1, 0}));  // the lower centroid goes left
     EXPECT_TRUE(test::sameBox(split.nodes[1].bounds, a));
     EXPECT_TRUE(test::sameBox(split.nodes[2].bounds, far));
-    // Overlapping boxes with distinct centroids: split costs 1 + (6 + 6) / area(root) >= 2 + ... > 2.
+    // Overlapping boxes with distinct centroids: split costs 1 + (6 + 6) / 7.26 ~ 2.65 > leaf cost 2.
     const Aabb b{glm::vec3(0.1f), glm::vec3(1.1f)};
     Bvh leaf = buildBinnedSah({a, b});
     ASSERT_EQ(leaf.nodes.size(), 1u);
@@ -151,8 +151,8 @@ TEST(BvhBuild, SameInputGivesSameTree) {
 
 TEST(BvhBuild, WidelySpreadCentroidsArePeeledOneLevelAtATime) {
     // Centroids at 32^i: relative to each node's centroid range, all but the top one fall into the
-    // first of 16 bins, so the only plane peels off one primitive per level: depth n - 1, built with an
-    // explicit stack, and areas up to 2^116 without overflow.
+    // first of 16 bins, so the only plane peels off one primitive per level: depth n - 1, with areas
+    // up to 2^116 that must not overflow.
     std::vector<Aabb> bounds;
     for (int i = 0; i < 24; ++i) {
         const float x = std::ldexp(1.0f, 5 * i);
@@ -171,7 +171,7 @@ TEST(BvhBuild, WidelySpreadCentroidsArePeeledOneLevelAtATime) {
         const BvhNode& right = bvh.nodes[bvh.nodes[node].first];
         ASSERT_TRUE(right.isLeaf());
         EXPECT_EQ(bvh.primIndex[right.first], expected);
-        node = node + 1;
+        ++node;  // the left child, which holds the rest
     }
 }
 

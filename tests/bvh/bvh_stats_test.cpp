@@ -4,7 +4,9 @@
 namespace fp {
 namespace {
 
-Aabb box(glm::vec3 lo, glm::vec3 hi) { return {lo, hi}; }
+Aabb box(glm::vec3 lo, glm::vec3 hi) {
+    return {lo, hi};
+}
 
 // root [0,2]x[0,1]x[0,1]                     area 2 (2 + 1 + 2) = 10
 // +- 1: leaf of 2, [0,1]^3                   area 6
@@ -14,8 +16,8 @@ Aabb box(glm::vec3 lo, glm::vec3 hi) { return {lo, hi}; }
 Bvh handBuiltTree() {
     Bvh bvh;
     bvh.nodes = {
-        {box({0, 0, 0}, {2, 1, 1}), 2, 0},      {box({0, 0, 0}, {1, 1, 1}), 0, 2},
-        {box({1, 0, 0}, {2, 1, 1}), 4, 0},      {box({1, 0, 0}, {2, 1, 0.5f}), 2, 1},
+        {box({0, 0, 0}, {2, 1, 1}), 2, 0},    {box({0, 0, 0}, {1, 1, 1}), 0, 2},
+        {box({1, 0, 0}, {2, 1, 1}), 4, 0},    {box({1, 0, 0}, {2, 1, 0.5f}), 2, 1},
         {box({1, 0, 0.5f}, {2, 1, 1}), 3, 3},
     };
     bvh.primIndex = {5, 4, 3, 2, 1, 0};

@@ -16,11 +16,18 @@ namespace fp::test {
 
 // Uniform in [0, 1) from the top 24 bits: unlike std::uniform_real_distribution, the same numbers
 // on every standard library.
-inline float uniform01(std::mt19937& rng) { return float(rng() >> 8) * 0x1p-24f; }
-inline float uniform(std::mt19937& rng, float lo, float hi) { return lo + (hi - lo) * uniform01(rng); }
-inline uint32_t uniformIndex(std::mt19937& rng, size_t n) { return uint32_t(uint64_t(rng()) * n >> 32); }
+inline float uniform01(std::mt19937& rng) {
+    return float(rng() >> 8) * 0x1p-24f;
+}
+inline float uniform(std::mt19937& rng, float lo, float hi) {
+    return lo + (hi - lo) * uniform01(rng);
+}
+inline uint32_t uniformIndex(std::mt19937& rng, size_t n) {
+    return uint32_t(uint64_t(rng()) * n >> 32);
+}
 inline glm::vec3 uniformIn(std::mt19937& rng, const Aabb& box) {
-    return {uniform(rng, box.lo.x, box.hi.x), uniform(rng, box.lo.y, box.hi.y), uniform(rng, box.lo.z, box.hi.z)};
+    return {uniform(rng, box.lo.x, box.hi.x), uniform(rng, box.lo.y, box.hi.y),
+            uniform(rng, box.lo.z, box.hi.z)};
 }
 // Rejection sampling of the unit ball, then normalized: uniform on the sphere.
 inline glm::vec3 unitVector(std::mt19937& rng) {
@@ -46,7 +53,8 @@ inline Mesh randomSoup(size_t count, uint32_t seed, float size = 0.5f) {
 }
 
 // Latitude-longitude sphere: 2 * stacks * slices triangles (the polar ones degenerate to zero area).
-inline Mesh tessellatedSphere(int stacks, int slices, float radius = 1.0f, glm::vec3 center = glm::vec3(0.0f)) {
+inline Mesh tessellatedSphere(int stacks, int slices, float radius = 1.0f,
+                              glm::vec3 center = glm::vec3(0.0f)) {
     auto point = [&](int i, int j) {
         float theta = 3.14159265f * float(i) / float(stacks);
         float phi = 2.0f * 3.14159265f * float(j % slices) / float(slices);
@@ -92,7 +100,8 @@ inline Mesh unevenDensity(size_t denseCount, size_t sparseCount, uint32_t seed) 
     const Aabb world{glm::vec3(0.0f), glm::vec3(100.0f)};
     for (size_t i = 0; i < denseCount; ++i) {
         glm::vec3 c = uniformIn(rng, cluster);
-        mesh.push_back({c + 0.02f * unitVector(rng), c + 0.02f * unitVector(rng), c + 0.02f * unitVector(rng)});
+        mesh.push_back(
+            {c + 0.02f * unitVector(rng), c + 0.02f * unitVector(rng), c + 0.02f * unitVector(rng)});
     }
     for (size_t i = 0; i < sparseCount; ++i) {
         glm::vec3 c = uniformIn(rng, world);
@@ -156,9 +165,12 @@ inline std::vector<NamedBuilder> builders() {
 }
 
 inline bool contains(const Aabb& outer, const Aabb& inner) {
-    return glm::all(glm::lessThanEqual(outer.lo, inner.lo)) && glm::all(glm::greaterThanEqual(outer.hi, inner.hi));
+    return glm::all(glm::lessThanEqual(outer.lo, inner.lo)) &&
+           glm::all(glm::greaterThanEqual(outer.hi, inner.hi));
 }
-inline bool sameBox(const Aabb& a, const Aabb& b) { return a.lo == b.lo && a.hi == b.hi; }
+inline bool sameBox(const Aabb& a, const Aabb& b) {
+    return a.lo == b.lo && a.hi == b.hi;
+}
 
 // The layout documented in bvh/bvh.h, checked exactly:
 // - no primitives <=> no nodes; primIndex is a permutation of 0..n-1;
@@ -177,7 +189,8 @@ inline ::testing::AssertionResult checkStructure(const Bvh& bvh, const std::vect
         return ::testing::AssertionFailure() << "an empty input must give an empty Bvh";
     }
     if (bvh.primIndex.size() != n)
-        return ::testing::AssertionFailure() << "primIndex has " << bvh.primIndex.size() << " entries for " << n;
+        return ::testing::AssertionFailure()
+               << "primIndex has " << bvh.primIndex.size() << " entries for " << n;
     std::vector<int> seen(n, 0);
     for (uint32_t p : bvh.primIndex) {
         if (p >= n) return ::testing::AssertionFailure() << "primIndex entry " << p << " out of range";
@@ -205,7 +218,8 @@ inline ::testing::AssertionResult checkStructure(const Bvh& bvh, const std::vect
             if (node.first != nextPrim) return fail(where + "leaf range does not follow the previous");
             if (size_t(node.first) + node.count > n) return fail(where + "leaf range past primIndex");
             Aabb u;
-            for (uint32_t i = node.first; i < node.first + node.count; ++i) u.grow(primBounds[bvh.primIndex[i]]);
+            for (uint32_t i = node.first; i < node.first + node.count; ++i)
+                u.grow(primBounds[bvh.primIndex[i]]);
             if (!sameBox(u, node.bounds)) return fail(where + "leaf bounds differ from its primitives'");
             nextPrim += node.count;
             return index + 1;
@@ -213,7 +227,8 @@ inline ::testing::AssertionResult checkStructure(const Bvh& bvh, const std::vect
         const uint32_t afterLeft = walk(index + 1);
         if (afterLeft == 0) return 0;
         if (node.first != afterLeft)
-            return fail(where + "right child " + std::to_string(node.first) + " does not follow the left subtree");
+            return fail(where + "right child " + std::to_string(node.first) +
+                        " does not follow the left subtree");
         const uint32_t afterRight = walk(node.first);
         if (afterRight == 0) return 0;
         const Aabb& l = bvh.nodes[index + 1].bounds;
@@ -228,7 +243,8 @@ inline ::testing::AssertionResult checkStructure(const Bvh& bvh, const std::vect
     const uint32_t end = walk(0);
     if (end == 0) return ::testing::AssertionFailure() << error;
     if (end != bvh.nodes.size())
-        return ::testing::AssertionFailure() << "tree ends at " << end << " of " << bvh.nodes.size() << " nodes";
+        return ::testing::AssertionFailure()
+               << "tree ends at " << end << " of " << bvh.nodes.size() << " nodes";
     if (nextPrim != n) return ::testing::AssertionFailure() << "leaves cover " << nextPrim << " of " << n;
     if (bvh.nodes.size() != 2 * size_t(leaves) - 1)
         return ::testing::AssertionFailure() << bvh.nodes.size() << " nodes for " << leaves << " leaves";

@@ -37,8 +37,8 @@ TEST(IntersectTriangle, FrontAndBackFacesHitWithExactBarycentrics) {
 }
 
 TEST(IntersectTriangle, EdgesAndVerticesAreInside) {
-    for (glm::vec2 p : {glm::vec2(0.5f, 0.0f), glm::vec2(0.0f, 0.5f), glm::vec2(0.5f, 0.5f), glm::vec2(0.0f, 0.0f),
-                        glm::vec2(1.0f, 0.0f), glm::vec2(0.0f, 1.0f)}) {
+    for (glm::vec2 p : {glm::vec2(0.5f, 0.0f), glm::vec2(0.0f, 0.5f), glm::vec2(0.5f, 0.5f),
+                        glm::vec2(0.0f, 0.0f), glm::vec2(1.0f, 0.0f), glm::vec2(0.0f, 1.0f)}) {
         RayHit h = hitTri({{p.x, p.y, 1.0f}, {0, 0, -1}});
         EXPECT_TRUE(h.hit()) << p.x << "," << p.y;
         EXPECT_EQ(h.u, p.x);
@@ -90,15 +90,17 @@ TEST(IntersectTriangle, ConfirmedDropsSpuriousHitsOnSlivers) {
     const TriangleVerts sliver{{0x1.5bb0b4p-4f, -0x1.fd88dap-1f, -0x1.917a54p-5f},
                                {-0x1.452c6cp-24f, -0x1p+0f, 0x1.777a5p-25f},
                                {-0x1.5ae57cp-24f, -0x1p+0f, 0x1.1f60dep-25f}};
-    const Ray ray{{-0x1.eba1f4p+0f, 0x1.af227p-1f, 0x1.acef4p-2f}, {0x1.eba1f6p+0f, -0x1.d79138p+0f, -0x1.acef3ep-2f}};
+    const Ray ray{{-0x1.eba1f4p+0f, 0x1.af227p-1f, 0x1.acef4p-2f},
+                  {0x1.eba1f6p+0f, -0x1.d79138p+0f, -0x1.acef3ep-2f}};
     RayHit raw = hitTri(ray, sliver);
     ASSERT_TRUE(raw.hit());
     EXPECT_LT(raw.t, 0.5f);
     float t, u, v;
     EXPECT_FALSE(intersectTriangleConfirmed(ray, 1.0f / ray.dir, sliver, t, u, v));
     // Genuine hits are kept, with the same numbers, including ones exactly on an edge of the box.
-    for (const Ray& r : {Ray{{0.25f, 0.5f, 1.0f}, {0, 0, -1}}, Ray{{0.0f, 0.0f, 1.0f}, {0, 0, -1}},
-                         Ray{{1.0f, 0.0f, -1.0f}, {0, 0, 1}}, Ray{{-1.0f, -1.0f, 1.0f}, {1.5f, 1.5f, -1.0f}}}) {
+    for (const Ray& r :
+         {Ray{{0.25f, 0.5f, 1.0f}, {0, 0, -1}}, Ray{{0.0f, 0.0f, 1.0f}, {0, 0, -1}},
+          Ray{{1.0f, 0.0f, -1.0f}, {0, 0, 1}}, Ray{{-1.0f, -1.0f, 1.0f}, {1.5f, 1.5f, -1.0f}}}) {
         RayHit expected = hitTri(r);
         ASSERT_TRUE(expected.hit());
         ASSERT_TRUE(intersectTriangleConfirmed(r, 1.0f / r.dir, kUnitTri, t, u, v));
@@ -133,6 +135,10 @@ TEST(SlabTest, AxisAlignedRaysUseInfiniteInverseDirections) {
     EXPECT_FALSE(slab({{-1.0f, -0.5f, 0.5f}, {1, 0, 0}}).hit);     // below
     EXPECT_FALSE(slab({{-1.0f, -0.5f, 0.5f}, {1, -0.0f, 0}}).hit);
     EXPECT_FALSE(slab({{2.0f, 0.5f, 0.5f}, {1, 0, 0}}).hit);  // box behind
+    // A zero direction: all distances infinite; only an origin inside counts.
+    EXPECT_TRUE(slab({{0.5f, 0.5f, 0.5f}, {0, 0, 0}}).hit);
+    EXPECT_FALSE(slab({{-1.0f, 0.5f, 0.5f}, {0, 0, 0}}).hit);
+    EXPECT_FALSE(slab({{2.0f, 0.5f, 0.5f}, {0, -0.0f, 0}}).hit);
     r = slab({{2.0f, 0.5f, 0.5f}, {-1, 0, 0}});
     EXPECT_TRUE(r.hit);
     EXPECT_EQ(r.tEnter, 1.0f);
@@ -180,6 +186,30 @@ TEST(SlabTest, CornerTouchIsAHitAndANearMissIsNot) {
     EXPECT_TRUE(slab({{2.0f, 1.0f, 0.5f}, {-1, -1, 0}}).hit);
     // y = 0.999 - t leaves [0,1] at t = 0.999, before x enters at t = 1.
     EXPECT_FALSE(slab({{2.0f, 0.999f, 0.5f}, {-1, -1, 0}}).hit);
+}
+
+TEST(SlabTest, RoundingNeverCullsABoxTheRayTouches) {
+    // Rays aimed at a box corner that meet the closed box in exact arithmetic (checked in 113-bit
+    // floating point when these were found by random search) but that an unwidened float test culls.
+    struct Case {
+        Aabb box;
+        Ray ray;
+    };
+    const Case cases[] = {
+        {{{-0x1.41832p-3f, -0x1.ed5d06p-1f, -0x1.a6a358p-3f},
+          {0x1.397292p-1f, 0x1.dedabap-1f, 0x1.b288a6p-1f}},
+         {{0x1.c4d5dep+1f, -0x1.1bcadp+0f, 0x1.807204p+0f},
+          {-0x1.d8ee1p+1f, 0x1.28e268p-3f, -0x1.4e5b62p-1f}}},
+        {{{-0x1.f5a908p-2f, -0x1.96c52ap-1f, -0x1.4a44acp-2f},
+          {0x1.cb7d0ap-2f, 0x1.aff9c4p-4f, 0x1.de6a4ap-1f}},
+         {{-0x1.a089fp-1f, 0x1.ce0dd2p+1f, -0x1.84e03p+0f},
+          {0x1.43243ap+0f, -0x1.c08e04p+1f, 0x1.3a0aaap+1f}}},
+        {{{-0x1.d8ee6ap-1f, -0x1.df1998p-3f, -0x1.455cd8p-1f},
+          {0x1.98496p-1f, 0x1.57ef5ap-2f, 0x1.252106p-1f}},
+         {{0x1.bf9f2ep+1f, 0x1.e9e11p+0f, 0x1.51d594p-2f},
+          {-0x1.598cd6p+1f, -0x1.93e53ap+0f, 0x1.f0d8fp-3f}}},
+    };
+    for (const Case& c : cases) EXPECT_TRUE(slab(c.ray, c.box).hit);
 }
 
 // ---- closestHit against brute force ------------------------------------------------------------
@@ -271,10 +301,18 @@ std::vector<TestRay> makeRays(const test::Mesh& mesh, const Bvh& bvh, int perCat
                 const float t = closestHitBruteForce(mesh, ray).t;
                 const float scale = std::isfinite(t) ? t : 1.0f;
                 switch (i / 4 % 4) {
-                    case 0: ray.tMax = scale; break;  // excludes that hit
-                    case 1: ray.tMin = scale; break;  // excludes it too
-                    case 2: ray.tMax = scale * test::uniform(rng, 0.5f, 1.5f); break;
-                    case 3: ray.tMin = scale * test::uniform(rng, 0.0f, 1.0f); break;
+                    case 0:
+                        ray.tMax = scale;
+                        break;  // excludes that hit
+                    case 1:
+                        ray.tMin = scale;
+                        break;  // excludes it too
+                    case 2:
+                        ray.tMax = scale * test::uniform(rng, 0.5f, 1.5f);
+                        break;
+                    case 3:
+                        ray.tMin = scale * test::uniform(rng, 0.0f, 1.0f);
+                        break;
                 }
             }
             rays.push_back({ray, Category(c)});
@@ -309,7 +347,8 @@ std::string describe(const Ray& r) {
                     std::to_string(expected[i].t) + " prim " + std::to_string(expected[i].prim);
     }
     if (failures == 0) return ::testing::AssertionSuccess();
-    return ::testing::AssertionFailure() << failures << " of " << rays.size() << " rays disagree; first: " << first;
+    return ::testing::AssertionFailure()
+           << failures << " of " << rays.size() << " rays disagree; first: " << first;
 }
 
 TEST(ClosestHit, MatchesBruteForceOnEveryMeshAndBuilder) {
@@ -424,9 +463,14 @@ TEST(ClosestHit, CullsMostTrianglesAndVisitsTheNearerChildFirst) {
         ASSERT_TRUE(closestHit(bvh, mesh, ray, &counters).hit());
     }
     // A sphere seen from outside: nearer-first traversal finds the front hit and culls the back half,
-    // so each ray tests a handful of triangles out of 20000.
-    EXPECT_LT(double(counters.trianglesTested) / rays, 30.0);
-    EXPECT_LT(double(counters.nodesVisited) / rays, 100.0);
+    // so each ray tests a handful of triangles out of 20000. (Measured 2.7 and 19.5; always taking the
+    // left child first gives 4.2 and 30.2, the farther child first 5.8 and 41.5.)
+    const double tested = double(counters.trianglesTested) / rays,
+                 visited = double(counters.nodesVisited) / rays;
+    RecordProperty("trianglesTestedPerRay", std::to_string(tested));
+    RecordProperty("nodesVisitedPerRay", std::to_string(visited));
+    EXPECT_LT(tested, 3.5);
+    EXPECT_LT(visited, 25.0);
 }
 
 }  // namespace
