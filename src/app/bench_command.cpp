@@ -178,9 +178,8 @@ int benchCommand(const std::vector<std::string>& argv) {
     std::optional<std::string> cacheDisable = environment("MESA_SHADER_CACHE_DISABLE");
     if (!threads)
         warn(
-            "LP_NUM_THREADS is unset, so llvmpipe uses one thread per CPU; set it explicitly for figures "
-            "that "
-            "can be compared between machines");
+            "LP_NUM_THREADS is unset, so llvmpipe picks its thread count from the CPUs it sees; set it "
+            "explicitly for figures that can be compared");
 
     // The stages of the first frame, each timed on its own so a slow start can be attributed.
     auto stage = Clock::now();
@@ -206,8 +205,8 @@ int benchCommand(const std::vector<std::string>& argv) {
         run.seed = seed;
         auto wallStart = Clock::now();
         double cpuStart = processCpuSeconds();
-        renderer.render(spp, [&](int done) {
-            if (firstFrameSeconds && done == 1) *firstFrameSeconds = secondsSince(start);
+        renderer.render(spp, [&](int) {
+            if (firstFrameSeconds && *firstFrameSeconds == 0.0) *firstFrameSeconds = secondsSince(start);
             return true;
         });
         run.wallSeconds = secondsSince(wallStart);
@@ -219,7 +218,7 @@ int benchCommand(const std::vector<std::string>& argv) {
     };
     auto firstPassStart = Clock::now();
     double firstFrameSeconds = 0.0;
-    // The first pass alone, so the time to first frame ends exactly when the first pixel is done.
+    // The warm-up's first pass ends the first frame: by then every pixel has one sample.
     Run warmUp = measure(0, &firstFrameSeconds);
     double firstPassSeconds =
         firstFrameSeconds - std::chrono::duration<double>(firstPassStart - start).count();

@@ -1,8 +1,6 @@
 // `fragpath bench`: the figures it reports exist, are sane and are machine-readable. Speed itself is
 // never asserted: it depends on the machine and whatever else runs on it.
 #include <gtest/gtest.h>
-#include <sys/wait.h>
-#include <unistd.h>
 
 #include <cmath>
 #include <cstdio>
@@ -11,37 +9,17 @@
 
 #include <nlohmann/json.hpp>
 
+#include "cli/fragpath_runner.h"
+
 namespace fp {
 namespace {
 
 namespace fs = std::filesystem;
+using test::CliRun;
 
-struct BenchRun {
-    int exitCode;
-    std::string output;  // stdout and stderr together
-};
+CliRun fragpath(const std::string& args) { return test::runFragpath(args); }
 
-BenchRun fragpath(const std::string& args) {
-    std::string command = std::string("LP_NUM_THREADS=2 ") + FP_BINARY + " " + args + " 2>&1";
-    FILE* pipe = popen(command.c_str(), "r");
-    std::string output;
-    char buffer[4096];
-    while (size_t n = fread(buffer, 1, sizeof buffer, pipe)) output.append(buffer, n);
-    int status = pclose(pipe);
-    return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, output};
-}
-
-class Bench : public ::testing::Test {
-  protected:
-    void SetUp() override {
-        dir_ = fs::temp_directory_path() / ("fragpath_bench_" + std::to_string(getpid()) + "_" +
-                                            ::testing::UnitTest::GetInstance()->current_test_info()->name());
-        fs::create_directories(dir_);
-    }
-    void TearDown() override { fs::remove_all(dir_); }
-    std::string path(const std::string& name) const { return (dir_ / name).string(); }
-    fs::path dir_;
-};
+class Bench : public test::TempDirTest {};
 
 void expectPositive(const nlohmann::json& j, const std::string& key) {
     ASSERT_TRUE(j.contains(key)) << key << " missing in " << j.dump();
@@ -52,7 +30,7 @@ void expectPositive(const nlohmann::json& j, const std::string& key) {
 
 TEST_F(Bench, WritesEveryFigureAsJson) {
     std::string file = path("bench.json");
-    BenchRun r = fragpath("bench --size 16x16 --spp 1 --runs 3 --json " + file);
+    CliRun r = fragpath("bench --size 16x16 --spp 1 --runs 3 --json " + file);
     ASSERT_EQ(r.exitCode, 0) << r.output;
     for (const char* text :
          {"llvmpipe", "LP_NUM_THREADS   2", "median", "min", "max", "paths/s", "rays/s", "bench: "})
@@ -93,19 +71,15 @@ TEST_F(Bench, WritesEveryFigureAsJson) {
 }
 
 TEST_F(Bench, WarnsWhenTheThreadCountIsLeftToLlvmpipe) {
-    std::string command =
-        std::string("env -u LP_NUM_THREADS ") + FP_BINARY + " bench --size 8x8 --spp 1 --runs 1 2>&1";
-    FILE* pipe = popen(command.c_str(), "r");
-    std::string output;
-    char buffer[4096];
-    while (size_t n = fread(buffer, 1, sizeof buffer, pipe)) output.append(buffer, n);
-    ASSERT_EQ(pclose(pipe), 0) << output;
+    CliRun r = test::runFragpath("bench --size 8x8 --spp 1 --runs 1", "env -u LP_NUM_THREADS");
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    const std::string& output = r.output;
     EXPECT_NE(output.find("warning: LP_NUM_THREADS is unset"), std::string::npos) << output;
     EXPECT_NE(output.find("LP_NUM_THREADS   unset"), std::string::npos) << output;
 }
 
 TEST_F(Bench, HelpListsTheOptions) {
-    BenchRun r = fragpath("bench --help");
+    CliRun r = fragpath("bench --help");
     EXPECT_EQ(r.exitCode, 0);
     for (const char* flag : {"--size", "--spp", "--runs", "--max-depth", "--integrator", "--json"})
         EXPECT_NE(r.output.find(flag), std::string::npos) << flag;
@@ -122,12 +96,12 @@ TEST_F(Bench, BadFlagsAreErrors) {
           Case{"--size 16", "WIDTHxHEIGHT"}, Case{"--max-depth -1", "--max-depth"},
           Case{"--integrator magic", "naive, bsdf or nee"}, Case{"a.obj b.obj", "one scene file"},
           Case{"--json /no/such/dir/b.json", "does not exist"}}) {
-        BenchRun r = fragpath(std::string("bench ") + c.args);
+        CliRun r = fragpath(std::string("bench ") + c.args);
         EXPECT_EQ(r.exitCode, 1) << c.args << ": " << r.output;
         EXPECT_NE(r.output.find("fragpath: error: "), std::string::npos) << c.args << ": " << r.output;
         EXPECT_NE(r.output.find(c.fragment), std::string::npos) << c.args << ": " << r.output;
     }
-    BenchRun r = fragpath("bench " + path("missing.obj") + " --spp 1 --runs 1");
+    CliRun r = fragpath("bench " + path("missing.obj") + " --spp 1 --runs 1");
     EXPECT_EQ(r.exitCode, 1) << r.output;
     EXPECT_NE(r.output.find("missing.obj"), std::string::npos) << r.output;
 }

@@ -1,12 +1,11 @@
 // build/fragpath as a user runs it: exit codes, messages and the files it writes (or must not write).
 #include <gtest/gtest.h>
-#include <sys/wait.h>
-#include <unistd.h>
 
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 
+#include "cli/fragpath_runner.h"
 #include "image/image.h"
 #include "image/image_stats.h"
 
@@ -15,34 +14,14 @@ namespace {
 
 namespace fs = std::filesystem;
 
-struct CliRun {
-    int exitCode;
-    std::string output;  // stdout and stderr together
-};
+using test::CliRun;
 
 CliRun fragpath(const std::string& args, const std::string& environment = "") {
-    std::string command = "LP_NUM_THREADS=2 " + environment + " " + FP_BINARY + " " + args + " 2>&1";
-    FILE* pipe = popen(command.c_str(), "r");
-    std::string output;
-    char buffer[4096];
-    while (size_t n = fread(buffer, 1, sizeof buffer, pipe)) output.append(buffer, n);
-    int status = pclose(pipe);
-    return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, output};
+    return test::runFragpath(args, "LP_NUM_THREADS=2 " + environment);
 }
 
-class Cli : public ::testing::Test {
+class Cli : public test::TempDirTest {
   protected:
-    void SetUp() override {
-        dir_ = fs::temp_directory_path() / ("fragpath_cli_" + std::to_string(getpid()) + "_" +
-                                            ::testing::UnitTest::GetInstance()->current_test_info()->name());
-        fs::create_directories(dir_);
-    }
-    void TearDown() override { fs::remove_all(dir_); }
-    std::string path(const std::string& name) const { return (dir_ / name).string(); }
-    std::string write(const std::string& name, const std::string& text) const {
-        std::ofstream(dir_ / name, std::ios::binary) << text;
-        return path(name);
-    }
     // Expects failure with a message containing `fragment`, and no image written.
     void expectError(const std::string& args, const std::string& fragment) {
         CliRun r = fragpath(args + " -o " + path("out.png"));
@@ -52,7 +31,6 @@ class Cli : public ::testing::Test {
             << "expected '" << fragment << "' in: " << r.output;
         EXPECT_FALSE(fs::exists(path("out.png")));
     }
-    fs::path dir_;
 };
 
 const char* kTriangleObj = "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 2 3\nf 1 3 4\n";
