@@ -11,7 +11,7 @@
 
 uniform int uMaxDepth;
 uniform uint uSeed;
-uniform uint uFirstSample;  // index k of this pass's first sample at every pixel
+uniform uint uSampleOffset;  // added to every sample index (to render one range of a larger render)
 uniform int uSamplesPerPass;
 uniform sampler2D uPreviousSum;
 uniform sampler2D uPreviousSquares;
@@ -29,8 +29,11 @@ void main() {
     vec4 sum = texelFetch(uPreviousSum, pixel, 0);
     vec4 squares = texelFetch(uPreviousSquares, pixel, 0);
     gRayCount = texelFetch(uPreviousCounters, pixel, 0).x;
+    // A pixel's next sample index is the number it already has, so tiles and passes of any size give
+    // the same image.
+    uint firstSample = uSampleOffset + uint(sum.a);
     for (int i = 0; i < uSamplesPerPass; ++i) {
-        rngInit(uSeed, uvec2(pixel), uFirstSample + uint(i));
+        rngInit(uSeed, uvec2(pixel), firstSample + uint(i));
 #if DEBUG_VIEW == 0
         // Box filter: a uniformly jittered position inside the pixel.
         vec3 c = radiance(cameraRay(vec2(pixel) + rand2()));

@@ -52,13 +52,39 @@ void RenderTargets::clear() {
     current_ = 0;
 }
 
-void RenderTargets::beginPass(int firstUnit) {
+void RenderTargets::beginPass(int firstUnit, const PixelRegion& region) {
     for (int a = 0; a < kAttachments; ++a) {
         glActiveTexture(GLenum(GL_TEXTURE0 + firstUnit + a));
         glBindTexture(GL_TEXTURE_2D, textures_[size_t(current_)][size_t(a)]);
     }
     glBindFramebuffer(GL_FRAMEBUFFER, framebuffers_[size_t(current_ ^ 1)]);
     glViewport(0, 0, width_, height_);
+    glEnable(GL_SCISSOR_TEST);
+    glScissor(region.x, region.y, region.width, region.height);
+}
+
+void RenderTargets::endPass(const PixelRegion& region) {
+    glDisable(GL_SCISSOR_TEST);
+    if (region.x == 0 && region.y == 0 && region.width == width_ && region.height == height_) {
+        current_ ^= 1;
+        return;
+    }
+    // Only `region` of the written framebuffer is new: copy it into the current one, attachment by
+    // attachment, so the current framebuffer stays complete.
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, framebuffers_[size_t(current_ ^ 1)]);
+    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, framebuffers_[size_t(current_)]);
+    const GLenum none[kAttachments] = {GL_NONE, GL_NONE, GL_NONE};
+    for (int a = 0; a < kAttachments; ++a) {
+        GLenum draw[kAttachments] = {none[0], none[1], none[2]};
+        draw[a] = GLenum(GL_COLOR_ATTACHMENT0 + a);
+        glReadBuffer(draw[a]);
+        glDrawBuffers(kAttachments, draw);
+        int x1 = region.x + region.width, y1 = region.y + region.height;
+        glBlitFramebuffer(region.x, region.y, x1, y1, region.x, region.y, x1, y1, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+    }
+    const GLenum all[kAttachments] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1, GL_COLOR_ATTACHMENT2};
+    glDrawBuffers(kAttachments, all);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
 }
 
 Accumulation RenderTargets::read() const {

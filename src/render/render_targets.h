@@ -1,6 +1,8 @@
 #pragma once
-// Two ping-pong framebuffers, each with kAttachments RGBA32F attachments (sums, squares, counters):
-// a pass reads the current one and writes the other, then they swap.
+// The accumulation buffers: two framebuffers, each with kAttachments RGBA32F attachments (sums,
+// squares, counters). A pass reads the current one and writes the other. A full-frame pass then swaps
+// them (ping-pong); a pass over a region (a tile, half of a split view) copies that region back instead,
+// so regions can be rendered one at a time without copying the whole frame.
 #include <array>
 
 #include "gl/gl.h"
@@ -8,8 +10,16 @@
 
 namespace fp {
 
+// Pixels [x, x + width) x [y, y + height), y counted from the bottom row as in GL.
+struct PixelRegion {
+    int x = 0, y = 0, width = 0, height = 0;
+    bool empty() const { return width <= 0 || height <= 0; }
+};
+
 class RenderTargets {
   public:
+    static constexpr int kAttachments = 3;
+
     // Throws fp::Error if the size exceeds the GL limits or the framebuffer is incomplete.
     RenderTargets(int width, int height);
     ~RenderTargets();
@@ -18,13 +28,14 @@ class RenderTargets {
 
     int width() const { return width_; }
     int height() const { return height_; }
+    PixelRegion full() const { return {0, 0, width_, height_}; }
     void clear();
-    static constexpr int kAttachments = 3;
-    // Binds the current targets' textures to units firstUnit .. firstUnit + kAttachments - 1, and the
-    // other framebuffer for drawing.
-    void beginPass(int firstUnit);
-    void endPass() { current_ ^= 1; }
+    // Binds the current textures to units firstUnit .. firstUnit + kAttachments - 1 and the other
+    // framebuffer for drawing, restricted to `region`.
+    void beginPass(int firstUnit, const PixelRegion& region);
+    void endPass(const PixelRegion& region);
     Accumulation read() const;
+    // The current sums (radiance sum, sample count), for display.
     GLuint sumTexture() const { return textures_[size_t(current_)][0]; }
 
   private:

@@ -54,35 +54,38 @@ Renderer::~Renderer() {
     glDeleteVertexArrays(1, &vertexArray_);
 }
 
-void Renderer::compile() {
+std::unique_ptr<Program> Renderer::compile(Integrator integrator) const {
     ShaderDefines defines = layout::layoutDefines();
     defines.emplace_back("BVH_STACK_SIZE", std::to_string(stats_.stackSize));
-    defines.emplace_back("INTEGRATOR_FILE",
-                         std::string("\"integrators/") + integratorName(settings_.integrator) + ".glsl\"");
+    defines.emplace_back("INTEGRATOR_FILE", std::string("\"integrators/") + integratorName(integrator) + ".glsl\"");
     defines.emplace_back("DEBUG_VIEW", std::to_string(int(settings_.view)));
-    program_ =
-        std::make_unique<Program>(shaders_, "passes/fullscreen.vert.glsl", "passes/trace.frag.glsl", defines);
+    return std::make_unique<Program>(shaders_, "passes/fullscreen.vert.glsl", "passes/trace.frag.glsl", defines);
 }
 
 void Renderer::reloadShaders() {
-    std::unique_ptr<Program> previous = std::move(program_);
-    try {
-        compile();
-    } catch (...) {
-        program_ = std::move(previous);
-        throw;
-    }
+    std::unique_ptr<Program> program = compile(settings_.integrator);
+    std::unique_ptr<Program> split = settings_.split ? compile(settings_.split->integrator) : nullptr;
+    program_ = std::move(program);  // only once both compiled
+    splitProgram_ = std::move(split);
     samples_ = 0;
+    nextTile_ = 0;
     if (targets_) targets_->clear();
 }
 
 void Renderer::configure(const RenderSettings& settings, const Camera& camera) {
-    if (settings.maxDepth < 0) throw Error("max depth must be 0 or more");
+    if (settings.maxDepth < 0 || (settings.split && settings.split->maxDepth < 0))
+        throw Error("max depth must be 0 or more");
     if (settings.samplesPerPass < 1) throw Error("samples per pass must be 1 or more");
-    bool recompile = !program_ || settings.integrator != settings_.integrator || settings.view != settings_.view;
+    bool splitChanged = settings.split.has_value() != settings_.split.has_value() ||
+                        (settings.split && settings.split->integrator != settings_.split->integrator);
+    bool recompile = !program_ || settings.integrator != settings_.integrator || settings.view != settings_.view ||
+                     splitChanged;
     settings_ = settings;
     camera_ = camera;
-    if (recompile) compile();
+    if (recompile) {
+        program_ = compile(settings_.integrator);
+        splitProgram_ = settings_.split ? compile(settings_.split->integrator) : nullptr;
+    }
     if (!targets_ || targets_->width() != settings.width || targets_->height() != settings.height) {
         glActiveTexture(GLenum(GL_TEXTURE0 + kSpareUnit));  // never rebind a scene texture's unit
         targets_.reset();
@@ -90,12 +93,12 @@ void Renderer::configure(const RenderSettings& settings, const Camera& camera) {
     }
     targets_->clear();
     samples_ = 0;
-    configured_ = true;
+    nextTile_ = 0;
 }
 
-void Renderer::render(int samples, const std::function<bool(int)>& progress) {
-    if (!configured_) throw Error("internal: Renderer::render before configure");
-    Program& p = *program_;
+// Every uniform of the trace pass is set here, and only here.
+void Renderer::draw(Program& p, int maxDepth, const PixelRegion& region, int samples) {
+    if (region.empty()) return;
     p.use();
     p.set("uTriangles", int(layout::kTrianglesUnit));
     p.set("uNormals", int(layout::kNormalsUnit));
@@ -108,8 +111,10 @@ void Renderer::render(int samples, const std::function<bool(int)>& progress) {
     p.set("uPreviousSquares", kSumUnit + 1);
     p.set("uPreviousCounters", kSumUnit + 2);
     p.set("uRayOffset", rayOffset_);
-    p.set("uMaxDepth", settings_.maxDepth);
+    p.set("uMaxDepth", maxDepth);
     p.set("uSeed", settings_.seed);
+    p.set("uSampleOffset", settings_.sampleOffset);
+    p.set("uSamplesPerPass", samples);
 
     // Camera basis: right and up are scaled so that normalised device coordinates map onto the image plane.
     glm::vec3 forward = glm::normalize(camera_.target - camera_.eye);
@@ -125,20 +130,57 @@ void Renderer::render(int samples, const std::function<bool(int)>& progress) {
 
     textures_->bind();
     glBindVertexArray(vertexArray_);
+    targets_->beginPass(kSumUnit, region);
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+    targets_->endPass(region);
+    glActiveTexture(GLenum(GL_TEXTURE0 + kSpareUnit));
+}
+
+// The intersection of two regions.
+static PixelRegion clip(const PixelRegion& a, const PixelRegion& b) {
+    int x0 = std::max(a.x, b.x), y0 = std::max(a.y, b.y);
+    int x1 = std::min(a.x + a.width, b.x + b.width), y1 = std::min(a.y + a.height, b.y + b.height);
+    return {x0, y0, std::max(0, x1 - x0), std::max(0, y1 - y0)};
+}
+
+void Renderer::render(int samples, const std::function<bool(int)>& progress) {
+    if (!targets_) throw Error("internal: Renderer::render before configure");
+    PixelRegion full = targets_->full();
+    int half = settings_.width / 2;
     int done = 0;
     while (done < samples) {
         int count = std::min(settings_.samplesPerPass, samples - done);
-        p.set("uFirstSample", unsigned(samples_));
-        p.set("uSamplesPerPass", count);
-        targets_->beginPass(kSumUnit);
-        glDrawArrays(GL_TRIANGLES, 0, 3);
-        targets_->endPass();
-        glFinish();
+        if (splitProgram_) {
+            draw(*program_, settings_.maxDepth, clip(full, {0, 0, half, settings_.height}), count);
+            draw(*splitProgram_, settings_.split->maxDepth, clip(full, {half, 0, settings_.width, settings_.height}),
+                 count);
+        } else {
+            draw(*program_, settings_.maxDepth, full, count);
+        }
+        glFinish();  // so that progress and timing see finished work, not queued commands
         samples_ += count;
         done += count;
         if (progress && !progress(done)) break;
     }
-    glActiveTexture(GLenum(GL_TEXTURE0 + kSpareUnit));
+}
+
+bool Renderer::renderTile(int tileSize) {
+    if (!targets_) throw Error("internal: Renderer::renderTile before configure");
+    tileSize = std::max(tileSize, 1);
+    int columns = (settings_.width + tileSize - 1) / tileSize, rows = (settings_.height + tileSize - 1) / tileSize;
+    int column = nextTile_ % columns, row = nextTile_ / columns;
+    PixelRegion tile = clip(targets_->full(), {column * tileSize, row * tileSize, tileSize, tileSize});
+    if (splitProgram_) {
+        int half = settings_.width / 2;
+        draw(*program_, settings_.maxDepth, clip(tile, {0, 0, half, settings_.height}), 1);
+        draw(*splitProgram_, settings_.split->maxDepth, clip(tile, {half, 0, settings_.width, settings_.height}), 1);
+    } else {
+        draw(*program_, settings_.maxDepth, tile, 1);
+    }
+    if (++nextTile_ < columns * rows) return false;
+    nextTile_ = 0;
+    ++samples_;
+    return true;
 }
 
 Accumulation Renderer::readback() const {

@@ -28,33 +28,44 @@ class Renderer {
     Renderer(const Scene& scene, ShaderLibrary shaders = ShaderLibrary(), const BvhBuildOptions& bvh = {});
     ~Renderer();
 
-    // Sets what to render; restarts accumulation, recompiling shaders only when the integrator changed.
+    // Sets what to render; restarts accumulation, recompiling shaders only when the integrator, view or
+    // split changed. Throws fp::Error for settings that cannot be rendered.
     void configure(const RenderSettings& settings, const Camera& camera);
-    // Adds `samples` samples per pixel; `progress(done)` is called after every pass and may return
-    // false to stop early (an interrupted render keeps what it has).
+    // Adds `samples` samples per pixel over the whole image; `progress(done)` is called after every
+    // pass and may return false to stop early (an interrupted render keeps what it has).
     void render(int samples, const std::function<bool(int done)>& progress = nullptr);
-    // Recompiles the shaders from the library (for hot reload); throws fp::Error and keeps the old program.
+    // Adds one sample to the next tile of the image (tiles of tileSize x tileSize pixels, bottom row
+    // first), so that an interactive front end can bound the work per frame. Returns true when that
+    // completed a sample over the whole image.
+    bool renderTile(int tileSize);
+    // Recompiles the shaders from the library (hot reload) and restarts accumulation. Throws fp::Error
+    // with the compiler's message, keeping the previous programs.
     void reloadShaders();
 
+    // Samples completed over the whole image (tiles of an unfinished pass not counted).
     int samples() const { return samples_; }
     Accumulation readback() const;
+    // The accumulation's (radiance sum, sample count) texture, for a display pass.
+    GLuint sumTexture() const { return targets_->sumTexture(); }
     const SceneStats& stats() const { return stats_; }
     const RenderSettings& settings() const { return settings_; }
 
   private:
-    void compile();
+    std::unique_ptr<Program> compile(Integrator integrator) const;
+    void draw(Program& program, int maxDepth, const PixelRegion& region, int samples);
+
     ShaderLibrary shaders_;
     SceneStats stats_;
     float rayOffset_ = 0.0f;
     uint32_t lightCount_ = 0;
     std::unique_ptr<SceneTextures> textures_;
     std::unique_ptr<RenderTargets> targets_;
-    std::unique_ptr<Program> program_;
+    std::unique_ptr<Program> program_, splitProgram_;
     GLuint vertexArray_ = 0;
     RenderSettings settings_;
     Camera camera_;
-    bool configured_ = false;
     int samples_ = 0;
+    int nextTile_ = 0;
 };
 
 }  // namespace fp

@@ -1,6 +1,7 @@
 #pragma once
 // What a render is asked to do, independent of the front end that asks.
 #include <cstdint>
+#include <optional>
 #include <string>
 
 namespace fp {
@@ -17,6 +18,13 @@ enum class View { Radiance = 0, Depth = 1, Normal = 2, Albedo = 3 };
 View parseView(const std::string& name);  // throws fp::Error listing the choices
 const char* viewName(View view);
 
+// Split view, for teaching: the right half of the image uses another integrator or depth, at the same
+// sample count, so that the difference in noise shows at a glance.
+struct SplitView {
+    Integrator integrator = Integrator::Naive;
+    int maxDepth = 5;
+};
+
 struct RenderSettings {
     int width = 512, height = 512;
     // Bounces, as in pbrt: 0 shows only emitters seen directly, 1 adds direct lighting, ...
@@ -25,6 +33,8 @@ struct RenderSettings {
     Integrator integrator = Integrator::Nee;
     View view = View::Radiance;
     int samplesPerPass = 1;  // samples each pixel takes in one draw call
+    std::optional<SplitView> split;
+    uint32_t sampleOffset = 0;  // the first sample index (to render one range of a larger render)
 };
 
 }  // namespace fp
