@@ -4,6 +4,8 @@
 #endif
 const float INF = 1e30;
 float gRayCount = 0.0;  // rays traced by this pixel, for the rays/s figure
+int gNodesVisited = 0;  // BVH nodes and triangles the last traversal looked at, for the cost views
+int gTrianglesTested = 0;
 
 struct Ray {
     vec3 origin;
@@ -43,6 +45,7 @@ float boxEntry(vec3 origin, vec3 invDir, vec3 lo, vec3 hi, float tMax) {
 
 // Tests the leaf's triangles, shrinking hit.t; returns true as soon as one is hit when anyHit is set.
 bool intersectLeaf(Ray ray, uint first, uint count, bool anyHit, inout Hit hit) {
+    gTrianglesTested += int(count);
     for (uint i = first; i < first + count; ++i) {
         TriangleData tri = fetchTriangle(int(i));
         float t;
@@ -60,6 +63,8 @@ bool intersectLeaf(Ray ray, uint first, uint count, bool anyHit, inout Hit hit) 
 bool traverse(Ray ray, float tMax, bool anyHit, out Hit hit) {
     hit = Hit(tMax, -1, vec2(0.0));
     gRayCount += 1.0;
+    gNodesVisited = 0;
+    gTrianglesTested = 0;
     // Tiny direction components become tiny numbers instead of zeros, so that no 0 * inf = NaN
     // reaches the slab test.
     vec3 safeDir = mix(ray.dir, vec3(1e-20), lessThan(abs(ray.dir), vec3(1e-20)));
@@ -68,6 +73,7 @@ bool traverse(Ray ray, float tMax, bool anyHit, out Hit hit) {
     int size = 0;
     uint node = 0u;
     while (true) {
+        ++gNodesVisited;
         vec4 b0 = texelFetch(uNodeBounds, int(node) * NODE_BOUNDS_TEXELS);
         vec4 b1 = texelFetch(uNodeBounds, int(node) * NODE_BOUNDS_TEXELS + 1);
         vec4 b2 = texelFetch(uNodeBounds, int(node) * NODE_BOUNDS_TEXELS + 2);

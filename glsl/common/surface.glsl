@@ -35,10 +35,14 @@ bool leavesSurface(Surface s, vec3 dir) { return dot(dir, s.geometricNormal) > 0
 
 // Russian roulette (as in pbrt-v4 PathIntegrator::Li): after a few bounces, stop a path with probability
 // 1 - max(beta) and reweight the survivors, which keeps the estimate unbiased.
+int gBounces = 0;  // bounces the current path survived, for the bounces view
+
 bool survivesRoulette(inout vec3 beta, int depth) {
-    if (depth < 3) return true;
-    float keep = min(1.0, max(beta.r, max(beta.g, beta.b)));
-    if (rand() >= keep) return false;
-    beta /= keep;
+    if (depth >= 3) {
+        float keep = min(1.0, max(beta.r, max(beta.g, beta.b)));
+        if (rand() >= keep) return false;
+        beta /= keep;
+    }
+    ++gBounces;
     return true;
 }

@@ -1,12 +1,27 @@
-// Debug views: what the primary ray through the pixel centre hits, one quantity per view, chosen at
-// compile time by DEBUG_VIEW (the values of fp::View in src/render/settings.h). A miss shows 0.
+// Debug views, chosen at compile time by DEBUG_VIEW (the values of fp::View in src/render/settings.h).
+// Geometry views show what the primary ray through the pixel centre hits (0 on a miss); the cost views
+// count what the path tracer does, averaged over the samples.
 #define VIEW_DEPTH 1
 #define VIEW_NORMAL 2
 #define VIEW_ALBEDO 3
+#define VIEW_BOUNCES 4
+#define VIEW_NODES 5
+#define VIEW_TRIANGLES 6
 
 vec3 debugView(Ray ray) {
+#if DEBUG_VIEW == VIEW_BOUNCES
+    gBounces = 0;
+    radiance(ray);  // the selected integrator, counting the bounces its path survives
+    return vec3(float(gBounces));
+#else
     Hit hit;
-    if (!traceClosest(ray, hit)) return vec3(0.0);
+    bool found = traceClosest(ray, hit);
+#if DEBUG_VIEW == VIEW_NODES
+    return vec3(float(gNodesVisited));  // BVH nodes the primary ray visited (each tests two boxes)
+#elif DEBUG_VIEW == VIEW_TRIANGLES
+    return vec3(float(gTrianglesTested));  // ray-triangle tests of the primary ray
+#else
+    if (!found) return vec3(0.0);
     Surface s = surfaceAt(ray, hit);
 #if DEBUG_VIEW == VIEW_DEPTH
     return vec3(hit.t);  // distance along the unit-length ray
@@ -14,5 +29,7 @@ vec3 debugView(Ray ray) {
     return 0.5 * s.shadingNormal + 0.5;  // the side facing the camera, mapped from [-1, 1] to [0, 1]
 #else
     return materialAlbedo(s.material);
+#endif
+#endif
 #endif
 }

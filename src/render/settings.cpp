@@ -24,9 +24,9 @@ const char* integratorName(Integrator integrator) {
 }
 
 View parseView(const std::string& name) {
-    for (View v : {View::Radiance, View::Depth, View::Normal, View::Albedo})
+    for (View v : kAllViews)
         if (name == viewName(v)) return v;
-    throw Error("unknown view '" + name + "' (choose radiance, depth, normal or albedo)");
+    throw Error("unknown view '" + name + "' (choose radiance, depth, normal, albedo, bounces, nodes or triangles)");
 }
 
 const char* viewName(View view) {
@@ -35,6 +35,9 @@ const char* viewName(View view) {
         case View::Depth: return "depth";
         case View::Normal: return "normal";
         case View::Albedo: return "albedo";
+        case View::Bounces: return "bounces";
+        case View::Nodes: return "nodes";
+        case View::Triangles: return "triangles";
     }
     return "?";
 }

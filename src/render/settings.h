@@ -12,9 +12,14 @@ enum class Integrator { Naive, Bsdf, Nee };
 Integrator parseIntegrator(const std::string& name);  // throws fp::Error listing the choices
 const char* integratorName(Integrator integrator);
 
-// What each pixel shows: the rendered radiance, or one property of the first hit (glsl/passes/debug_views.glsl).
-enum class View { Radiance = 0, Depth = 1, Normal = 2, Albedo = 3 };
+// What each pixel shows: the rendered radiance, one property of the first hit, or a cost the path
+// tracer pays there (glsl/passes/debug_views.glsl).
+enum class View { Radiance = 0, Depth = 1, Normal = 2, Albedo = 3, Bounces = 4, Nodes = 5, Triangles = 6 };
+// Views that count something, best shown as a heat map.
+inline bool isCountView(View v) { return v == View::Bounces || v == View::Nodes || v == View::Triangles; }
 
+constexpr View kAllViews[] = {View::Radiance, View::Depth,  View::Normal,   View::Albedo,
+                              View::Bounces,  View::Nodes, View::Triangles};
 View parseView(const std::string& name);  // throws fp::Error listing the choices
 const char* viewName(View view);
 

@@ -1,0 +1,105 @@
+// Debug views and the display pass.
+#include <gtest/gtest.h>
+
+#include "image/png.h"
+#include "render/display.h"
+#include "render_test_util.h"
+#include "scene/builtin_scene.h"
+
+namespace fp::test {
+namespace {
+
+Image renderView(Renderer& renderer, const Camera& camera, View view, int maxDepth, int spp) {
+    RenderSettings s;
+    s.width = s.height = 24;
+    s.view = view;
+    s.maxDepth = maxDepth;
+    renderer.configure(s, camera);
+    renderer.render(spp);
+    return renderer.readback().mean();
+}
+
+TEST(Views, CountsAreWithinTheirBounds) {
+    ensureGlContext();
+    Scene scene = builtinCornellBox();
+    Renderer renderer(scene);
+    for (int depth : {0, 2, 5}) {
+        Image bounces = renderView(renderer, *scene.camera, View::Bounces, depth, 8);
+        float maxBounces = 0.0f;
+        for (const glm::vec3& p : bounces.pixels) maxBounces = std::max(maxBounces, p.x);
+        EXPECT_LE(maxBounces, float(depth));
+        if (depth > 0) {
+            EXPECT_GT(maxBounces, 0.0f);
+        }
+    }
+    Image nodes = renderView(renderer, *scene.camera, View::Nodes, 5, 1);
+    Image triangles = renderView(renderer, *scene.camera, View::Triangles, 5, 1);
+    for (size_t i = 0; i < nodes.pixels.size(); ++i) {
+        EXPECT_GE(nodes.pixels[i].x, 1.0f) << "the root is always visited";
+        EXPECT_LE(nodes.pixels[i].x, float(renderer.stats().bvh.nodeCount));
+        EXPECT_LE(triangles.pixels[i].x, 32.0f);
+    }
+}
+
+TEST(Views, NormalsAreUnitVectorsFacingTheCamera) {
+    ensureGlContext();
+    Scene scene = furnaceBox(0.5f, 0.0f);
+    Renderer renderer(scene);
+    Image normals = renderView(renderer, insideCamera(), View::Normal, 5, 1);
+    Image albedo = renderView(renderer, insideCamera(), View::Albedo, 5, 1);
+    for (size_t i = 0; i < normals.pixels.size(); ++i) {
+        glm::vec3 n = 2.0f * normals.pixels[i] - 1.0f;
+        EXPECT_NEAR(glm::length(n), 1.0f, 1e-4f);
+        // Inside the cube every face is axis-aligned: one component is +-1.
+        EXPECT_NEAR(std::max({std::abs(n.x), std::abs(n.y), std::abs(n.z)}), 1.0f, 1e-4f);
+        EXPECT_EQ(albedo.pixels[i], glm::vec3(0.5f));
+    }
+}
+
+// The window shows what a PNG would: the GPU display pass and the PNG writer agree to one code value.
+TEST(DisplayPass, MatchesThePngWriter) {
+    ensureGlContext();
+    const int w = 16, h = 4;
+    Image linear(w, h);
+    std::vector<glm::vec4> sums(size_t(w) * h);
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) {
+            glm::vec3 v(0.001f * float(x * x * x), 0.05f * float(x + y), 3.0f * float(y) / float(x + 1));
+            float samples = float(1 + x % 3);
+            linear.at(x, h - 1 - y) = v;  // Image rows are top first; GL rows bottom first
+            sums[size_t(y) * w + size_t(x)] = glm::vec4(v * samples, samples);
+        }
+    GLuint texture, target, framebuffer;
+    glGenTextures(1, &texture);
+    glBindTexture(GL_TEXTURE_2D, texture);
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA32F, w, h, 0, GL_RGBA, GL_FLOAT, sums.data());
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);  // complete without mipmaps
+    glGenTextures(1, &target);
+    glBindTexture(GL_TEXTURE_2D, target);
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, w, h, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
+    glGenFramebuffers(1, &framebuffer);
+    glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
+    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, target, 0);
+    Display display;
+    for (ToneMap toneMap : {ToneMap::Clamp, ToneMap::Reinhard, ToneMap::Aces}) {
+        DisplayOptions options;
+        options.tone = {0.5f, toneMap};
+        display.draw(texture, w, h, options);
+        std::vector<uint8_t> gpu(size_t(w) * h * 4);
+        glReadPixels(0, 0, w, h, GL_RGBA, GL_UNSIGNED_BYTE, gpu.data());
+        std::vector<uint8_t> cpu = toDisplay8(linear, options.tone);  // RGB, top row first
+        for (int y = 0; y < h; ++y)
+            for (int x = 0; x < w; ++x)
+                for (int c = 0; c < 3; ++c) {
+                    int g = gpu[(size_t(y) * w + size_t(x)) * 4 + size_t(c)];
+                    int e = cpu[(size_t(h - 1 - y) * w + size_t(x)) * 3 + size_t(c)];
+                    EXPECT_NEAR(g, e, 1) << "tone map " << int(toneMap) << " pixel " << x << "," << y;
+                }
+    }
+    glDeleteFramebuffers(1, &framebuffer);
+    glDeleteTextures(1, &target);
+    glDeleteTextures(1, &texture);
+}
+
+}  // namespace
+}  // namespace fp::test
