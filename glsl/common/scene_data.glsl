@@ -28,5 +28,6 @@ vec3 fetchShadingNormal(int i, vec2 uv) {
     return normalize((1.0 - uv.x - uv.y) * n0 + uv.x * n1 + uv.y * n2);
 }
 
-vec3 materialAlbedo(int m) { return texelFetch(uMaterials, m * MATERIAL_TEXELS).rgb; }
 vec3 materialEmission(int m) { return texelFetch(uMaterials, m * MATERIAL_TEXELS + 1).rgb; }
+
+float luminance(vec3 rgb) { return dot(rgb, vec3(0.2126, 0.7152, 0.0722)); }

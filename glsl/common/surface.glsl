@@ -5,7 +5,9 @@ struct Surface {
     vec3 position;
     vec3 geometricNormal;  // unit, on the side the ray came from
     vec3 shadingNormal;    // unit, interpolated from the vertices, on the same side
-    int material;
+    vec3 tangent, bitangent;  // with shadingNormal, the local shading frame of bsdf.glsl
+    MaterialData material;
+    float eta;             // n_transmitted / n_incident for a dielectric, as seen from the ray's side
     bool frontFace;        // the ray hit the counter-clockwise side: the side that emits
 };
 
@@ -18,20 +20,27 @@ Surface surfaceAt(Ray ray, Hit hit) {
     s.geometricNormal = s.frontFace ? n : -n;
     vec3 ns = fetchShadingNormal(hit.triangle, hit.uv);
     s.shadingNormal = dot(ns, s.geometricNormal) < 0.0 ? -ns : ns;
-    s.material = tri.material;
+    orthonormalBasis(s.shadingNormal, s.tangent, s.bitangent);
+    s.material = fetchMaterial(tri.material);
+    // Front faces face out of a closed glass object: a ray hitting one enters it.
+    s.eta = s.frontFace ? s.material.ior : 1.0 / s.material.ior;
     return s;
 }
 
-vec3 emittedRadiance(Surface s) { return s.frontFace ? materialEmission(s.material) : vec3(0.0); }
+vec3 toLocal(Surface s, vec3 v) { return vec3(dot(v, s.tangent), dot(v, s.bitangent), dot(v, s.shadingNormal)); }
+vec3 toWorld(Surface s, vec3 v) { return v.x * s.tangent + v.y * s.bitangent + v.z * s.shadingNormal; }
+
+vec3 emittedRadiance(Surface s) { return s.frontFace ? s.material.emission : vec3(0.0); }
+
+// Shading normals can put a direction on one side of the shading frame and the other side of the true
+// surface; such a direction cannot be followed (it would leak light through the surface).
+bool sameSide(Surface s, vec3 local, vec3 world) { return (local.z > 0.0) == (dot(world, s.geometricNormal) > 0.0); }
 
 // A ray leaving the surface, nudged off it to the side it leaves on.
 Ray spawnRay(Surface s, vec3 dir) {
     float side = dot(dir, s.geometricNormal) >= 0.0 ? 1.0 : -1.0;
     return Ray(s.position + side * uRayOffset * s.geometricNormal, dir);
 }
-
-// A sampled direction under the geometric surface cannot leave it (shading normals can ask for one).
-bool leavesSurface(Surface s, vec3 dir) { return dot(dir, s.geometricNormal) > 0.0; }
 
 // Russian roulette (as in pbrt-v4 PathIntegrator::Li): after a few bounces, stop a path with probability
 // 1 - max(beta) and reweight the survivors, which keeps the estimate unbiased.

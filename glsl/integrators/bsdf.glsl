@@ -1,16 +1,22 @@
-// BSDF importance sampling: directions drawn with density cos(theta) / pi, proportional to the
-// Lambertian integrand, so each bounce weighs f cos / pdf = albedo and the cosine noise is gone.
+// BSDF importance sampling: directions drawn with a density shaped like the surface's scattering
+// (cos(theta) / pi for a Lambertian surface, so each bounce weighs f cos / pdf = albedo and the cosine
+// noise is gone; visible GGX normals for glossy ones; Fresnel-chosen reflection or refraction for glass).
 vec3 radiance(Ray ray) {
     vec3 L = vec3(0.0), beta = vec3(1.0);
     for (int depth = 0;; ++depth) {
         Hit hit;
-        if (!traceClosest(ray, hit)) break;
+        if (!traceClosest(ray, hit)) {
+            L += beta * environmentRadiance(ray.dir);
+            break;
+        }
         Surface s = surfaceAt(ray, hit);
         L += beta * emittedRadiance(s);
         if (depth == uMaxDepth) break;
-        vec3 dir = sampleCosineHemisphere(s.shadingNormal, rand2());
-        if (!leavesSurface(s, dir)) break;
-        beta *= materialAlbedo(s.material);
+        BsdfSample bs;
+        if (!bsdfSample(s.material, toLocal(s, -ray.dir), vec3(rand2(), rand()), s.eta, bs)) break;
+        vec3 dir = toWorld(s, bs.wi);
+        if (!sameSide(s, bs.wi, dir)) break;
+        beta *= bs.weight;
         if (!survivesRoulette(beta, depth)) break;
         ray = spawnRay(s, dir);
     }

@@ -1,17 +1,31 @@
 // The seed's estimator, kept as plain as smallpt: at every hit add the emitted light, then continue
 // in a direction drawn uniformly over the hemisphere. For a Lambertian surface f = albedo / pi and the
 // pdf is 1 / (2 pi), so each bounce weighs f cos(theta) / pdf = 2 * albedo * cos(theta).
+// Uniform directions cannot find a mirror's or a glass's single direction, so those surfaces (and the
+// other non-Lambertian ones) are sampled by their BSDF instead.
 vec3 radiance(Ray ray) {
     vec3 L = vec3(0.0), beta = vec3(1.0);
     for (int depth = 0;; ++depth) {
         Hit hit;
-        if (!traceClosest(ray, hit)) break;
+        if (!traceClosest(ray, hit)) {
+            L += beta * environmentRadiance(ray.dir);
+            break;
+        }
         Surface s = surfaceAt(ray, hit);
         L += beta * emittedRadiance(s);
         if (depth == uMaxDepth) break;
-        vec3 dir = sampleUniformHemisphere(s.shadingNormal, rand2());
-        if (!leavesSurface(s, dir)) break;
-        beta *= 2.0 * materialAlbedo(s.material) * dot(dir, s.shadingNormal);
+        vec3 dir;
+        if (s.material.type == MATERIAL_DIFFUSE) {
+            dir = sampleUniformHemisphere(s.shadingNormal, rand2());
+            if (dot(dir, s.geometricNormal) <= 0.0) break;
+            beta *= 2.0 * s.material.diffuse * dot(dir, s.shadingNormal);
+        } else {
+            BsdfSample bs;
+            if (!bsdfSample(s.material, toLocal(s, -ray.dir), vec3(rand2(), rand()), s.eta, bs)) break;
+            dir = toWorld(s, bs.wi);
+            if (!sameSide(s, bs.wi, dir)) break;
+            beta *= bs.weight;
+        }
         if (!survivesRoulette(beta, depth)) break;
         ray = spawnRay(s, dir);
     }

@@ -1,34 +1,42 @@
 // Next-event estimation with multiple importance sampling (Veach 1997, ch. 9): at every vertex a
 // light sample and a BSDF sample each estimate direct lighting, and the power heuristic weighs the
-// two so that each covers the paths the other samples badly. Emission found by a BSDF-sampled ray
-// is weighted against the density light sampling would have had for it.
+// two so that each covers the paths the other samples badly. Light found by a BSDF-sampled ray is
+// weighted against the density light sampling would have had for it; after a delta lobe (mirror,
+// glass), which light sampling cannot reach, it counts in full.
 vec3 radiance(Ray ray) {
     vec3 L = vec3(0.0), beta = vec3(1.0);
-    float bsdfPdf = 0.0;  // solid-angle density of the direction that led to this vertex
+    float lastPdf = 0.0;      // solid-angle density of the direction that led here
+    bool fullWeight = true;  // camera rays and delta bounces: no light sample competed
     for (int depth = 0;; ++depth) {
         Hit hit;
-        if (!traceClosest(ray, hit)) break;
+        if (!traceClosest(ray, hit)) {
+            vec3 Le = environmentRadiance(ray.dir);
+            L += beta * Le * (fullWeight ? 1.0 : powerHeuristic(lastPdf, environmentPdf(ray.dir)));
+            break;
+        }
         Surface s = surfaceAt(ray, hit);
         vec3 Le = emittedRadiance(s);
-        if (Le != vec3(0.0)) {
-            float weight = depth == 0 ? 1.0 : powerHeuristic(bsdfPdf, lightPdf(ray, hit));
-            L += beta * weight * Le;
-        }
+        if (Le != vec3(0.0)) L += beta * Le * (fullWeight ? 1.0 : powerHeuristic(lastPdf, lightPdf(ray, hit)));
         if (depth == uMaxDepth) break;
 
-        vec3 albedo = materialAlbedo(s.material);
-        LightSample ls = sampleLight(s.position);
-        float cosLight = dot(ls.dir, s.shadingNormal);
-        if (ls.pdf > 0.0 && cosLight > 0.0 && leavesSurface(s, ls.dir) &&
-            !occluded(spawnRay(s, ls.dir), ls.dist * (1.0 - 1e-4))) {
-            vec3 f = albedo / PI;
-            L += beta * f * cosLight * ls.radiance * powerHeuristic(ls.pdf, cosLight / PI) / ls.pdf;
+        vec3 wo = toLocal(s, -ray.dir);
+        if (!isDeltaOnly(s.material)) {
+            LightSample ls = sampleLight(s.position);
+            vec3 wi = toLocal(s, ls.dir);
+            if (ls.pdf > 0.0 && sameSide(s, wi, ls.dir)) {
+                vec3 f = bsdfEval(s.material, wo, wi, s.eta);
+                if (f != vec3(0.0) && !occluded(spawnRay(s, ls.dir), ls.dist * (1.0 - 1e-4)))
+                    L += beta * f * ls.radiance * powerHeuristic(ls.pdf, bsdfPdf(s.material, wo, wi, s.eta)) / ls.pdf;
+            }
         }
 
-        vec3 dir = sampleCosineHemisphere(s.shadingNormal, rand2());
-        if (!leavesSurface(s, dir)) break;
-        bsdfPdf = dot(dir, s.shadingNormal) / PI;
-        beta *= albedo;
+        BsdfSample bs;
+        if (!bsdfSample(s.material, wo, vec3(rand2(), rand()), s.eta, bs)) break;
+        vec3 dir = toWorld(s, bs.wi);
+        if (!sameSide(s, bs.wi, dir)) break;
+        beta *= bs.weight;
+        lastPdf = bs.pdf;
+        fullWeight = bs.delta;
         if (!survivesRoulette(beta, depth)) break;
         ray = spawnRay(s, dir);
     }

@@ -5,6 +5,7 @@
 #include "common/sampling.glsl"
 #include "common/scene_data.glsl"
 #include "common/intersect.glsl"
+#include "common/bsdf.glsl"
 #include "common/surface.glsl"
 #include "common/lights.glsl"
 #include "common/camera.glsl"

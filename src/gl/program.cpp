@@ -29,7 +29,7 @@ static GLuint compile(GLenum stage, const ShaderLibrary& library, const std::str
     GLint ok = GL_FALSE;
     glGetShaderiv(shader, GL_COMPILE_STATUS, &ok);
     if (!ok) {
-        std::string log = mapCompileLog(infoLog(shader, false), source.files);
+        std::string log = mapCompileLog(infoLog(shader, false), source);
         glDeleteShader(shader);
         throw Error("shader compilation failed (glsl/" + path + "):\n" + log);
     }

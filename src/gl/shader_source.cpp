@@ -40,12 +40,14 @@ struct Expander {
         throw Error("#include " + name + ": no define of that name holds a quoted path");
     }
 
+    void emit(const std::string& line, const std::string& file, int lineNumber) {
+        out.text += line + "\n";
+        out.origins.push_back({file, lineNumber});
+    }
+
     void include(const std::string& path) {
         if (!seen.insert(path).second) return;  // every file at most once, like #pragma once
-        int fileIndex = int(out.files.size());
-        out.files.push_back(path);
         std::istringstream in(library.read(path));
-        out.text += "#line 1 " + std::to_string(fileIndex) + "\n";
         // `#include "path"`, or `#include NAME` where NAME is a define whose value is a quoted path.
         static const std::regex includeLine(
             R"re(^\s*#\s*include\s*(?:"([^"]+)"|([A-Za-z_]\w*))\s*(//.*)?$)re");
@@ -60,11 +62,8 @@ struct Expander {
                 } catch (const Error& e) {
                     throw Error("glsl/" + path + ":" + std::to_string(lineNumber) + ": " + e.what());
                 }
-                // GLSL 4.x: the line after `#line L F` is line L.
-                out.text +=
-                    "#line " + std::to_string(lineNumber + 1) + " " + std::to_string(fileIndex) + "\n";
             } else {
-                out.text += line + "\n";
+                emit(line, path, lineNumber);
             }
         }
     }
@@ -74,14 +73,16 @@ struct Expander {
 
 ExpandedShader ShaderLibrary::expand(const std::string& path, const ShaderDefines& defines) const {
     Expander expander{*this, defines, {}, {}};
-    expander.out.text = "#version 410 core\n";
-    for (const auto& [name, value] : defines) expander.out.text += "#define " + name + " " + value + "\n";
+    expander.emit("#version 410 core", "(generated)", 1);
+    for (const auto& [name, value] : defines) expander.emit("#define " + name + " " + value, "(generated)", 1);
     expander.include(path);
     return expander.out;
 }
 
-std::string mapCompileLog(const std::string& log, const std::vector<std::string>& files) {
-    // Mesa "0:12(5): error", AMD "ERROR: 0:12: error", NVIDIA "0(12) : error".
+std::string mapCompileLog(const std::string& log, const ExpandedShader& shader) {
+    // Mesa "0:12(5): error", AMD "ERROR: 0:12: error", NVIDIA "0(12) : error". The source-string number is
+    // ignored: the text carries no #line directives (Mesa drops the source number from some messages), so
+    // the line is a line of the whole expanded text, which `origins` maps back to its file.
     static const std::regex reference(R"((\d+):(\d+)\(\d+\)|(\d+):(\d+)(?=:)|(\d+)\((\d+)\)(?= :))");
     std::string result;
     auto begin = std::sregex_iterator(log.begin(), log.end(), reference);
@@ -89,12 +90,14 @@ std::string mapCompileLog(const std::string& log, const std::vector<std::string>
     for (auto it = begin; it != std::sregex_iterator(); ++it) {
         const std::smatch& m = *it;
         int group = m[1].matched ? 1 : m[3].matched ? 3 : 5;
-        size_t file = std::stoul(m[group].str());
+        size_t line = std::stoul(m[group + 1].str());
         result += log.substr(last, size_t(m.position(0)) - last);
-        if (file < files.size())
-            result += "glsl/" + files[file] + ":" + m[group + 1].str();
-        else
+        if (line >= 1 && line <= shader.origins.size()) {
+            const auto& [file, fileLine] = shader.origins[line - 1];
+            result += "glsl/" + file + ":" + std::to_string(fileLine);
+        } else {
             result += m.str(0);
+        }
         last = size_t(m.position(0) + m.length(0));
     }
     return result + log.substr(last);

@@ -1,7 +1,7 @@
 #pragma once
 // GLSL sources with a small #include mechanism. Files come from the embedded glsl/ tree or, for hot
-// reloading and experiments, from a directory on disk. Expansion inserts `#line L F` directives so
-// that compiler messages can be mapped back to the original file and line.
+// reloading and experiments, from a directory on disk. Expansion records where every line came from,
+// so that compiler messages can be mapped back to the original file and line.
 #include <string>
 #include <utility>
 #include <vector>
@@ -11,8 +11,9 @@ namespace fp {
 using ShaderDefines = std::vector<std::pair<std::string, std::string>>;
 
 struct ExpandedShader {
-    std::string text;                // ready for glShaderSource: #version, defines, then the files
-    std::vector<std::string> files;  // source-string number used in #line -> path below glsl/
+    std::string text;  // ready for glShaderSource: #version, defines, then the files
+    // For each line of `text` (line n at index n - 1): the file below glsl/ and the line it came from.
+    std::vector<std::pair<std::string, int>> origins;
 };
 
 class ShaderLibrary {
@@ -33,7 +34,7 @@ class ShaderLibrary {
 };
 
 // Rewrites "0:12(5): error" style references of a driver's compile log (Mesa, NVIDIA and AMD forms)
-// into "glsl/<file>:12: error", using the file table of the expansion.
-std::string mapCompileLog(const std::string& log, const std::vector<std::string>& files);
+// into "glsl/<file>:<line>: error", using the line origins of the expansion.
+std::string mapCompileLog(const std::string& log, const ExpandedShader& shader);
 
 }  // namespace fp

@@ -17,7 +17,8 @@
 //                                            count > 0: a leaf of triangles [first, first + count);
 //                                            count = 0: an interior node at index `first`. Node 0 is the
 //                                            root.
-//  materials     RGBA32F    2 per material   (Kd.rgb, 0) (Ke.rgb, 0)
+//  materials     RGBA32F    4 per material   (Kd.rgb, type) (Ke.rgb, roughness) (Ks.rgb, ior) (Tf.rgb, 0)
+//                                            type: fp::MaterialType as an exact float
 //  lights        RGBA32F    1 per emitter    (triangle index, cdf up to and including it, pmf, area)
 //
 // Indices stored in float channels are exact integers below 2^24, which every GPU keeps exactly.
@@ -31,7 +32,7 @@ constexpr int kTriangleTexels = 3;
 constexpr int kNormalTexels = 3;
 constexpr int kNodeBoundsTexels = 3;
 constexpr int kNodeLinkTexels = 1;
-constexpr int kMaterialTexels = 2;
+constexpr int kMaterialTexels = 4;
 constexpr int kLightTexels = 1;
 constexpr uint32_t kMaxFloatIndex = 1u << 24;
 

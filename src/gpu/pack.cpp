@@ -104,8 +104,10 @@ PackedScene packScene(const Scene& scene, const Bvh& bvh) {
     out.lightCount = uint32_t(out.lights.size());
 
     for (const Material& m : scene.materials) {
-        out.materials.emplace_back(m.diffuse, 0.0f);
-        out.materials.emplace_back(m.emission, 0.0f);
+        out.materials.emplace_back(m.diffuse, float(m.type));
+        out.materials.emplace_back(m.emission, m.roughness);
+        out.materials.emplace_back(m.specular, m.ior);
+        out.materials.emplace_back(m.transmission, 0.0f);
     }
 
     NodePacker packer{bvh, out};

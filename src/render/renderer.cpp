@@ -47,6 +47,7 @@ Renderer::Renderer(const Scene& scene, ShaderLibrary shaders, const BvhBuildOpti
     Aabb box = scene.bounds();
     float reach = std::max({glm::length(box.extent()), glm::length(box.lo), glm::length(box.hi)});
     rayOffset_ = 1e-5f * reach;
+    environment_ = scene.environment;
     glGenVertexArrays(1, &vertexArray_);
 }
 
@@ -107,6 +108,7 @@ void Renderer::draw(Program& p, int maxDepth, const PixelRegion& region, int sam
     p.set("uMaterials", int(layout::kMaterialsUnit));
     p.set("uLights", int(layout::kLightsUnit));
     p.set("uLightCount", int(lightCount_));
+    p.set("uEnvironment", environment_);
     p.set("uPreviousSum", kSumUnit);
     p.set("uPreviousSquares", kSumUnit + 1);
     p.set("uPreviousCounters", kSumUnit + 2);

@@ -57,6 +57,7 @@ class Renderer {
     ShaderLibrary shaders_;
     SceneStats stats_;
     float rayOffset_ = 0.0f;
+    glm::vec3 environment_{0.0f};
     uint32_t lightCount_ = 0;
     std::unique_ptr<SceneTextures> textures_;
     std::unique_ptr<RenderTargets> targets_;

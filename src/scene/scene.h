@@ -13,10 +13,23 @@
 
 namespace fp {
 
+// The surface models. Each has its own file of formulas in glsl/common/bsdf.glsl.
+enum class MaterialType : uint32_t {
+    Diffuse = 0,     // Lambertian: Kd
+    Conductor = 1,   // GGX microfacet metal: F0 = Ks (or Kd when metallic), roughness Pr
+    Plastic = 2,     // GGX dielectric coat (ior Ni) over a Lambertian base Kd
+    Dielectric = 3,  // glass: exact Fresnel, refraction (ior Ni, tint Tf), smooth or GGX-rough (Pr)
+};
+
 struct Material {
     std::string name = "default";
-    glm::vec3 diffuse{0.8f};   // MTL Kd: Lambertian reflectance, each channel in [0, 1]
-    glm::vec3 emission{0.0f};  // MTL Ke: radiance of a one-sided Lambertian emitter (front face only)
+    MaterialType type = MaterialType::Diffuse;
+    glm::vec3 diffuse{0.8f};        // MTL Kd: Lambertian reflectance, each channel in [0, 1]
+    glm::vec3 emission{0.0f};       // MTL Ke: radiance of a one-sided Lambertian emitter (front face only)
+    glm::vec3 specular{0.0f};       // MTL Ks: conductor reflectance at normal incidence, or coat tint
+    glm::vec3 transmission{1.0f};   // MTL Tf: dielectric transmission tint, each channel in [0, 1]
+    float roughness = 0.0f;         // MTL Pr (or from Ns): perceptual roughness in [0, 1]; GGX alpha = roughness^2
+    float ior = 1.5f;               // MTL Ni: index of refraction of dielectrics and coats, in [1, 4]
     bool isEmissive() const { return emission.x > 0.0f || emission.y > 0.0f || emission.z > 0.0f; }
 };
 
@@ -55,6 +68,7 @@ struct Scene {
     std::vector<Material> materials;  // never empty once loaded
     std::optional<Camera> camera;     // from a scene file; absent for a bare OBJ
     RenderDefaults defaults;
+    glm::vec3 environment{0.0f};  // radiance arriving from every direction no surface blocks
     std::string source;  // the file it came from, for messages
 
     Aabb bounds() const {

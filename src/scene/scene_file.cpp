@@ -162,6 +162,16 @@ RenderDefaults parseRender(const json& render, Fields& fields) {
     return d;
 }
 
+// "environment": {"color": [r, g, b]}: radiance arriving from every direction no surface blocks.
+glm::vec3 parseEnvironment(const json& environment, Fields& fields) {
+    fields.object(environment, "environment");
+    fields.checkKeys(environment, "environment.", {"color"});
+    if (!environment.contains("color")) fields.fail("environment needs a \"color\" (its radiance, [r, g, b])");
+    glm::vec3 color = fields.vec3(environment["color"], "environment.color");
+    if (color.x < 0.0f || color.y < 0.0f || color.z < 0.0f) fields.fail("environment.color must not be negative");
+    return color;
+}
+
 }  // namespace
 
 Scene parseSceneFile(std::string_view bytes, const std::string& name, const MeshLoader& loadMesh) {
@@ -178,7 +188,7 @@ Scene parseSceneFile(std::string_view bytes, const std::string& name, const Mesh
     }
     Fields fields(name);
     fields.object(root, "the top level");
-    fields.checkKeys(root, "", {"mesh", "camera", "render"});
+    fields.checkKeys(root, "", {"mesh", "camera", "render", "environment"});
     if (!root.contains("mesh")) fields.fail("missing \"mesh\" (the OBJ file to render)");
     std::string mesh = fields.string(root["mesh"], "mesh");
     if (mesh.empty()) fields.fail("mesh must not be empty");
@@ -186,11 +196,14 @@ Scene parseSceneFile(std::string_view bytes, const std::string& name, const Mesh
     if (root.contains("camera")) camera = parseCamera(root["camera"], fields);
     RenderDefaults defaults;
     if (root.contains("render")) defaults = parseRender(root["render"], fields);
+    glm::vec3 environment(0.0f);
+    if (root.contains("environment")) environment = parseEnvironment(root["environment"], fields);
     // Only after the whole file checked out: a typo in it should not cost a long mesh load first.
     Scene scene = loadMesh(mesh);
     fields.warnUnknownKeys();
     scene.camera = camera;
     scene.defaults = defaults;
+    scene.environment = environment;
     scene.source = name;
     return scene;
 }

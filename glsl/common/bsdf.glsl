@@ -1,0 +1,267 @@
+// Surface scattering. Directions are in the local shading frame (the normal is +z) and wo, the
+// direction back toward where the path came from, always has wo.z > 0: the frame is built on the
+// side the ray arrived from (surface.glsl). Every function returns f(wo, wi) |cos(theta_i)|, the
+// form the estimators multiply by, and densities are per unit solid angle of wi.
+//
+// Models (the types of fp::MaterialType, src/scene/scene.h):
+//   diffuse     Lambertian, f = Kd / pi
+//   conductor   GGX microfacets (Trowbridge & Reitz 1975; Walter et al. 2007) with Smith masking and
+//               Schlick's Fresnel from F0 = Ks; visible-normal sampling (Heitz 2018)
+//   plastic     a GGX dielectric coat (exact Fresnel, ior) over a Lambertian base Kd
+//   dielectric  glass: exact Fresnel reflection and refraction, smooth or GGX-rough (Walter et al. 2007)
+// Roughness below kSmooth makes a lobe a perfect mirror or refractor: a "delta" lobe that only
+// sampling can find, so light sampling skips it and MIS gives its hits full weight.
+#define MATERIAL_DIFFUSE 0
+#define MATERIAL_CONDUCTOR 1
+#define MATERIAL_PLASTIC 2
+#define MATERIAL_DIELECTRIC 3
+const float kSmooth = 0.01;
+
+struct MaterialData {
+    int type;
+    vec3 diffuse, emission, specular, transmission;
+    float roughness, ior;
+};
+
+MaterialData fetchMaterial(int m) {
+    vec4 a = texelFetch(uMaterials, m * MATERIAL_TEXELS);
+    vec4 b = texelFetch(uMaterials, m * MATERIAL_TEXELS + 1);
+    vec4 c = texelFetch(uMaterials, m * MATERIAL_TEXELS + 2);
+    vec4 d = texelFetch(uMaterials, m * MATERIAL_TEXELS + 3);
+    return MaterialData(int(a.w), a.rgb, b.rgb, c.rgb, d.rgb, b.w, c.w);
+}
+
+bool isDeltaOnly(MaterialData m) {
+    return (m.type == MATERIAL_CONDUCTOR || m.type == MATERIAL_DIELECTRIC) && m.roughness < kSmooth;
+}
+
+struct BsdfSample {
+    vec3 wi;      // local frame
+    vec3 weight;  // f |cos(theta_i)| / pdf
+    float pdf;    // solid-angle density (for MIS); 0 for a delta lobe
+    bool delta;
+};
+
+// ---- Fresnel ----
+// Unpolarised Fresnel reflectance of a dielectric interface (pbrt-v4 eq. 9.5). cosI > 0 on the incident
+// side; eta = n_transmitted / n_incident. Total internal reflection gives 1.
+float fresnelDielectric(float cosI, float eta) {
+    float sin2T = (1.0 - cosI * cosI) / (eta * eta);
+    if (sin2T >= 1.0) return 1.0;
+    float cosT = sqrt(1.0 - sin2T);
+    float parallel = (eta * cosI - cosT) / (eta * cosI + cosT);
+    float perpendicular = (cosI - eta * cosT) / (cosI + eta * cosT);
+    return 0.5 * (parallel * parallel + perpendicular * perpendicular);
+}
+
+// Schlick 1994: reflectance of a conductor from its reflectance at normal incidence.
+vec3 fresnelSchlick(vec3 f0, float cosI) {
+    float m = clamp(1.0 - cosI, 0.0, 1.0);
+    return f0 + (1.0 - f0) * (m * m * m * m * m);
+}
+
+// ---- GGX (Trowbridge-Reitz) microfacets, isotropic, alpha = roughness^2 ----
+float ggxAlpha(float roughness) { return max(roughness * roughness, 1e-4); }
+
+// Normal distribution D(wm) (pbrt-v4 eq. 9.16, isotropic).
+float ggxD(vec3 wm, float alpha) {
+    float a2 = alpha * alpha;
+    float d = wm.z * wm.z * (a2 - 1.0) + 1.0;
+    return a2 / (PI * d * d);
+}
+
+// Smith's auxiliary function Lambda(w) (pbrt-v4 eq. 9.22).
+float ggxLambda(vec3 w, float alpha) {
+    float cos2 = w.z * w.z;
+    float tan2 = max(0.0, 1.0 - cos2) / max(cos2, 1e-12);
+    return 0.5 * (sqrt(1.0 + alpha * alpha * tan2) - 1.0);
+}
+
+float ggxG1(vec3 w, float alpha) { return 1.0 / (1.0 + ggxLambda(w, alpha)); }
+// Height-correlated masking-shadowing (pbrt-v4 eq. 9.27).
+float ggxG(vec3 wo, vec3 wi, float alpha) { return 1.0 / (1.0 + ggxLambda(wo, alpha) + ggxLambda(wi, alpha)); }
+
+// Density of visible normals D_wo(wm) = G1(wo) max(0, wo.wm) D(wm) / cos(theta_o) (Heitz 2018, eq. 3).
+float ggxVisiblePdf(vec3 wo, vec3 wm, float alpha) {
+    return ggxG1(wo, alpha) * max(0.0, dot(wo, wm)) * ggxD(wm, alpha) / abs(wo.z);
+}
+
+// Heitz 2018, "Sampling the GGX Distribution of Visible Normals", JCGT 7(4): stretch, sample the
+// projected hemisphere, unstretch. Requires wo.z > 0.
+vec3 ggxSampleVisibleNormal(vec3 wo, float alpha, vec2 u) {
+    vec3 vh = normalize(vec3(alpha * wo.x, alpha * wo.y, wo.z));
+    float lensq = vh.x * vh.x + vh.y * vh.y;
+    vec3 t1 = lensq > 0.0 ? vec3(-vh.y, vh.x, 0.0) * inversesqrt(lensq) : vec3(1.0, 0.0, 0.0);
+    vec3 t2 = cross(vh, t1);
+    float r = sqrt(u.x), phi = 2.0 * PI * u.y;
+    float p1 = r * cos(phi), p2 = r * sin(phi);
+    float s = 0.5 * (1.0 + vh.z);
+    p2 = (1.0 - s) * sqrt(max(0.0, 1.0 - p1 * p1)) + s * p2;
+    vec3 nh = p1 * t1 + p2 * t2 + sqrt(max(0.0, 1.0 - p1 * p1 - p2 * p2)) * vh;
+    return normalize(vec3(alpha * nh.x, alpha * nh.y, max(1e-6, nh.z)));
+}
+
+vec3 reflectLocal(vec3 wo, vec3 wm) { return -wo + 2.0 * dot(wo, wm) * wm; }
+
+// ---- conductor ----
+vec3 conductorEval(MaterialData m, vec3 wo, vec3 wi) {
+    if (wi.z <= 0.0 || m.roughness < kSmooth) return vec3(0.0);
+    float alpha = ggxAlpha(m.roughness);
+    vec3 wm = normalize(wo + wi);
+    vec3 F = fresnelSchlick(m.specular, dot(wo, wm));
+    return ggxD(wm, alpha) * ggxG(wo, wi, alpha) * F / (4.0 * wo.z);  // f cos(theta_i)
+}
+
+float conductorPdf(MaterialData m, vec3 wo, vec3 wi) {
+    if (wi.z <= 0.0 || m.roughness < kSmooth) return 0.0;
+    vec3 wm = normalize(wo + wi);
+    return ggxVisiblePdf(wo, wm, ggxAlpha(m.roughness)) / (4.0 * dot(wo, wm));
+}
+
+bool conductorSample(MaterialData m, vec3 wo, vec3 u, out BsdfSample s) {
+    if (m.roughness < kSmooth) {
+        s = BsdfSample(vec3(-wo.x, -wo.y, wo.z), fresnelSchlick(m.specular, wo.z), 0.0, true);
+        return true;
+    }
+    vec3 wm = ggxSampleVisibleNormal(wo, ggxAlpha(m.roughness), u.xy);
+    vec3 wi = reflectLocal(wo, wm);
+    if (wi.z <= 0.0) return false;
+    float pdf = conductorPdf(m, wo, wi);
+    s = BsdfSample(wi, pdf > 0.0 ? conductorEval(m, wo, wi) / pdf : vec3(0.0), pdf, false);
+    return pdf > 0.0;
+}
+
+// ---- plastic: GGX dielectric coat over Lambertian ----
+// The base is seen through the coat twice, attenuated by (1 - F) on the way in and out. The lobe to
+// sample is chosen in proportion to the reflectance each lobe shows at wo.
+float plasticSpecularProbability(MaterialData m, vec3 wo) {
+    float coat = fresnelDielectric(wo.z, m.ior) * luminance(m.specular);
+    float base = (1.0 - fresnelDielectric(wo.z, m.ior)) * luminance(m.diffuse);
+    return coat + base > 0.0 ? clamp(coat / (coat + base), 0.05, 0.95) : 0.5;
+}
+
+vec3 plasticEval(MaterialData m, vec3 wo, vec3 wi) {
+    if (wi.z <= 0.0) return vec3(0.0);
+    vec3 f = m.diffuse / PI * (1.0 - fresnelDielectric(wo.z, m.ior)) * (1.0 - fresnelDielectric(wi.z, m.ior)) * wi.z;
+    if (m.roughness >= kSmooth) {
+        float alpha = ggxAlpha(m.roughness);
+        vec3 wm = normalize(wo + wi);
+        f += m.specular * ggxD(wm, alpha) * ggxG(wo, wi, alpha) * fresnelDielectric(dot(wo, wm), m.ior) / (4.0 * wo.z);
+    }
+    return f;
+}
+
+float plasticPdf(MaterialData m, vec3 wo, vec3 wi) {
+    if (wi.z <= 0.0) return 0.0;
+    float p = plasticSpecularProbability(m, wo);
+    float pdf = (1.0 - p) * wi.z / PI;
+    if (m.roughness >= kSmooth) {
+        vec3 wm = normalize(wo + wi);
+        pdf += p * ggxVisiblePdf(wo, wm, ggxAlpha(m.roughness)) / (4.0 * dot(wo, wm));
+    }
+    return pdf;
+}
+
+bool plasticSample(MaterialData m, vec3 wo, vec3 u, out BsdfSample s) {
+    float p = plasticSpecularProbability(m, wo);
+    if (u.z < p && m.roughness < kSmooth) {
+        vec3 weight = m.specular * fresnelDielectric(wo.z, m.ior) / p;
+        s = BsdfSample(vec3(-wo.x, -wo.y, wo.z), weight, 0.0, true);
+        return true;
+    }
+    vec3 wi;
+    if (u.z < p) {
+        wi = reflectLocal(wo, ggxSampleVisibleNormal(wo, ggxAlpha(m.roughness), u.xy));
+    } else {
+        float r = sqrt(u.x), phi = 2.0 * PI * u.y;
+        wi = vec3(r * cos(phi), r * sin(phi), sqrt(max(0.0, 1.0 - u.x)));
+    }
+    if (wi.z <= 0.0) return false;
+    float pdf = plasticPdf(m, wo, wi);
+    // A smooth coat's delta lobe was not chosen: the diffuse part carries the whole non-delta weight.
+    s = BsdfSample(wi, pdf > 0.0 ? plasticEval(m, wo, wi) / pdf : vec3(0.0), pdf, false);
+    return pdf > 0.0;
+}
+
+// ---- dielectric ----
+// eta = n_transmitted / n_incident as seen from wo's side: ior when entering (front face), 1/ior leaving.
+// Radiance is scaled by 1/eta^2 on refraction (pbrt-v4 section 9.5.2), since paths start at the camera.
+vec3 dielectricEval(MaterialData m, vec3 wo, vec3 wi, float eta) {
+    if (m.roughness < kSmooth || wi.z == 0.0) return vec3(0.0);
+    float alpha = ggxAlpha(m.roughness);
+    bool reflect = wi.z > 0.0;
+    vec3 wm = reflect ? wo + wi : wi * eta + wo;  // generalised half vector (Walter et al. 2007, eq. 16)
+    if (dot(wm, wm) == 0.0) return vec3(0.0);
+    wm = normalize(wm);
+    if (wm.z < 0.0) wm = -wm;
+    if (dot(wm, wi) * wi.z < 0.0 || dot(wm, wo) < 0.0) return vec3(0.0);  // backfacing microfacets
+    float F = fresnelDielectric(dot(wo, wm), eta);
+    float D = ggxD(wm, alpha), G = ggxG(wo, wi, alpha);
+    if (reflect) return vec3(D * G * F / (4.0 * wo.z));
+    float denom = dot(wi, wm) + dot(wo, wm) / eta;
+    // Walter et al. 2007, eq. 21, times |cos(theta_i)|, and the 1/eta^2 radiance scaling.
+    float ft = D * G * (1.0 - F) * abs(dot(wi, wm) * dot(wo, wm) / (wo.z * denom * denom)) / (eta * eta);
+    return m.transmission * ft;
+}
+
+float dielectricPdf(MaterialData m, vec3 wo, vec3 wi, float eta) {
+    if (m.roughness < kSmooth || wi.z == 0.0) return 0.0;
+    float alpha = ggxAlpha(m.roughness);
+    bool reflect = wi.z > 0.0;
+    vec3 wm = reflect ? wo + wi : wi * eta + wo;
+    if (dot(wm, wm) == 0.0) return 0.0;
+    wm = normalize(wm);
+    if (wm.z < 0.0) wm = -wm;
+    if (dot(wm, wi) * wi.z < 0.0 || dot(wm, wo) < 0.0) return 0.0;
+    float F = fresnelDielectric(dot(wo, wm), eta);
+    float pdfWm = ggxVisiblePdf(wo, wm, alpha);
+    if (reflect) return pdfWm / (4.0 * dot(wo, wm)) * F;
+    float denom = dot(wi, wm) + dot(wo, wm) / eta;
+    return pdfWm * abs(dot(wi, wm)) / (denom * denom) * (1.0 - F);  // Jacobian of refraction, eq. 17
+}
+
+bool dielectricSample(MaterialData m, vec3 wo, vec3 u, float eta, out BsdfSample s) {
+    if (m.roughness < kSmooth) {
+        float F = fresnelDielectric(wo.z, eta);
+        if (u.z < F) {
+            s = BsdfSample(vec3(-wo.x, -wo.y, wo.z), vec3(1.0), 0.0, true);
+            return true;
+        }
+        vec3 wi = refract(-wo, vec3(0.0, 0.0, 1.0), 1.0 / eta);
+        if (wi == vec3(0.0)) return false;  // cannot happen: F = 1 under total internal reflection
+        s = BsdfSample(wi, m.transmission / (eta * eta), 0.0, true);
+        return true;
+    }
+    vec3 wm = ggxSampleVisibleNormal(wo, ggxAlpha(m.roughness), u.xy);
+    float F = fresnelDielectric(dot(wo, wm), eta);
+    vec3 wi = u.z < F ? reflectLocal(wo, wm) : refract(-wo, wm, 1.0 / eta);
+    if (u.z < F ? wi.z <= 0.0 : (wi.z >= 0.0 || wi == vec3(0.0))) return false;
+    float pdf = dielectricPdf(m, wo, wi, eta);
+    s = BsdfSample(wi, pdf > 0.0 ? dielectricEval(m, wo, wi, eta) / pdf : vec3(0.0), pdf, false);
+    return pdf > 0.0;
+}
+
+// ---- dispatch ----
+vec3 bsdfEval(MaterialData m, vec3 wo, vec3 wi, float eta) {
+    if (m.type == MATERIAL_CONDUCTOR) return conductorEval(m, wo, wi);
+    if (m.type == MATERIAL_PLASTIC) return plasticEval(m, wo, wi);
+    if (m.type == MATERIAL_DIELECTRIC) return dielectricEval(m, wo, wi, eta);
+    return wi.z > 0.0 ? m.diffuse / PI * wi.z : vec3(0.0);
+}
+
+float bsdfPdf(MaterialData m, vec3 wo, vec3 wi, float eta) {
+    if (m.type == MATERIAL_CONDUCTOR) return conductorPdf(m, wo, wi);
+    if (m.type == MATERIAL_PLASTIC) return plasticPdf(m, wo, wi);
+    if (m.type == MATERIAL_DIELECTRIC) return dielectricPdf(m, wo, wi, eta);
+    return wi.z > 0.0 ? wi.z / PI : 0.0;
+}
+
+bool bsdfSample(MaterialData m, vec3 wo, vec3 u, float eta, out BsdfSample s) {
+    if (m.type == MATERIAL_CONDUCTOR) return conductorSample(m, wo, u, s);
+    if (m.type == MATERIAL_PLASTIC) return plasticSample(m, wo, u, s);
+    if (m.type == MATERIAL_DIELECTRIC) return dielectricSample(m, wo, u, eta, s);
+    float r = sqrt(u.x), phi = 2.0 * PI * u.y;  // cosine-weighted (Malley's method)
+    vec3 wi = vec3(r * cos(phi), r * sin(phi), sqrt(max(0.0, 1.0 - u.x)));
+    s = BsdfSample(wi, m.diffuse, wi.z / PI, false);
+    return wi.z > 0.0;
+}
