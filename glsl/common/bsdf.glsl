@@ -32,6 +32,9 @@ MaterialData fetchMaterial(int m) {
 }
 
 bool isDeltaOnly(MaterialData m) {
+#if MATERIAL_TYPES == 1
+    return false;
+#endif
     return (m.type == MATERIAL_CONDUCTOR || m.type == MATERIAL_DIELECTRIC) && m.roughness < kSmooth;
 }
 
@@ -242,24 +245,49 @@ bool dielectricSample(MaterialData m, vec3 wo, vec3 u, float eta, out BsdfSample
 }
 
 // ---- dispatch ----
+// MATERIAL_TYPES is a bit mask of the types present in the scene (bit = fp::MaterialType), injected by
+// the renderer, so that a scene of Lambertian surfaces compiles none of the other models' code.
+#ifndef MATERIAL_TYPES
+#define MATERIAL_TYPES 15
+#endif
+#define HAS_TYPE(t) ((MATERIAL_TYPES & (1 << t)) != 0)
+
 vec3 bsdfEval(MaterialData m, vec3 wo, vec3 wi, float eta) {
+#if HAS_TYPE(MATERIAL_CONDUCTOR)
     if (m.type == MATERIAL_CONDUCTOR) return conductorEval(m, wo, wi);
+#endif
+#if HAS_TYPE(MATERIAL_PLASTIC)
     if (m.type == MATERIAL_PLASTIC) return plasticEval(m, wo, wi);
+#endif
+#if HAS_TYPE(MATERIAL_DIELECTRIC)
     if (m.type == MATERIAL_DIELECTRIC) return dielectricEval(m, wo, wi, eta);
+#endif
     return wi.z > 0.0 ? m.diffuse / PI * wi.z : vec3(0.0);
 }
 
 float bsdfPdf(MaterialData m, vec3 wo, vec3 wi, float eta) {
+#if HAS_TYPE(MATERIAL_CONDUCTOR)
     if (m.type == MATERIAL_CONDUCTOR) return conductorPdf(m, wo, wi);
+#endif
+#if HAS_TYPE(MATERIAL_PLASTIC)
     if (m.type == MATERIAL_PLASTIC) return plasticPdf(m, wo, wi);
+#endif
+#if HAS_TYPE(MATERIAL_DIELECTRIC)
     if (m.type == MATERIAL_DIELECTRIC) return dielectricPdf(m, wo, wi, eta);
+#endif
     return wi.z > 0.0 ? wi.z / PI : 0.0;
 }
 
 bool bsdfSample(MaterialData m, vec3 wo, vec3 u, float eta, out BsdfSample s) {
+#if HAS_TYPE(MATERIAL_CONDUCTOR)
     if (m.type == MATERIAL_CONDUCTOR) return conductorSample(m, wo, u, s);
+#endif
+#if HAS_TYPE(MATERIAL_PLASTIC)
     if (m.type == MATERIAL_PLASTIC) return plasticSample(m, wo, u, s);
+#endif
+#if HAS_TYPE(MATERIAL_DIELECTRIC)
     if (m.type == MATERIAL_DIELECTRIC) return dielectricSample(m, wo, u, eta, s);
+#endif
     float r = sqrt(u.x), phi = 2.0 * PI * u.y;  // cosine-weighted (Malley's method)
     vec3 wi = vec3(r * cos(phi), r * sin(phi), sqrt(max(0.0, 1.0 - u.x)));
     s = BsdfSample(wi, m.diffuse, wi.z / PI, false);

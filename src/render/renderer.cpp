@@ -48,6 +48,7 @@ Renderer::Renderer(const Scene& scene, ShaderLibrary shaders, const BvhBuildOpti
     float reach = std::max({glm::length(box.extent()), glm::length(box.lo), glm::length(box.hi)});
     rayOffset_ = 1e-5f * reach;
     environment_ = scene.environment;
+    for (const Material& m : scene.materials) materialTypes_ |= 1u << uint32_t(m.type);
     glGenVertexArrays(1, &vertexArray_);
 }
 
@@ -60,6 +61,7 @@ std::unique_ptr<Program> Renderer::compile(Integrator integrator) const {
     defines.emplace_back("BVH_STACK_SIZE", std::to_string(stats_.stackSize));
     defines.emplace_back("INTEGRATOR_FILE", std::string("\"integrators/") + integratorName(integrator) + ".glsl\"");
     defines.emplace_back("DEBUG_VIEW", std::to_string(int(settings_.view)));
+    defines.emplace_back("MATERIAL_TYPES", std::to_string(materialTypes_));
     return std::make_unique<Program>(shaders_, "passes/fullscreen.vert.glsl", "passes/trace.frag.glsl", defines);
 }
 

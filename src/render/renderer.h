@@ -58,6 +58,7 @@ class Renderer {
     SceneStats stats_;
     float rayOffset_ = 0.0f;
     glm::vec3 environment_{0.0f};
+    uint32_t materialTypes_ = 0;  // bit mask of the MaterialTypes in the scene
     uint32_t lightCount_ = 0;
     std::unique_ptr<SceneTextures> textures_;
     std::unique_ptr<RenderTargets> targets_;
