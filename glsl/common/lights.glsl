@@ -2,7 +2,7 @@
 // probability proportional to its power (a CDF in the lights buffer) and a point uniformly on its area.
 // Area densities become solid-angle densities at the receiving point through
 // d(omega) = cos(theta_light) dA / distance^2, so pdf = pmf / area * distance^2 / cos(theta_light).
-uniform vec3 uEnvironment;  // radiance arriving from every direction no surface blocks
+uniform vec3 uEnvironment;  // constant radiance arriving from every direction no surface blocks
 
 struct LightSample {
     vec3 dir;       // unit, from the receiving point to the light
@@ -11,16 +11,86 @@ struct LightSample {
     float pdf;      // solid-angle density of choosing dir
 };
 
-vec3 environmentRadiance(vec3 dir) { return uEnvironment; }
-
 // The share of light samples that go to the environment: half when there are also emitters.
 float environmentSelection() {
+#if ENVIRONMENT_MAP == 0
     if (uEnvironment == vec3(0.0)) return 0.0;
+#endif
     return uLightCount > 0 ? 0.5 : 1.0;
 }
 
+#if ENVIRONMENT_MAP
+// An equirectangular map (layout in src/gpu/layout.h), importance-sampled texel by texel with the
+// probability of luminance * sin(theta), then uniformly inside the texel in (u, v). A texel spans the
+// solid angle 2 pi^2 sin(theta) du dv, which converts the density (as pbrt-v4 does for image infinite lights).
+uniform sampler2D uEnvironmentMap;
+uniform samplerBuffer uEnvironmentCdf;
+uniform float uEnvironmentRotation;  // radians about +y
+
+vec3 rotateY(vec3 d, float angle) {
+    float c = cos(angle), s = sin(angle);
+    return vec3(c * d.x + s * d.z, d.y, -s * d.x + c * d.z);
+}
+
+vec2 directionToUv(vec3 d) {
+    d = rotateY(d, -uEnvironmentRotation);
+    return vec2(0.5 + atan(d.x, -d.z) / (2.0 * PI), acos(clamp(d.y, -1.0, 1.0)) / PI);
+}
+
+vec3 uvToDirection(vec2 uv) {
+    float phi = (uv.x - 0.5) * 2.0 * PI, theta = uv.y * PI;
+    return rotateY(vec3(sin(theta) * sin(phi), cos(theta), -sin(theta) * cos(phi)), uEnvironmentRotation);
+}
+
+ivec2 environmentTexel(vec2 uv) {
+    ivec2 size = textureSize(uEnvironmentMap, 0);
+    return clamp(ivec2(uv * vec2(size)), ivec2(0), size - 1);
+}
+
+vec3 environmentRadiance(vec3 dir) { return texelFetch(uEnvironmentMap, environmentTexel(directionToUv(dir)), 0).rgb; }
+
+float cdfAt(int i) { return i < 0 ? 0.0 : texelFetch(uEnvironmentCdf, i).r; }
+
+// First index in [first, first + count) whose cdf exceeds u.
+int searchCdf(int first, int count, float u) {
+    int lo = first, hi = first + count - 1;
+    while (lo < hi) {
+        int mid = (lo + hi) / 2;
+        if (texelFetch(uEnvironmentCdf, mid).r <= u) lo = mid + 1;
+        else hi = mid;
+    }
+    return lo - first;
+}
+
+float environmentPdf(vec3 dir) {
+    vec2 uv = directionToUv(dir);
+    ivec2 size = textureSize(uEnvironmentMap, 0), t = environmentTexel(uv);
+    float rowPmf = cdfAt(t.y) - cdfAt(t.y - 1);
+    int row = size.y + t.y * size.x;
+    float texelPmf = rowPmf * (cdfAt(row + t.x) - (t.x == 0 ? 0.0 : cdfAt(row + t.x - 1)));
+    float sinTheta = sin(uv.y * PI);
+    if (sinTheta <= 0.0) return 0.0;
+    return environmentSelection() * texelPmf * float(size.x * size.y) / (2.0 * PI * PI * sinTheta);
+}
+
+vec3 sampleEnvironmentDirection() {
+    ivec2 size = textureSize(uEnvironmentMap, 0);
+    int y = searchCdf(0, size.y, rand());
+    int x = searchCdf(size.y + y * size.x, size.x, rand());
+    return uvToDirection((vec2(x, y) + rand2()) / vec2(size));
+}
+#else
+vec3 environmentRadiance(vec3 dir) { return uEnvironment; }
+
 // Uniform over the sphere for a constant environment.
 float environmentPdf(vec3 dir) { return environmentSelection() / (4.0 * PI); }
+
+vec3 sampleEnvironmentDirection() {
+    vec2 v = rand2();
+    float z = 1.0 - 2.0 * v.x, r = sqrt(max(0.0, 1.0 - z * z)), phi = 2.0 * PI * v.y;
+    return vec3(r * cos(phi), r * sin(phi), z);
+}
+#endif
 
 int pickLight(float u) {
     int lo = 0, hi = uLightCount - 1;
@@ -37,9 +107,7 @@ LightSample sampleLight(vec3 from) {
     float u = rand();
     float pEnvironment = environmentSelection();
     if (u < pEnvironment) {
-        vec2 v = rand2();
-        float z = 1.0 - 2.0 * v.x, r = sqrt(max(0.0, 1.0 - z * z)), phi = 2.0 * PI * v.y;
-        ls.dir = vec3(r * cos(phi), r * sin(phi), z);
+        ls.dir = sampleEnvironmentDirection();
         ls.dist = INF;
         ls.radiance = environmentRadiance(ls.dir);
         ls.pdf = environmentPdf(ls.dir);

@@ -21,6 +21,11 @@
 //                                            type: fp::MaterialType as an exact float
 //  lights        RGBA32F    1 per emitter    (triangle index, cdf up to and including it, pmf, area)
 //
+// An environment map (only when the scene has one) is a 2D RGBA32F texture of W x H radiance texels,
+// texel (x, y) covering u in [x, x+1)/W, v in [y, y+1)/H (v = 0 is straight up), and an R32F buffer
+// texture of importance-sampling CDFs: H entries of the marginal CDF over rows, then for each row y
+// W entries of the conditional CDF over its texels (each cumulative, ending at 1).
+//
 // Indices stored in float channels are exact integers below 2^24, which every GPU keeps exactly.
 #include <cstdint>
 
@@ -44,6 +49,8 @@ enum Unit : int {
     kNodeLinksUnit,
     kMaterialsUnit,
     kLightsUnit,
+    kEnvironmentMapUnit,
+    kEnvironmentCdfUnit,
     kFirstFreeUnit
 };
 

@@ -29,7 +29,7 @@ struct DisplaySettings {
 // Writes to a temporary name and renames, so a failure never leaves a truncated file.
 // Throws fp::Error naming the path on an unknown extension or a file that cannot be written.
 void writeImage(const std::string& path, const Image& image, const DisplaySettings& display = {});
-// Read a .pfm or .exr back (linear); throws fp::Error on a missing or malformed file.
+// Read a linear .pfm, .exr or .hdr image; throws fp::Error on a missing or malformed file.
 Image readImage(const std::string& path);
 
 }  // namespace fp

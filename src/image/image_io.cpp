@@ -1,6 +1,7 @@
 // writeImage / readImage from image.h: pick the format by the file name's extension.
 #include "core/error.h"
 #include "image/exr.h"
+#include "image/hdr.h"
 #include "image/file_io.h"
 #include "image/image.h"
 #include "image/pfm.h"
@@ -21,8 +22,9 @@ Image readImage(const std::string& path) {
     const std::string extension = lowerCaseExtension(path);
     if (extension == ".pfm") return readPfm(path);
     if (extension == ".exr") return readExr(path);
+    if (extension == ".hdr") return readHdr(path);
     throw Error("cannot read '" + path + "': unsupported image extension '" + extension +
-                "' (only linear .exr and .pfm images can be read)");
+                "' (only linear .exr, .pfm and .hdr images can be read)");
 }
 
 }  // namespace fp

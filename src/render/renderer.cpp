@@ -47,7 +47,13 @@ Renderer::Renderer(const Scene& scene, ShaderLibrary shaders, const BvhBuildOpti
     Aabb box = scene.bounds();
     float reach = std::max({glm::length(box.extent()), glm::length(box.lo), glm::length(box.hi)});
     rayOffset_ = 1e-5f * reach;
-    environment_ = scene.environment;
+    environmentColor_ = scene.environment.hasMap() ? glm::vec3(0.0f) : scene.environment.color;
+    environmentRotation_ = glm::radians(scene.environment.rotationDegrees);
+    if (scene.environment.hasMap()) {
+        PackedEnvironment environment = packEnvironment(scene.environment);
+        // A black map is no light at all: leave it out rather than sample nothing.
+        if (environment.totalWeight > 0.0) environmentTextures_ = std::make_unique<EnvironmentTextures>(environment);
+    }
     for (const Material& m : scene.materials) materialTypes_ |= 1u << uint32_t(m.type);
     glGenVertexArrays(1, &vertexArray_);
 }
@@ -62,6 +68,7 @@ std::unique_ptr<Program> Renderer::compile(Integrator integrator) const {
     defines.emplace_back("INTEGRATOR_FILE", std::string("\"integrators/") + integratorName(integrator) + ".glsl\"");
     defines.emplace_back("DEBUG_VIEW", std::to_string(int(settings_.view)));
     defines.emplace_back("MATERIAL_TYPES", std::to_string(materialTypes_));
+    defines.emplace_back("ENVIRONMENT_MAP", environmentTextures_ ? "1" : "0");
     return std::make_unique<Program>(shaders_, "passes/fullscreen.vert.glsl", "passes/trace.frag.glsl", defines);
 }
 
@@ -110,7 +117,13 @@ void Renderer::draw(Program& p, int maxDepth, const PixelRegion& region, int sam
     p.set("uMaterials", int(layout::kMaterialsUnit));
     p.set("uLights", int(layout::kLightsUnit));
     p.set("uLightCount", int(lightCount_));
-    p.set("uEnvironment", environment_);
+    p.set("uEnvironment", environmentColor_);
+    if (environmentTextures_) {
+        p.set("uEnvironmentMap", int(layout::kEnvironmentMapUnit));
+        p.set("uEnvironmentCdf", int(layout::kEnvironmentCdfUnit));
+        p.set("uEnvironmentRotation", environmentRotation_);
+        environmentTextures_->bind();
+    }
     p.set("uPreviousSum", kSumUnit);
     p.set("uPreviousSquares", kSumUnit + 1);
     p.set("uPreviousCounters", kSumUnit + 2);

@@ -6,6 +6,7 @@
 
 #include "bvh/bvh.h"
 #include "gl/program.h"
+#include "gpu/environment.h"
 #include "gpu/pack.h"
 #include "gpu/scene_textures.h"
 #include "render/accumulation.h"
@@ -57,10 +58,12 @@ class Renderer {
     ShaderLibrary shaders_;
     SceneStats stats_;
     float rayOffset_ = 0.0f;
-    glm::vec3 environment_{0.0f};
+    glm::vec3 environmentColor_{0.0f};
+    float environmentRotation_ = 0.0f;
     uint32_t materialTypes_ = 0;  // bit mask of the MaterialTypes in the scene
     uint32_t lightCount_ = 0;
     std::unique_ptr<SceneTextures> textures_;
+    std::unique_ptr<EnvironmentTextures> environmentTextures_;  // only for an environment map
     std::unique_ptr<RenderTargets> targets_;
     std::unique_ptr<Program> program_, splitProgram_;
     GLuint vertexArray_ = 0;

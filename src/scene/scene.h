@@ -10,6 +10,7 @@
 #include <glm/glm.hpp>
 
 #include "core/aabb.h"
+#include "image/image.h"
 
 namespace fp {
 
@@ -63,12 +64,24 @@ struct RenderDefaults {
     std::optional<std::string> integrator;
 };
 
+// Light arriving from infinitely far away, from every direction no surface blocks: a constant colour,
+// or an equirectangular HDR map (+y up; u = 0.5 + atan2(d.x, -d.z) / 2pi, v = acos(d.y) / pi) scaled by
+// `intensity` and turned `rotationDegrees` about +y.
+struct Environment {
+    glm::vec3 color{0.0f};
+    Image map;  // empty when the environment is the constant colour
+    float intensity = 1.0f;
+    float rotationDegrees = 0.0f;
+    bool hasMap() const { return map.width > 0; }
+    bool isBlack() const { return !hasMap() && color == glm::vec3(0.0f); }
+};
+
 struct Scene {
     std::vector<Triangle> triangles;
     std::vector<Material> materials;  // never empty once loaded
     std::optional<Camera> camera;     // from a scene file; absent for a bare OBJ
     RenderDefaults defaults;
-    glm::vec3 environment{0.0f};  // radiance arriving from every direction no surface blocks
+    Environment environment;
     std::string source;  // the file it came from, for messages
 
     Aabb bounds() const {

@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include "core/error.h"
+#include "image/image.h"
 #include "core/log.h"
 #include "scene/load.h"
 #include "scene/text_file.h"
@@ -162,19 +163,45 @@ RenderDefaults parseRender(const json& render, Fields& fields) {
     return d;
 }
 
-// "environment": {"color": [r, g, b]}: radiance arriving from every direction no surface blocks.
-glm::vec3 parseEnvironment(const json& environment, Fields& fields) {
+// "environment": {"color": [r, g, b]} or {"map": "sky.hdr", "intensity": 1, "rotation": 0}; the map is
+// loaded by `loadMap` (relative to the scene file) after the whole file has been checked.
+struct EnvironmentSpec {
+    Environment environment;
+    std::string mapPath;
+};
+
+EnvironmentSpec parseEnvironment(const json& environment, Fields& fields) {
     fields.object(environment, "environment");
-    fields.checkKeys(environment, "environment.", {"color"});
-    if (!environment.contains("color")) fields.fail("environment needs a \"color\" (its radiance, [r, g, b])");
-    glm::vec3 color = fields.vec3(environment["color"], "environment.color");
-    if (color.x < 0.0f || color.y < 0.0f || color.z < 0.0f) fields.fail("environment.color must not be negative");
-    return color;
+    fields.checkKeys(environment, "environment.", {"color", "map", "intensity", "rotation"});
+    EnvironmentSpec spec;
+    bool hasColor = environment.contains("color"), hasMap = environment.contains("map");
+    if (hasColor == hasMap)
+        fields.fail("environment needs either a \"color\" ([r, g, b] radiance) or a \"map\" (an .hdr file)");
+    if (hasColor) {
+        glm::vec3 color = fields.vec3(environment["color"], "environment.color");
+        if (color.x < 0.0f || color.y < 0.0f || color.z < 0.0f) fields.fail("environment.color must not be negative");
+        spec.environment.color = color;
+    } else {
+        spec.mapPath = fields.string(environment["map"], "environment.map");
+        if (spec.mapPath.empty()) fields.fail("environment.map must not be empty");
+    }
+    if (environment.contains("intensity")) {
+        float intensity = fields.real(environment["intensity"], "environment.intensity");
+        if (intensity < 0.0f) fields.fail("environment.intensity must not be negative");
+        spec.environment.intensity = intensity;
+    }
+    if (environment.contains("rotation"))
+        spec.environment.rotationDegrees = fields.real(environment["rotation"], "environment.rotation");
+    return spec;
 }
 
 }  // namespace
 
-Scene parseSceneFile(std::string_view bytes, const std::string& name, const MeshLoader& loadMesh) {
+Scene parseSceneFile(std::string_view bytes, const std::string& name, const MeshLoader& loadMesh,
+                     const MapLoader& loadMap) {
+    MapLoader noMaps = [&name](const std::string& map) -> Image {
+        throw Error(name + ": environment map '" + map + "' cannot be loaded here");
+    };
     std::string_view text = requireText(bytes, name);
     json root;
     try {
@@ -196,14 +223,15 @@ Scene parseSceneFile(std::string_view bytes, const std::string& name, const Mesh
     if (root.contains("camera")) camera = parseCamera(root["camera"], fields);
     RenderDefaults defaults;
     if (root.contains("render")) defaults = parseRender(root["render"], fields);
-    glm::vec3 environment(0.0f);
+    EnvironmentSpec environment;
     if (root.contains("environment")) environment = parseEnvironment(root["environment"], fields);
     // Only after the whole file checked out: a typo in it should not cost a long mesh load first.
     Scene scene = loadMesh(mesh);
     fields.warnUnknownKeys();
     scene.camera = camera;
     scene.defaults = defaults;
-    scene.environment = environment;
+    scene.environment = environment.environment;
+    if (!environment.mapPath.empty()) scene.environment.map = (loadMap ? loadMap : noMaps)(environment.mapPath);
     scene.source = name;
     return scene;
 }
@@ -227,6 +255,12 @@ Scene loadSceneFile(const std::string& path) {
         if (!fs::exists(meshPath, ec))
             throw Error(path + ": mesh '" + mesh + "' not found (looked for " + meshPath.string() + ")");
         return loadObj(meshPath.string());
+    },
+    [&](const std::string& map) {
+        fs::path mapPath = fs::path(map).is_absolute() ? fs::path(map) : directory / map;
+        if (lowercaseExtension(mapPath) != ".hdr")
+            throw Error(path + ": environment map '" + map + "' must be a Radiance .hdr file");
+        return readImage(mapPath.string());
     });
 }
 

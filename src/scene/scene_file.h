@@ -14,9 +14,13 @@ namespace fp {
 // Loads the mesh a scene file names (the "mesh" value as written); throws fp::Error if it cannot.
 using MeshLoader = std::function<Scene(const std::string& mesh)>;
 
-// Parses scene-file `bytes`, naming the file `name` in messages, and loads its mesh through
-// `loadMesh`. Throws fp::Error on anything invalid; warns about unknown keys. Scene::source is `name`.
-Scene parseSceneFile(std::string_view bytes, const std::string& name, const MeshLoader& loadMesh);
+// Loads the environment map a scene file names (the "environment.map" value as written).
+using MapLoader = std::function<Image(const std::string& map)>;
+
+// Parses scene-file `bytes`, naming the file `name` in messages, and loads its mesh and environment map
+// through the loaders. Throws fp::Error on anything invalid; warns about unknown keys. Scene::source is `name`.
+Scene parseSceneFile(std::string_view bytes, const std::string& name, const MeshLoader& loadMesh,
+                     const MapLoader& loadMap = nullptr);
 
 // A scene file on disk; its mesh path is relative to the file's directory.
 Scene loadSceneFile(const std::string& path);

@@ -15,7 +15,7 @@ Scene sphereInFurnace(const Material& material, bool smooth) {
     Scene scene;
     scene.source = "sphere in a white furnace";
     scene.materials.push_back(material);
-    scene.environment = glm::vec3(1.0f);
+    scene.environment.color = glm::vec3(1.0f);
     appendSphere(scene, glm::vec3(0.0f), 1.0f, 24, 48, 0, smooth);
     return scene;
 }
