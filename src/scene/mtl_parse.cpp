@@ -8,8 +8,17 @@
 
 namespace fp {
 
+namespace {
+
+glm::vec3 color(const tinyobj::real_t c[3]) {
+    return glm::vec3(c[0], c[1], c[2]);
+}
+
+}  // namespace
+
 std::vector<Material> parseMtl(std::string_view text, const std::string& name) {
-    std::istringstream stream(sanitizeMtl(text, name));
+    std::vector<MtlGiven> given;
+    std::istringstream stream(sanitizeMtl(text, name, &given));
     std::map<std::string, int> index;
     std::vector<tinyobj::material_t> parsed;
     std::string tinyWarnings, tinyErrors;  // only about statements we do not use (d/Tr, texture options)
@@ -17,15 +26,28 @@ std::vector<Material> parseMtl(std::string_view text, const std::string& name) {
 
     std::vector<Material> materials;
     materials.reserve(parsed.size());
+    size_t named = 0;
     for (const tinyobj::material_t& m : parsed) {
         // tinyobjloader always flushes its last material, even when no newmtl ever named one.
         if (m.name.empty()) continue;
-        Material material;
-        material.name = m.name;
-        // A material without Kd keeps tinyobjloader's 0 (a pure emitter is often written that way).
-        material.diffuse = glm::vec3(m.diffuse[0], m.diffuse[1], m.diffuse[2]);
-        material.emission = glm::vec3(m.emission[0], m.emission[1], m.emission[2]);
-        materials.push_back(material);
+        // The sanitizer saw the same named newmtl statements, so the entries match one to one; the
+        // check only guards against a tinyobjloader that splits materials differently.
+        MtlGiven has = named < given.size() ? given[named] : MtlGiven{};
+        ++named;
+        MtlMaterial mtl;
+        mtl.name = m.name;
+        // Without Kd: 0 (a pure emitter is often written that way), or with map_Kd a grey 0.6 standing in
+        // for the texture we cannot show yet.
+        mtl.kd = has.kd ? color(m.diffuse) : glm::vec3(has.diffuseMap ? 0.6f : 0.0f);
+        mtl.ke = color(m.emission);
+        mtl.ks = color(m.specular);
+        mtl.tf = color(m.transmittance);  // Tf or Kt
+        if (has.illum) mtl.illum = m.illum;
+        if (has.ni) mtl.ni = m.ior;
+        if (has.ns) mtl.ns = m.shininess;
+        if (has.pr) mtl.pr = m.roughness;
+        if (has.pm) mtl.pm = m.metallic;
+        materials.push_back(materialFromMtl(mtl));
     }
     if (materials.empty()) warn(name + ": defines no materials (no newmtl statement)");
     return materials;

@@ -1,5 +1,9 @@
+#include <algorithm>
 #include <cmath>
+#include <deque>
+#include <limits>
 
+#include "core/log.h"
 #include "scene/mtl.h"
 #include "scene/repair_tally.h"
 #include "scene/text_file.h"
@@ -9,28 +13,79 @@ namespace fp {
 
 namespace {
 
+// A RepairTally that also names the statements it counted ("Kd/Ke"), in the order they first occurred,
+// so that one warning covers a kind of repair whichever statements needed it.
+class KeyedTally {
+  public:
+    void add(std::string_view key, int line) {
+        tally_.add(line);
+        if (std::find(keys_.begin(), keys_.end(), key) == keys_.end()) keys_.emplace_back(key);
+    }
+    // Warns "<file>: <verb> <count> <adjective> <keys> <noun>[s] <rest> (first at line L)".
+    void report(const std::string& file, const std::string& verb, const std::string& adjective,
+                const std::string& noun, const std::string& rest = "") const {
+        std::string keys;
+        for (const std::string& k : keys_) keys += (keys.empty() ? "" : "/") + k;
+        tally_.report(file, verb, (adjective.empty() ? "" : adjective + " ") + keys + " " + noun, rest);
+    }
+
+  private:
+    RepairTally tally_;
+    std::vector<std::string> keys_;
+};
+
 struct MtlRepairs {
-    RepairTally clamped, negative, nonFinite, malformed, unsupported;
+    KeyedTally clamped, negative, nonFinite, malformed, unsupported, nonFiniteScalar;
+    RepairTally iorClamped, diffuseMap;
+    std::vector<std::pair<std::string, int>> unknown;  // statement name and first line, in file order
 
     void report(const std::string& name) const {
-        clamped.report(name, "clamped", "Kd value", "to [0, 1]");
-        negative.report(name, "set", "negative Ke value", "to 0");
-        nonFinite.report(name, "replaced", "NaN or infinite Kd/Ke value", "by 0");
-        malformed.report(name, "ignored", "malformed Kd/Ke statement");
-        unsupported.report(name, "ignored", "spectral or CIE XYZ Kd/Ke statement", "(only RGB is supported)");
+        clamped.report(name, "clamped", "", "value", "to [0, 1]");
+        negative.report(name, "set", "negative", "value", "to 0");
+        nonFinite.report(name, "replaced", "NaN or infinite", "value", "by 0");
+        malformed.report(name, "ignored", "malformed", "statement");
+        unsupported.report(name, "ignored", "spectral or CIE XYZ", "statement", "(only RGB is supported)");
+        nonFiniteScalar.report(name, "ignored", "", "statement", "with a NaN or infinite value");
+        iorClamped.report(name, "clamped", "Ni value", "to [1, 4]");
+        if (diffuseMap.count() > 0)
+            warn(name + ": map_Kd textures are not supported yet; using Kd (first at line " +
+                 std::to_string(diffuseMap.firstLine()) + ")");
+        for (const auto& [key, line] : unknown)
+            warn(name + ": unknown MTL statement '" + key + "' ignored (first at line " +
+                 std::to_string(line) + ")");
     }
 };
 
-// One Kd or Ke statement, re-spelled with three checked values; empty if it has to be dropped.
-std::string colorStatement(const std::vector<std::string_view>& words, int line, MtlRepairs* repairs) {
+// Statements we read (re-spelled below) or accept without using them. Anything else is reported once.
+bool isKnownStatement(std::string_view key) {
+    static const std::string_view kKnown[] = {
+        "newmtl", "Ka",   "Kd",        "Ks",   "Ke",   "Kt",    "Tf",  "Ni",  "Ns",
+        "d",      "Tr",   "illum",     "Pr",   "Pm",   "Ps",    "Pc",  "Pcr", "aniso",
+        "anisor", "norm", "sharpness", "bump", "disp", "decal", "refl"};
+    if (key.substr(0, 4) == "map_") return true;
+    return std::find(std::begin(kKnown), std::end(kKnown), key) != std::end(kKnown);
+}
+
+bool isColorStatement(std::string_view key) {
+    return key == "Kd" || key == "Ke" || key == "Ks" || key == "Tf" || key == "Kt";
+}
+
+bool isScalarStatement(std::string_view key) {
+    return key == "Ni" || key == "Ns" || key == "Pr" || key == "Pm" || key == "illum";
+}
+
+// One colour statement, re-spelled with three checked values; empty if it has to be dropped. Ke is a
+// radiance (any non-negative value); the others are reflectances or filters, in [0, 1].
+std::string colorStatement(const std::vector<std::string_view>& words, int line, MtlRepairs* repairs,
+                           MtlGiven* given) {
     std::string_view keyword = words[0];
     if (words.size() >= 2 && (words[1] == "spectral" || words[1] == "xyz")) {
-        repairs->unsupported.add(line);
+        repairs->unsupported.add(keyword, line);
         return "";
     }
     // "Kd r g b", or "Kd g" meaning grey (r = g = b), as the MTL spec defines it.
     if (words.size() != 2 && words.size() != 4) {
-        repairs->malformed.add(line);
+        repairs->malformed.add(keyword, line);
         return "";
     }
     std::string out(keyword);
@@ -38,29 +93,81 @@ std::string colorStatement(const std::vector<std::string_view>& words, int line,
         std::string_view word = words[words.size() == 2 ? 1 : 1 + c];
         std::optional<double> value = parseReal(word);
         if (!value) {
-            repairs->malformed.add(line);
+            repairs->malformed.add(keyword, line);
             return "";
         }
         std::string spelled(word);
         if (!std::isfinite(static_cast<float>(*value))) {
-            repairs->nonFinite.add(line);
+            repairs->nonFinite.add(keyword, line);
             spelled = "0";
-        } else if (keyword == "Kd" && (*value < 0.0 || *value > 1.0)) {
-            repairs->clamped.add(line);
+        } else if (keyword != "Ke" && (*value < 0.0 || *value > 1.0)) {
+            repairs->clamped.add(keyword, line);
             spelled = *value < 0.0 ? "0" : "1";
         } else if (keyword == "Ke" && *value < 0.0) {
-            repairs->negative.add(line);
+            repairs->negative.add(keyword, line);
             spelled = "0";
         }
         out += ' ' + spelled;
     }
+    if (keyword == "Kd") given->kd = true;
     return out;
+}
+
+// One Ni, Ns, Pr, Pm or illum statement, re-spelled with its checked value; empty if it has to be
+// dropped (the material then counts as not giving it). Marks it in `given` when kept.
+std::string scalarStatement(const std::vector<std::string_view>& words, int line, MtlRepairs* repairs,
+                            MtlGiven* given) {
+    std::string_view keyword = words[0];
+    if (words.size() != 2) {
+        repairs->malformed.add(keyword, line);
+        return "";
+    }
+    std::string out(keyword);
+    if (keyword == "illum") {
+        // tinyobjloader reads it with atoi, which takes "abc" as 0 and "2.5" as 2.
+        std::optional<long long> model = parseInteger(words[1]);
+        if (!model || *model < 0 || *model > std::numeric_limits<int>::max()) {
+            repairs->malformed.add(keyword, line);
+            return "";
+        }
+        given->illum = true;
+        return out + ' ' + std::to_string(*model);
+    }
+    std::optional<double> value = parseReal(words[1]);
+    if (!value) {
+        repairs->malformed.add(keyword, line);
+        return "";
+    }
+    if (!std::isfinite(static_cast<float>(*value))) {
+        repairs->nonFiniteScalar.add(keyword, line);
+        return "";
+    }
+    std::string spelled(words[1]);
+    if (keyword == "Ni" && (*value < 1.0 || *value > 4.0)) {
+        // Below 1 is physically odd (light faster than in vacuum); above 4 no common material goes.
+        repairs->iorClamped.add(line);
+        spelled = *value < 1.0 ? "1" : "4";
+    } else if (keyword == "Ns" && *value < 0.0) {
+        repairs->negative.add(keyword, line);
+        spelled = "0";
+    } else if ((keyword == "Pr" || keyword == "Pm") && (*value < 0.0 || *value > 1.0)) {
+        repairs->clamped.add(keyword, line);
+        spelled = *value < 0.0 ? "0" : "1";
+    }
+    if (keyword == "Ni") given->ni = true;
+    if (keyword == "Ns") given->ns = true;
+    if (keyword == "Pr") given->pr = true;
+    if (keyword == "Pm") given->pm = true;
+    return out + ' ' + spelled;
 }
 
 }  // namespace
 
-std::string sanitizeMtl(std::string_view text, const std::string& name) {
+std::string sanitizeMtl(std::string_view text, const std::string& name, std::vector<MtlGiven>* given) {
     MtlRepairs repairs;
+    std::deque<MtlGiven> materials;  // a deque keeps `current` valid as it grows
+    MtlGiven beforeFirst;  // statements before any newmtl: tinyobjloader returns no material for them
+    MtlGiven* current = &beforeFirst;
     std::string out;
     out.reserve(text.size() + 64);
     LineReader lines(stripUtf8Bom(text));
@@ -68,18 +175,36 @@ std::string sanitizeMtl(std::string_view text, const std::string& name) {
     std::vector<std::string_view> words;
     while (lines.next(&line)) {
         splitWords(line.substr(0, line.find('#')), &words);
-        if (!words.empty() && words[0] == "newmtl") {
+        if (words.empty()) {
+            out += line;
+        } else if (words[0] == "newmtl") {
             // Like usemtl in the OBJ scan: the name is the rest of the line, without surrounding blanks.
+            std::string_view material = trimBlanks(trimBlanks(line).substr(6));
             out += "newmtl ";
-            out += trimBlanks(trimBlanks(line).substr(6));
-        } else if (!words.empty() && (words[0] == "Kd" || words[0] == "Ke")) {
-            out += colorStatement(words, lines.number(), &repairs);
+            out += material;
+            // tinyobjloader ignores "newmtl" without a name (the statements after it go on filling the
+            // previous material), so only a named one starts an entry of `given`.
+            if (!material.empty()) current = &materials.emplace_back();
+        } else if (isColorStatement(words[0])) {
+            out += colorStatement(words, lines.number(), &repairs, current);
+        } else if (isScalarStatement(words[0])) {
+            out += scalarStatement(words, lines.number(), &repairs, current);
         } else {
+            if (words[0] == "map_Kd") {
+                repairs.diffuseMap.add(lines.number());
+                current->diffuseMap = true;
+            }
+            if (!isKnownStatement(words[0])) {
+                auto seen = std::find_if(repairs.unknown.begin(), repairs.unknown.end(),
+                                         [&](const auto& u) { return u.first == words[0]; });
+                if (seen == repairs.unknown.end()) repairs.unknown.emplace_back(words[0], lines.number());
+            }
             out += line;
         }
         out += '\n';
     }
     repairs.report(name);
+    if (given) given->assign(materials.begin(), materials.end());
     return out;
 }
 
