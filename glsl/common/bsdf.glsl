@@ -21,6 +21,7 @@ struct MaterialData {
     int type;
     vec3 diffuse, emission, specular, transmission;
     float roughness, ior;
+    float cauchyB;  // nm^2; > 0 for a dispersive glass, whose ior is the index at 587.6 nm
 };
 
 MaterialData fetchMaterial(int m) {
@@ -28,7 +29,7 @@ MaterialData fetchMaterial(int m) {
     vec4 b = texelFetch(uMaterials, m * MATERIAL_TEXELS + 1);
     vec4 c = texelFetch(uMaterials, m * MATERIAL_TEXELS + 2);
     vec4 d = texelFetch(uMaterials, m * MATERIAL_TEXELS + 3);
-    return MaterialData(int(a.w), a.rgb, b.rgb, c.rgb, d.rgb, b.w, c.w);
+    return MaterialData(int(a.w), a.rgb, b.rgb, c.rgb, d.rgb, b.w, c.w, d.w);
 }
 
 bool isDeltaOnly(MaterialData m) {

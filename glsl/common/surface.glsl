@@ -27,6 +27,23 @@ Surface surfaceAt(Ray ray, Hit hit) {
     return s;
 }
 
+// Dispersion (src/scene/spectrum.h explains the scheme). gWavelength is 0 until the path meets a
+// dispersive glass; then one wavelength is drawn for the rest of the path and the RGB throughput is
+// weighed by w(lambda) / p(lambda), which is 1 per channel on average.
+float gWavelength = 0.0;
+
+void applyDispersion(inout Surface s, inout vec3 beta) {
+    if (s.material.cauchyB <= 0.0) return;
+    if (gWavelength == 0.0) {
+        gWavelength = SPECTRUM_MIN_NM + rand() * (SPECTRUM_MAX_NM - SPECTRUM_MIN_NM);
+        vec3 t = (gWavelength - SPECTRUM_CENTRE_NM) / SPECTRUM_WIDTH_NM;
+        beta *= SPECTRUM_NORMALISATION * exp(-0.5 * t * t) * (SPECTRUM_MAX_NM - SPECTRUM_MIN_NM);
+    }
+    // Cauchy's equation, with A chosen so that the index at the d line (587.6 nm) is the material's ior.
+    float ior = s.material.ior + s.material.cauchyB * (1.0 / (gWavelength * gWavelength) - 1.0 / (587.6 * 587.6));
+    s.eta = s.frontFace ? ior : 1.0 / ior;
+}
+
 vec3 toLocal(Surface s, vec3 v) { return vec3(dot(v, s.tangent), dot(v, s.bitangent), dot(v, s.shadingNormal)); }
 vec3 toWorld(Surface s, vec3 v) { return v.x * s.tangent + v.y * s.bitangent + v.z * s.shadingNormal; }
 

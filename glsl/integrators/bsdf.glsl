@@ -10,6 +10,7 @@ vec3 radiance(Ray ray) {
             break;
         }
         Surface s = surfaceAt(ray, hit);
+        applyDispersion(s, beta);
         L += beta * emittedRadiance(s);
         if (depth == uMaxDepth) break;
         BsdfSample bs;

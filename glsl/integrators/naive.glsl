@@ -12,6 +12,7 @@ vec3 radiance(Ray ray) {
             break;
         }
         Surface s = surfaceAt(ray, hit);
+        applyDispersion(s, beta);
         L += beta * emittedRadiance(s);
         if (depth == uMaxDepth) break;
         vec3 dir;

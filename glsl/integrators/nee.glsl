@@ -15,6 +15,7 @@ vec3 radiance(Ray ray) {
             break;
         }
         Surface s = surfaceAt(ray, hit);
+        applyDispersion(s, beta);
         vec3 Le = emittedRadiance(s);
         if (Le != vec3(0.0)) L += beta * Le * (fullWeight ? 1.0 : powerHeuristic(lastPdf, lightPdf(ray, hit)));
         if (depth == uMaxDepth) break;

@@ -35,6 +35,7 @@ void main() {
     uint firstSample = uSampleOffset + uint(sum.a);
     for (int i = 0; i < uSamplesPerPass; ++i) {
         rngInit(uSeed, uvec2(pixel), firstSample + uint(i));
+        gWavelength = 0.0;
 #if DEBUG_VIEW == 0
         // Box filter: a uniformly jittered position inside the pixel.
         vec3 c = radiance(cameraRay(vec2(pixel) + rand2()));

@@ -17,7 +17,9 @@
 //                                            count > 0: a leaf of triangles [first, first + count);
 //                                            count = 0: an interior node at index `first`. Node 0 is the
 //                                            root.
-//  materials     RGBA32F    4 per material   (Kd.rgb, type) (Ke.rgb, roughness) (Ks.rgb, ior) (Tf.rgb, 0)
+//  materials     RGBA32F    4 per material   (Kd.rgb, type) (Ke.rgb, roughness) (Ks.rgb, ior) (Tf.rgb, B)
+//                                            B: Cauchy coefficient in nm^2 of a dispersive glass, else 0
+//                                            (ior is then the index at 587.6 nm; scene/spectrum.h)
 //                                            type: fp::MaterialType as an exact float
 //  lights        RGBA32F    1 per emitter    (triangle index, cdf up to and including it, pmf, area)
 //

@@ -5,6 +5,7 @@
 
 #include "core/error.h"
 #include "gpu/layout.h"
+#include "scene/spectrum.h"
 
 namespace fp {
 
@@ -107,7 +108,7 @@ PackedScene packScene(const Scene& scene, const Bvh& bvh) {
         out.materials.emplace_back(m.diffuse, float(m.type));
         out.materials.emplace_back(m.emission, m.roughness);
         out.materials.emplace_back(m.specular, m.ior);
-        out.materials.emplace_back(m.transmission, 0.0f);
+        out.materials.emplace_back(m.transmission, spectrum::cauchyFromAbbe(m.ior, m.abbeNumber).y);
     }
 
     NodePacker packer{bvh, out};

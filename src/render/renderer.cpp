@@ -3,9 +3,11 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 
 #include "core/error.h"
 #include "gpu/layout.h"
+#include "scene/spectrum.h"
 
 namespace fp {
 
@@ -69,6 +71,16 @@ std::unique_ptr<Program> Renderer::compile(Integrator integrator) const {
     defines.emplace_back("DEBUG_VIEW", std::to_string(int(settings_.view)));
     defines.emplace_back("MATERIAL_TYPES", std::to_string(materialTypes_));
     defines.emplace_back("ENVIRONMENT_MAP", environmentTextures_ ? "1" : "0");
+    auto vec3Literal = [](const glm::vec3& v) {
+        char text[96];
+        std::snprintf(text, sizeof text, "vec3(%.9g, %.9g, %.9g)", v.x, v.y, v.z);
+        return std::string(text);
+    };
+    defines.emplace_back("SPECTRUM_MIN_NM", std::to_string(spectrum::kMinNm));
+    defines.emplace_back("SPECTRUM_MAX_NM", std::to_string(spectrum::kMaxNm));
+    defines.emplace_back("SPECTRUM_CENTRE_NM", vec3Literal(spectrum::kCentreNm));
+    defines.emplace_back("SPECTRUM_WIDTH_NM", vec3Literal(spectrum::kWidthNm));
+    defines.emplace_back("SPECTRUM_NORMALISATION", vec3Literal(spectrum::normalisation()));
     return std::make_unique<Program>(shaders_, "passes/fullscreen.vert.glsl", "passes/trace.frag.glsl", defines);
 }
 

@@ -22,6 +22,7 @@ namespace fp {
 //    on every opaque material (3ds Max's, as in the Dabrovic Sponza), which must not turn into glass.
 //      ior          = Ni if given, else 1.5 (the MTL default Ni 1 would make the glass invisible;
 //                     an explicit Ni is kept, even 1)
+//      dispersion   = Vd (our extension: the Abbe number, 10 to 100; 0 or absent: none)
 //      transmission = Tf if not black, else white
 //      roughness    = Pr if given, else 0 (smooth glass)
 //    `d` and `Tr` (dissolve) never select glass: they are opacity (cut-outs), which we do not model;
@@ -66,7 +67,7 @@ struct MtlMaterial {
     std::string name;
     glm::vec3 kd{0.0f}, ke{0.0f}, ks{0.0f}, tf{0.0f};
     std::optional<int> illum;
-    std::optional<float> ni, ns, pr, pm;
+    std::optional<float> ni, ns, pr, pm, vd;
 };
 
 // The rules above.
@@ -75,7 +76,7 @@ Material materialFromMtl(const MtlMaterial& mtl);
 // Which statements of one material were given: tinyobjloader fills absent ones with the MTL defaults
 // (Ni 1, Ns 1, illum 0, Pr 0, Pm 0), which cannot be told apart from explicit values.
 struct MtlGiven {
-    bool illum = false, ni = false, ns = false, pr = false, pm = false;
+    bool illum = false, ni = false, ns = false, pr = false, pm = false, vd = false;
     // tinyobjloader gives a material with map_Kd but no Kd the grey 0.6, but only until some earlier
     // material of the file had a Kd (it never resets its flag at newmtl); we decide from these instead.
     bool kd = false, diffuseMap = false;

@@ -46,6 +46,7 @@ Material materialFromMtl(const MtlMaterial& mtl) {
         m.ior = mtl.ni.value_or(1.5f);
         m.transmission = isBlack(mtl.tf) ? glm::vec3(1.0f) : mtl.tf;
         m.roughness = mtl.pr.value_or(0.0f);
+        m.abbeNumber = mtl.vd.value_or(0.0f);
     } else if (mtl.pm && *mtl.pm >= 0.5f) {
         m.type = MaterialType::Conductor;
         m.specular = mtl.kd;

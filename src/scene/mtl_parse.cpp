@@ -47,6 +47,11 @@ std::vector<Material> parseMtl(std::string_view text, const std::string& name) {
         if (has.ns) mtl.ns = m.shininess;
         if (has.pr) mtl.pr = m.roughness;
         if (has.pm) mtl.pm = m.metallic;
+        // tinyobjloader keeps statements it does not know, such as our Vd, as text.
+        if (has.vd) {
+            auto it = m.unknown_parameter.find("Vd");
+            if (it != m.unknown_parameter.end()) mtl.vd = std::stof(it->second);
+        }
         materials.push_back(materialFromMtl(mtl));
     }
     if (materials.empty()) warn(name + ": defines no materials (no newmtl statement)");

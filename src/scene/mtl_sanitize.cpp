@@ -61,7 +61,7 @@ bool isKnownStatement(std::string_view key) {
     static const std::string_view kKnown[] = {
         "newmtl", "Ka",   "Kd",        "Ks",   "Ke",   "Kt",    "Tf",  "Ni",  "Ns",
         "d",      "Tr",   "illum",     "Pr",   "Pm",   "Ps",    "Pc",  "Pcr", "aniso",
-        "anisor", "norm", "sharpness", "bump", "disp", "decal", "refl"};
+        "anisor", "norm", "sharpness", "bump", "disp", "decal", "refl", "Vd"};
     if (key.substr(0, 4) == "map_") return true;
     return std::find(std::begin(kKnown), std::end(kKnown), key) != std::end(kKnown);
 }
@@ -71,7 +71,7 @@ bool isColorStatement(std::string_view key) {
 }
 
 bool isScalarStatement(std::string_view key) {
-    return key == "Ni" || key == "Ns" || key == "Pr" || key == "Pm" || key == "illum";
+    return key == "Ni" || key == "Ns" || key == "Pr" || key == "Pm" || key == "Vd" || key == "illum";
 }
 
 // One colour statement, re-spelled with three checked values; empty if it has to be dropped. Ke is a
@@ -150,6 +150,10 @@ std::string scalarStatement(const std::vector<std::string_view>& words, int line
     } else if (keyword == "Ns" && *value < 0.0) {
         repairs->negative.add(keyword, line);
         spelled = "0";
+    } else if (keyword == "Vd" && *value != 0.0 && (*value < 10.0 || *value > 100.0)) {
+        // Optical glasses have Abbe numbers between about 17 and 95; 0 means no dispersion.
+        repairs->clamped.add(keyword, line);
+        spelled = *value < 10.0 ? "10" : "100";
     } else if ((keyword == "Pr" || keyword == "Pm") && (*value < 0.0 || *value > 1.0)) {
         repairs->clamped.add(keyword, line);
         spelled = *value < 0.0 ? "0" : "1";
@@ -158,6 +162,7 @@ std::string scalarStatement(const std::vector<std::string_view>& words, int line
     if (keyword == "Ns") given->ns = true;
     if (keyword == "Pr") given->pr = true;
     if (keyword == "Pm") given->pm = true;
+    if (keyword == "Vd") given->vd = true;
     return out + ' ' + spelled;
 }
 

@@ -31,6 +31,9 @@ struct Material {
     glm::vec3 transmission{1.0f};   // MTL Tf: dielectric transmission tint, each channel in [0, 1]
     float roughness = 0.0f;         // MTL Pr (or from Ns): perceptual roughness in [0, 1]; GGX alpha = roughness^2
     float ior = 1.5f;               // MTL Ni: index of refraction of dielectrics and coats, in [1, 4]
+    // MTL Vd (our extension): the Abbe number of a dispersive glass, 0 for none. Ni is then the index at
+    // the Fraunhofer d line (587.6 nm) and the index follows Cauchy's equation n = A + B / lambda^2.
+    float abbeNumber = 0.0f;
     bool isEmissive() const { return emission.x > 0.0f || emission.y > 0.0f || emission.z > 0.0f; }
 };
 
