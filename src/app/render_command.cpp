@@ -45,6 +45,7 @@ const char* kRenderUsage =
     "  --tonemap NAME        PNG only: clamp | reinhard | aces (default clamp)\n"
     "  --samples-per-pass N  samples each pixel takes per draw call (default 1)\n"
     "  --shader-dir DIR      read shaders from DIR instead of the ones built in\n"
+    "  --backend NAME        auto (default: a GPU through EGL if there is one, else OSMesa) | egl | osmesa\n"
     "  --stats               print scene, BVH, memory and timing statistics\n"
     "  --quiet               no progress bar or summary line\n"
     "  -h, --help            this text\n"
@@ -81,7 +82,7 @@ void checkOutputPath(const std::string& path) {
 int renderCommand(const std::vector<std::string>& argv) {
     Args args(argv,
               {"-o", "--output", "--size", "--spp", "--max-depth", "--seed", "--integrator", "--eye",
-               "--target", "--up", "--fov", "--view", "--exposure", "--tonemap", "--samples-per-pass", "--shader-dir"},
+               "--target", "--up", "--fov", "--view", "--exposure", "--tonemap", "--samples-per-pass", "--shader-dir", "--backend"},
               {"--stats", "--quiet", "-h", "--help"});
     if (args.has("-h") || args.has("--help")) {
         std::fputs(kRenderUsage, stdout);
@@ -121,7 +122,8 @@ int renderCommand(const std::vector<std::string>& argv) {
     if (auto v = args.number("--fov")) camera.fovY = *v;
     validateCamera(camera, "camera");  // flags can break a valid scene camera
 
-    std::unique_ptr<GlContext> context = createOsMesaContext();
+    std::unique_ptr<GlContext> context = createOffscreenContext(args.text("--backend").value_or("auto"));
+    if (!quiet) std::fprintf(stderr, "renderer: %s\n", context->description().c_str());
     Renderer renderer(scene, ShaderLibrary(args.text("--shader-dir").value_or("")));
     renderer.configure(settings, camera);
 

@@ -14,6 +14,17 @@ std::string GlContext::description() const {
     return glString(GL_RENDERER) + ", OpenGL " + glString(GL_VERSION);
 }
 
+std::unique_ptr<GlContext> createOffscreenContext(const std::string& backend) {
+    if (backend == "osmesa") return createOsMesaContext();
+    if (backend == "egl") return createEglContext(false);
+    if (backend != "auto") throw Error("unknown backend '" + backend + "' (choose auto, egl or osmesa)");
+    try {
+        return createEglContext(true);
+    } catch (const Error&) {
+        return createOsMesaContext();  // no GPU reachable through EGL: software rendering
+    }
+}
+
 void loadGlFunctions(GlProcLoader getProc, const std::string& who) {
     int version = gladLoadGL(reinterpret_cast<GLADloadfunc>(getProc));
     if (version == 0) throw Error(who + ": could not load OpenGL functions");

@@ -17,6 +17,14 @@ class GlContext {
 // Throws fp::Error when no 4.1 core context can be created.
 std::unique_ptr<GlContext> createOsMesaContext();
 
+// Offscreen context through EGL's device platform, real GPUs first (no X server needed); with
+// `requireHardware`, Mesa's software device does not count. Throws fp::Error when none works.
+std::unique_ptr<GlContext> createEglContext(bool requireHardware);
+
+// For --backend: "osmesa", "egl", or "auto" (an EGL GPU if there is one, else OSMesa). Throws fp::Error
+// for an unknown name or when the chosen backend fails.
+std::unique_ptr<GlContext> createOffscreenContext(const std::string& backend);
+
 // Loads GL functions through `getProc` and checks the version; throws fp::Error naming `who`.
 using GlProcLoader = void* (*)(const char* name);
 void loadGlFunctions(GlProcLoader getProc, const std::string& who);

@@ -129,6 +129,21 @@ TEST_F(Cli, NoSuitableGlContextIsAClearError) {
     EXPECT_NE(r.output.find("GALLIUM_DRIVER=nosuchdriver"), std::string::npos) << r.output;
 }
 
+TEST_F(Cli, EglAndOsMesaBackendsRenderTheSameImage) {
+    // On this machine both reach llvmpipe; the GL_RENDERER line says which renderer was chosen.
+    for (const char* backend : {"egl", "osmesa", "auto"}) {
+        CliRun r = fragpath(std::string("render --size 16x16 --spp 2 --backend ") + backend + " -o " +
+                            path(std::string(backend) + ".pfm"));
+        ASSERT_EQ(r.exitCode, 0) << r.output;
+        EXPECT_NE(r.output.find("renderer: "), std::string::npos) << r.output;
+    }
+    EXPECT_EQ(readImage(path("egl.pfm")).pixels, readImage(path("osmesa.pfm")).pixels);
+    EXPECT_EQ(readImage(path("auto.pfm")).pixels, readImage(path("osmesa.pfm")).pixels);
+    CliRun r = fragpath("render --backend vulkan -o " + path("x.png"));
+    EXPECT_EQ(r.exitCode, 1);
+    EXPECT_NE(r.output.find("auto, egl or osmesa"), std::string::npos) << r.output;
+}
+
 TEST_F(Cli, InterruptedRenderStillWritesWhatItHas) {
     // SIGINT a long render once it has started; it must write an image of the samples done so far.
     std::string out = path("partial.pfm");
