@@ -7,5 +7,7 @@ namespace fp {
 
 int renderCommand(const std::vector<std::string>& args);
 int benchCommand(const std::vector<std::string>& args);
+int viewCommand(const std::vector<std::string>& args);
+int mergeCommand(const std::vector<std::string>& args);
 
 }  // namespace fp

@@ -14,6 +14,8 @@ static const char* kUsage =
     "commands:\n"
     "  render [SCENE]   render an OBJ or scene file (default: the built-in Cornell box) to an image\n"
     "  bench [SCENE]    measure time to first frame, paths/s and rays/s (median of several runs)\n"
+    "  view [SCENE]     open a window that renders interactively (needs a display, or xvfb-run)\n"
+    "  merge PARTS -o OUT.exr  combine partial renders of disjoint sample ranges into one image\n"
     "\n"
     "Run 'fragpath <command> --help' for the options of a command.\n";
 
@@ -28,6 +30,8 @@ int main(int argc, char** argv) {
     try {
         if (command == "render") return fp::renderCommand(args);
         if (command == "bench") return fp::benchCommand(args);
+        if (command == "view") return fp::viewCommand(args);
+        if (command == "merge") return fp::mergeCommand(args);
         std::fprintf(stderr, "fragpath: unknown command '%s'\n\n%s", command.c_str(), kUsage);
         return 2;
     } catch (const fp::Error& e) {

@@ -1,7 +1,10 @@
 // `fragpath render`: the offscreen batch renderer (OSMesa, no display, no GPU needed).
 #include <unistd.h>
 
+#include <algorithm>
 #include <atomic>
+#include <cmath>
+#include <cstdlib>
 #include <chrono>
 #include <csignal>
 #include <cstdio>
@@ -13,7 +16,9 @@
 #include "app/progress.h"
 #include "core/error.h"
 #include "gl/context.h"
+#include "image/file_io.h"
 #include "image/tone_map.h"
+#include "render/partial_render.h"
 #include "render/renderer.h"
 #include "scene/builtin_scene.h"
 #include "scene/load.h"
@@ -45,17 +50,33 @@ const char* kRenderUsage =
     "  --tonemap NAME        PNG only: clamp | reinhard | aces (default clamp)\n"
     "  --samples-per-pass N  samples each pixel takes per draw call (default 1)\n"
     "  --shader-dir DIR      read shaders from DIR instead of the ones built in\n"
+    "  --sample-offset K     render sample indices K, K+1, ... (one part of a render spread over machines;\n"
+    "                        combine the parts' .exr files with `fragpath merge`)\n"
+    "  --time-budget T       stop after the pass that uses up T (e.g. 90s, 5m, 1.5h); --spp is then a cap\n"
+    "  --resume FILE.exr     continue a render saved as .exr (same scene and settings) up to --spp samples\n"
     "  --backend NAME        auto (default: a GPU through EGL if there is one, else OSMesa) | egl | osmesa\n"
     "  --stats               print scene, BVH, memory and timing statistics\n"
     "  --quiet               no progress bar or summary line\n"
     "  -h, --help            this text\n"
     "\n"
-    "Ctrl-C (SIGINT) or SIGTERM stops early and still writes the samples done so far.\n";
+    "Ctrl-C (SIGINT) or SIGTERM stops early and still writes the samples done so far. An .exr output\n"
+    "records in its header which samples it holds and a fingerprint of the scene and settings.\n";
 
 std::atomic<bool> interrupted{false};
 
 extern "C" void onInterrupt(int) {
     interrupted = true;
+}
+
+// "90", "90s", "5m", "1.5h" -> seconds.
+double parseDuration(const std::string& flag, const std::string& text) {
+    char* end = nullptr;
+    double value = std::strtod(text.c_str(), &end);
+    std::string unit(end);
+    double scale = unit.empty() || unit == "s" ? 1.0 : unit == "m" ? 60.0 : unit == "h" ? 3600.0 : -1.0;
+    if (end == text.c_str() || scale < 0.0 || !(value > 0.0) || !std::isfinite(value))
+        throw Error("option " + flag + ": expected a duration such as 90s, 5m or 1.5h, got '" + text + "'");
+    return value * scale;
 }
 
 double processCpuSeconds() {
@@ -82,7 +103,7 @@ void checkOutputPath(const std::string& path) {
 int renderCommand(const std::vector<std::string>& argv) {
     Args args(argv,
               {"-o", "--output", "--size", "--spp", "--max-depth", "--seed", "--integrator", "--eye",
-               "--target", "--up", "--fov", "--view", "--exposure", "--tonemap", "--samples-per-pass", "--shader-dir", "--backend"},
+               "--target", "--up", "--fov", "--view", "--exposure", "--tonemap", "--samples-per-pass", "--shader-dir", "--backend", "--sample-offset", "--time-budget", "--resume"},
               {"--stats", "--quiet", "-h", "--help"});
     if (args.has("-h") || args.has("--help")) {
         std::fputs(kRenderUsage, stdout);
@@ -108,12 +129,18 @@ int renderCommand(const std::vector<std::string>& argv) {
     settings.width = d.width.value_or(512);
     settings.height = d.height.value_or(512);
     if (auto s = args.size("--size")) settings.width = s->x, settings.height = s->y;
-    int spp = args.integer("--spp", 1, 1 << 24).value_or(d.spp.value_or(64));
+    std::optional<double> budget;
+    if (auto t = args.text("--time-budget")) budget = parseDuration("--time-budget", *t);
+    // With only a time budget, the budget decides when to stop.
+    int spp = args.integer("--spp", 1, 1 << 24).value_or(budget ? 1 << 24 : d.spp.value_or(64));
     settings.maxDepth = args.integer("--max-depth", 0, 1000).value_or(d.maxDepth.value_or(5));
     settings.seed = uint32_t(args.integer("--seed", 0, 2147483647).value_or(int(d.seed.value_or(0))));
     settings.integrator = parseIntegrator(args.text("--integrator").value_or(d.integrator.value_or("nee")));
     if (auto v = args.text("--view")) settings.view = parseView(*v);
     settings.samplesPerPass = args.integer("--samples-per-pass", 1, 4096).value_or(1);
+    settings.sampleOffset = uint32_t(args.integer("--sample-offset", 0, 1 << 30).value_or(0));
+    std::optional<PartialRender> resumed;
+    if (auto r = args.text("--resume")) resumed = readPartial(*r);
 
     Camera camera = scene.camera.value_or(frameBounds(scene.bounds()));
     if (auto v = args.vec3("--eye")) camera.eye = *v;
@@ -126,26 +153,44 @@ int renderCommand(const std::vector<std::string>& argv) {
     if (!quiet) std::fprintf(stderr, "renderer: %s\n", context->description().c_str());
     Renderer renderer(scene, ShaderLibrary(args.text("--shader-dir").value_or("")));
     renderer.configure(settings, camera);
+    const std::string fingerprint = renderFingerprint(scene, settings, camera);
+    int already = 0;
+    if (resumed) {
+        const std::string from = *args.text("--resume");
+        if (resumed->fingerprint != fingerprint)
+            throw Error(from + " was rendered from a different scene or settings (fingerprint " +
+                        resumed->fingerprint + ", this render " + fingerprint + ")");
+        if (resumed->ranges.size() != 1 || resumed->ranges[0].first != settings.sampleOffset)
+            throw Error(from + " does not hold one range of samples starting at --sample-offset " +
+                        std::to_string(settings.sampleOffset));
+        already = int(resumed->samples());
+        renderer.restore(resumed->mean, already);
+        if (!quiet) std::fprintf(stderr, "resuming %s: %d samples done\n", from.c_str(), already);
+    }
 
-    Progress progress(spp);
+    Progress progress(spp - already);
     auto traceStart = std::chrono::steady_clock::now();
     double cpuStart = processCpuSeconds();
     double firstFrameSeconds = 0.0;
-    renderer.render(spp, [&](int done) {
-        if (firstFrameSeconds == 0.0)
-            firstFrameSeconds =
-                std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    renderer.render(std::max(spp - already, 0), [&](int done) {
+        auto now = std::chrono::steady_clock::now();
+        if (firstFrameSeconds == 0.0) firstFrameSeconds = std::chrono::duration<double>(now - start).count();
         if (!quiet) progress.update(done);
-        return !interrupted.load();
+        bool overBudget = budget && std::chrono::duration<double>(now - traceStart).count() >= *budget;
+        return !interrupted.load() && !overBudget;
     });
     double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - traceStart).count();
     double cpuSeconds = processCpuSeconds() - cpuStart;
     progress.finish();
 
     Accumulation acc = renderer.readback();
-    writeImage(output, acc.mean(), display);
+    const int total = renderer.samples();
+    if (lowerCaseExtension(output) == ".exr")
+        writePartial(output, {acc.mean(), {{settings.sampleOffset, uint64_t(total)}}, fingerprint});
+    else
+        writeImage(output, acc.mean(), display);
 
-    int done = renderer.samples();
+    int done = total - already;
     double paths = double(settings.width) * settings.height * done;
     if (!quiet)
         std::fprintf(stderr, "%s: %d spp at %dx%d, %s, depth %d: %.2f s, %.3g paths/s, %.3g rays/s\n",
@@ -174,8 +219,8 @@ int renderCommand(const std::vector<std::string>& argv) {
         std::printf("dropped samples  %llu (NaN or Inf, replaced by 0)\n",
                     (unsigned long long)acc.droppedSamples());
     }
-    if (done < spp) {
-        std::fprintf(stderr, "fragpath: interrupted after %d of %d spp; %s holds those samples\n", done, spp,
+    if (interrupted.load()) {
+        std::fprintf(stderr, "fragpath: interrupted after %d of %d spp; %s holds those samples\n", total, spp,
                      output.c_str());
         return 130;
     }

@@ -33,9 +33,10 @@ GlfwWindow::GlfwWindow(int width, int height, const std::string& title) {
     glfwSetErrorCallback(recordGlfwError);
     lastGlfwError.clear();
     if (!glfwInit())
-        throw Error("cannot open a window (" + lastGlfwError +
-                    "). The viewer needs a display: run it under a virtual one with `xvfb-run -a fragpath view "
-                    "...`, or render offscreen, without a display or GPU, with `fragpath render ...`");
+        throw Error(
+            "cannot open a window (" + lastGlfwError +
+            "). The viewer needs a display: run it under a virtual one with `xvfb-run -a fragpath view "
+            "...`, or render offscreen, without a display or GPU, with `fragpath render ...`");
     glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 4);
     glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 1);
     glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);

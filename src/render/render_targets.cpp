@@ -87,6 +87,17 @@ void RenderTargets::endPass(const PixelRegion& region) {
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
 }
 
+void RenderTargets::restore(const Image& mean, int samples) {
+    clear();
+    std::vector<glm::vec4> sums(size_t(width_) * size_t(height_));
+    for (int y = 0; y < height_; ++y)
+        for (int x = 0; x < width_; ++x)  // GL rows run bottom to top
+            sums[size_t(height_ - 1 - y) * size_t(width_) + size_t(x)] =
+                glm::vec4(mean.at(x, y) * float(samples), float(samples));
+    glBindTexture(GL_TEXTURE_2D, textures_[size_t(current_)][0]);
+    glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, width_, height_, GL_RGBA, GL_FLOAT, sums.data());
+}
+
 Accumulation RenderTargets::read() const {
     Accumulation acc;
     acc.width = width_;

@@ -35,6 +35,9 @@ class RenderTargets {
     void beginPass(int firstUnit, const PixelRegion& region);
     void endPass(const PixelRegion& region);
     Accumulation read() const;
+    // Replaces the accumulation by `samples` samples whose per-pixel mean was `mean` (rows top first),
+    // to resume a saved render. Sums of squares are not saved, so they restart at zero.
+    void restore(const Image& mean, int samples);
     // The current sums (radiance sum, sample count), for display.
     GLuint sumTexture() const { return textures_[size_t(current_)][0]; }
 

@@ -212,6 +212,17 @@ bool Renderer::renderTile(int tileSize) {
     return true;
 }
 
+void Renderer::restore(const Image& mean, int samples) {
+    if (!targets_) throw Error("internal: Renderer::restore before configure");
+    if (mean.width != settings_.width || mean.height != settings_.height)
+        throw Error("the saved render is " + std::to_string(mean.width) + "x" + std::to_string(mean.height) +
+                    ", not " + std::to_string(settings_.width) + "x" + std::to_string(settings_.height));
+    glActiveTexture(GLenum(GL_TEXTURE0 + kSpareUnit));
+    targets_->restore(mean, samples);
+    samples_ = samples;
+    nextTile_ = 0;
+}
+
 Accumulation Renderer::readback() const {
     if (!targets_) throw Error("internal: Renderer::readback before configure");
     return targets_->read();

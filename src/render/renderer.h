@@ -39,6 +39,9 @@ class Renderer {
     // first), so that an interactive front end can bound the work per frame. Returns true when that
     // completed a sample over the whole image.
     bool renderTile(int tileSize);
+    // Continues a saved render: after configure(), takes `samples` samples of per-pixel mean `mean`
+    // as already done (their indices must be the settings' sampleOffset onwards).
+    void restore(const Image& mean, int samples);
     // Recompiles the shaders from the library (hot reload) and restarts accumulation. Throws fp::Error
     // with the compiler's message, keeping the previous programs.
     void reloadShaders();

@@ -1,0 +1,41 @@
+// `fragpath merge`: combines partial renders (EXR files of disjoint sample ranges of one render) into
+// the image a single render of all those samples gives.
+#include <cstdio>
+
+#include "app/args.h"
+#include "app/commands.h"
+#include "core/error.h"
+#include "render/partial_render.h"
+
+namespace fp {
+
+namespace {
+
+const char* kMergeUsage =
+    "usage: fragpath merge PART.exr PART.exr ... -o OUT.exr\n"
+    "\n"
+    "Averages partial renders weighted by their sample counts. The parts must come from the same scene\n"
+    "and settings (their fingerprints must match) and hold disjoint sample ranges, as written by\n"
+    "`fragpath render --sample-offset K --spp N -o part.exr`.\n";
+
+}  // namespace
+
+int mergeCommand(const std::vector<std::string>& argv) {
+    Args args(argv, {"-o", "--output"}, {"-h", "--help"});
+    if (args.has("-h") || args.has("--help")) {
+        std::fputs(kMergeUsage, stdout);
+        return 0;
+    }
+    auto output = args.text("-o") ? args.text("-o") : args.text("--output");
+    if (!output) throw Error("merge needs an output file: -o OUT.exr");
+    if (args.positional().empty()) throw Error("merge needs the partial renders to combine");
+    std::vector<PartialRender> parts;
+    for (const std::string& path : args.positional()) parts.push_back(readPartial(path));
+    PartialRender merged = mergePartials(parts, args.positional());
+    writePartial(*output, merged);
+    std::fprintf(stderr, "%s: %llu samples per pixel from %zu parts\n", output->c_str(),
+                 (unsigned long long)merged.samples(), parts.size());
+    return 0;
+}
+
+}  // namespace fp

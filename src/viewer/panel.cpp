@@ -1,0 +1,201 @@
+#include "viewer/panel.h"
+
+#include <imgui.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <iterator>
+
+#include "image/tone_map.h"
+#include "viewer/camera_controller.h"
+#include "viewer/heat_map.h"
+
+namespace fp {
+
+const char* const kViewerControlsHelp =
+    "left drag        orbit around the target\n"
+    "middle drag      pan (or shift + left drag)\n"
+    "right drag       look around\n"
+    "wheel            dolly toward / away from the target\n"
+    "F                fly mode: W/A/S/D move, Q/E down/up,\n"
+    "                 the mouse looks; F or Esc leaves\n"
+    "R                reset to the scene's camera\n"
+    "P                screenshot: fragpath_<N>spp.png (as shown)\n"
+    "                 and .exr (linear), in the current directory\n"
+    "H                hide / show this panel\n";
+
+namespace {
+
+const char* const kIntegrators[] = {"naive", "bsdf", "nee"};
+const char* const kToneMaps[] = {"clamp", "reinhard", "aces"};
+const float kScales[] = {1.0f, 0.5f, 0.25f, 0.125f};
+const char* const kScaleNames[] = {"full", "1/2", "1/4", "1/8"};
+
+// What a count view counts, for the legend.
+const char* countUnit(View view) {
+    switch (view) {
+        case View::Bounces:
+            return "bounces survived";
+        case View::Nodes:
+            return "BVH nodes visited";
+        case View::Triangles:
+            return "triangles tested";
+        default:
+            return "";
+    }
+}
+
+bool integratorCombo(const char* label, Integrator& integrator) {
+    int index = int(integrator);
+    if (!ImGui::Combo(label, &index, kIntegrators, int(std::size(kIntegrators)))) return false;
+    integrator = Integrator(index);
+    return true;
+}
+
+void depthSlider(const char* label, int& depth) {
+    ImGui::SliderInt(label, &depth, 0, 16);
+    depth = std::clamp(depth, 0, 1000);  // ctrl+click may type any number
+}
+
+// The heat map's colours from 0 to max, as the display pass draws them.
+void heatLegend(View view, float heatMax) {
+    ImDrawList* draw = ImGui::GetWindowDrawList();
+    ImVec2 origin = ImGui::GetCursorScreenPos();
+    float width = ImGui::GetContentRegionAvail().x, height = 14.0f;
+    const int segments = int(kHeatMapStops.size()) - 1;
+    for (int i = 0; i < segments; ++i) {
+        glm::vec3 a = kHeatMapStops[size_t(i)], b = kHeatMapStops[size_t(i) + 1];
+        ImU32 left = ImGui::GetColorU32(ImVec4(a.r, a.g, a.b, 1.0f));
+        ImU32 right = ImGui::GetColorU32(ImVec4(b.r, b.g, b.b, 1.0f));
+        float x0 = origin.x + width * float(i) / float(segments);
+        float x1 = origin.x + width * float(i + 1) / float(segments);
+        draw->AddRectFilledMultiColor(ImVec2(x0, origin.y), ImVec2(x1, origin.y + height), left, right, right,
+                                      left);
+    }
+    ImGui::Dummy(ImVec2(width, height));
+    char top[32];
+    std::snprintf(top, sizeof top, "%g", double(heatMax));
+    ImGui::TextUnformatted("0");
+    ImGui::SameLine(std::max(0.0f, width - ImGui::CalcTextSize(top).x));
+    ImGui::TextUnformatted(top);
+    ImGui::TextDisabled("%s per primary ray (mean)", countUnit(view));
+}
+
+void statistics(const ViewerControls& c, const PanelInfo& info) {
+    if (c.targetSpp > 0)
+        ImGui::Text("samples  %d / %d%s", info.samples, c.targetSpp,
+                    info.samples >= c.targetSpp ? " (done)" : "");
+    else
+        ImGui::Text("samples  %d", info.samples);
+    ImGui::Text("image    %d x %d%s", info.accumulation.x, info.accumulation.y,
+                info.reduced ? " (reduced while moving)" : "");
+    ImGui::Text("speed    %.3g samples/s, %.3g paths/s", info.samplesPerSecond, info.pathsPerSecond);
+    ImGui::Text("frame    %.1f ms", info.frameMs);
+    ImGui::TextDisabled("%s", info.renderer.c_str());
+}
+
+void renderSettings(ViewerControls& c) {
+    integratorCombo("integrator", c.render.integrator);
+    depthSlider("max depth", c.render.maxDepth);
+    int view = 0;
+    const char* names[std::size(kAllViews)];
+    for (size_t i = 0; i < std::size(kAllViews); ++i) {
+        names[i] = viewName(kAllViews[i]);
+        if (kAllViews[i] == c.render.view) view = int(i);
+    }
+    if (ImGui::Combo("view", &view, names, int(std::size(names)))) c.render.view = kAllViews[view];
+    int scale = 0;
+    for (size_t i = 0; i < std::size(kScales); ++i)
+        if (kScales[i] == c.resolutionScale) scale = int(i);
+    if (ImGui::Combo("resolution", &scale, kScaleNames, int(std::size(kScaleNames))))
+        c.resolutionScale = kScales[scale];
+    ImGui::InputInt("target spp", &c.targetSpp);
+    c.targetSpp = std::max(c.targetSpp, 0);
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("stop rendering at this many samples per pixel; 0: never");
+    int seed = int(c.render.seed);
+    if (ImGui::InputInt("seed", &seed)) c.render.seed = uint32_t(std::max(seed, 0));
+
+    ImGui::Checkbox("split view", &c.split);
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("the right half uses another integrator or depth, at the same sample count");
+    if (c.split) {
+        integratorCombo("right integrator", c.splitView.integrator);
+        depthSlider("right max depth", c.splitView.maxDepth);
+    }
+}
+
+bool displaySettings(ViewerControls& c) {
+    bool fit = false;
+    if (isCountView(c.render.view)) {
+        ImGui::Checkbox("auto range", &c.autoHeatMax);
+        ImGui::SameLine();
+        fit = ImGui::Button("fit now");
+        if (ImGui::DragFloat("heat max", &c.heatMax, 0.1f, 0.1f, 1e6f, "%.1f")) c.autoHeatMax = false;
+        c.heatMax = std::max(c.heatMax, 0.1f);
+        heatLegend(c.render.view, c.heatMax);
+    } else {
+        ImGui::SliderFloat("exposure", &c.tone.exposure, -8.0f, 8.0f, "%.1f stops");
+        int toneMap = int(c.tone.toneMap);
+        if (ImGui::Combo("tone map", &toneMap, kToneMaps, int(std::size(kToneMaps))))
+            c.tone.toneMap = ToneMap(toneMap);
+    }
+    return fit;
+}
+
+void cameraSettings(const PanelInfo& info, PanelActions& actions) {
+    float fov = info.camera.fovY;
+    if (ImGui::SliderFloat("field of view", &fov, CameraController::kMinFovDegrees,
+                           CameraController::kMaxFovDegrees, "%.1f deg"))
+        actions.fov = fov;
+    bool flying = info.flying;
+    if (ImGui::Checkbox("fly mode (F)", &flying)) actions.toggleFly = true;
+    ImGui::SameLine();
+    actions.resetCamera = ImGui::Button("reset (R)");
+    const Camera& cam = info.camera;
+    ImGui::TextDisabled("eye    %.3g, %.3g, %.3g", double(cam.eye.x), double(cam.eye.y), double(cam.eye.z));
+    ImGui::TextDisabled("target %.3g, %.3g, %.3g", double(cam.target.x), double(cam.target.y),
+                        double(cam.target.z));
+}
+
+}  // namespace
+
+PanelActions drawPanel(ViewerControls& c, const PanelInfo& info) {
+    PanelActions actions;
+    ImGui::SetNextWindowPos(ImVec2(8, 8), ImGuiCond_FirstUseEver);
+    // As tall as its contents (they change: split view, errors), but never taller than the window: it
+    // scrolls instead.
+    float height = std::max(ImGui::GetIO().DisplaySize.y - 16.0f, 100.0f);
+    ImGui::SetNextWindowSizeConstraints(ImVec2(320, 0), ImVec2(320, height));
+    ImGui::SetNextWindowBgAlpha(0.8f);
+    if (!ImGui::Begin("fragpath", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
+        ImGui::End();
+        return actions;
+    }
+    ImGui::PushItemWidth(-130.0f);  // room for the labels
+    statistics(c, info);
+    // Right below the figures, where it cannot be missed or scrolled away.
+    if (!info.shaderError.empty()) {
+        ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.45f, 0.35f, 1.0f));
+        ImGui::PushTextWrapPos(0.0f);  // TextUnformatted: no length limit for a long compiler log
+        ImGui::TextUnformatted("shader error; the last shaders that compiled keep running:");
+        ImGui::TextUnformatted(info.shaderError.c_str());
+        ImGui::PopTextWrapPos();
+        ImGui::PopStyleColor();
+    }
+    if (ImGui::CollapsingHeader("render", ImGuiTreeNodeFlags_DefaultOpen)) renderSettings(c);
+    if (ImGui::CollapsingHeader("display", ImGuiTreeNodeFlags_DefaultOpen))
+        actions.fitHeatMap = displaySettings(c);
+    if (ImGui::CollapsingHeader("camera", ImGuiTreeNodeFlags_DefaultOpen)) cameraSettings(info, actions);
+    if (ImGui::CollapsingHeader("shaders")) ImGui::TextWrapped("source: %s", info.shaderSource.c_str());
+    if (ImGui::CollapsingHeader("help")) ImGui::TextUnformatted(kViewerControlsHelp);
+    actions.screenshot = ImGui::Button("screenshot (P)");
+    if (!info.message.empty()) {
+        ImGui::SameLine();
+        ImGui::TextDisabled("%s", info.message.c_str());
+    }
+    ImGui::PopItemWidth();
+    ImGui::End();
+    return actions;
+}
+
+}  // namespace fp

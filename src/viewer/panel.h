@@ -1,0 +1,43 @@
+#pragma once
+// The viewer's Dear ImGui panel: statistics, render and display settings, the split view, the camera,
+// the heat-map legend, the last shader error and a help section. It edits ViewerControls directly and
+// reports one-off requests as PanelActions; it never touches the renderer.
+#include <optional>
+#include <string>
+
+#include <glm/glm.hpp>
+
+#include "scene/scene.h"
+#include "viewer/viewer_controls.h"
+
+namespace fp {
+
+struct PanelInfo {
+    int samples = 0;                // per pixel, completed
+    glm::ivec2 accumulation{0};     // accumulation size
+    bool reduced = false;           // at the moving resolution
+    double samplesPerSecond = 0.0;  // full-image samples
+    double pathsPerSecond = 0.0;
+    double frameMs = 0.0;
+    std::string renderer;      // GL_RENDERER, GL_VERSION
+    std::string shaderSource;  // "built in" or the hot-reload directory
+    std::string shaderError;   // the last compile error, empty when the shaders compile
+    std::string message;       // the last screenshot written, etc.
+    bool flying = false;
+    Camera camera;
+};
+
+struct PanelActions {
+    bool resetCamera = false;
+    bool toggleFly = false;
+    bool screenshot = false;
+    bool fitHeatMap = false;
+    std::optional<float> fov;  // degrees
+};
+
+PanelActions drawPanel(ViewerControls& controls, const PanelInfo& info);
+
+// The controls, one per line, for the panel's help section and `fragpath view --help`.
+extern const char* const kViewerControlsHelp;
+
+}  // namespace fp

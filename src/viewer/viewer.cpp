@@ -1,0 +1,421 @@
+#include "viewer/viewer.h"
+
+// clang-format off
+#include "gl/glfw_window.h"
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
+// clang-format on
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <memory>
+#include <optional>
+
+#include "core/error.h"
+#include "render/display.h"
+#include "render/renderer.h"
+#include "viewer/accumulation_policy.h"
+#include "viewer/camera_controller.h"
+#include "viewer/camera_input.h"
+#include "viewer/frame_stats.h"
+#include "viewer/imgui_layer.h"
+#include "viewer/panel.h"
+#include "viewer/screenshot.h"
+#include "viewer/shader_watcher.h"
+#include "viewer/tile_planner.h"
+
+namespace fp {
+
+namespace {
+
+// The longest a restart may keep the previous picture on screen, so the panel never freezes for long.
+constexpr double kMaxHoldSeconds = 1.0;
+// Frames should take about this long (25 per second); rendering gets what drawing the window leaves,
+// within these bounds.
+constexpr double kTargetFrameSeconds = 0.040;
+constexpr double kMinBudgetSeconds = 0.010, kMaxBudgetSeconds = 0.033;
+
+double now() {
+    static const auto start = std::chrono::steady_clock::now();
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+class Session {
+  public:
+    Session(const Scene& scene, const ViewerOptions& options);
+    void run();
+
+  private:
+    void handleKeys();
+    void handleCamera(double dt);
+    void setFlying(bool flying);
+    void applyActions(const PanelActions& actions);
+    PanelInfo panelInfo() const;
+    void reloadShadersIfChanged(double t);
+    void restart(const RenderSettings& settings, bool reduced);
+    float movingScale(glm::ivec2 framebuffer) const;
+    void renderWithinBudget();
+    void fitHeatMapIfDue();
+    DisplayOptions displayOptions() const;
+    void present(glm::ivec2 framebuffer);
+    void screenshotKey();
+    void reportError(const std::string& message);
+    bool targetReached() const {
+        return controls_.targetSpp > 0 && renderer_.samples() >= controls_.targetSpp;
+    }
+    bool automationDone(int frames) const {
+        return options_.frames > 0 && frames >= options_.frames &&
+               (controls_.targetSpp == 0 || renderer_.samples() >= controls_.targetSpp);
+    }
+    void printTiming() const;
+
+    const ViewerOptions& options_;
+    GlfwWindow window_;  // first: everything below needs its GL context
+    std::string description_;
+    Renderer renderer_;
+    Display display_;
+    std::unique_ptr<ImGuiLayer> ui_;
+    std::optional<ShaderWatcher> watcher_;
+    ViewerControls controls_;
+    CameraController camera_;
+    CameraInput input_;
+    AccumulationPolicy policy_;
+    TilePlanner planner_;
+    FrameStats stats_;
+
+    RenderSettings lastGood_;  // the settings of the last configure() that succeeded
+    bool configured_ = false;
+    bool reduced_ = false;
+    int tile_ = 0;  // tile size of the pass in progress; 0 before a pass starts
+    double restartTime_ = 0.0;
+    bool completeShown_ = false;  // the window shows an image with at least one whole pass
+    double framePaths_ = 0.0;
+    double frameRenderSeconds_ = 0.0;
+    double overheadSeconds_ = 0.005;  // per frame, everything but rendering (events, panel, display, swap)
+    bool heatFitDue_ = true, heatFitRequested_ = false;
+    std::string shaderError_, message_;
+};
+
+Session::Session(const Scene& scene, const ViewerOptions& options)
+    : options_(options),
+      window_(options.windowSize.x, options.windowSize.y, "fragpath - " + scene.source),
+      description_(window_.description()),
+      renderer_(scene, ShaderLibrary(options.shaderDir)),
+      display_(ShaderLibrary(options.shaderDir)),
+      controls_(options.controls),
+      camera_(options.camera) {
+    if (options.ui) ui_ = std::make_unique<ImGuiLayer>(window_.handle());
+    if (!options.shaderDir.empty()) watcher_.emplace(options.shaderDir);
+}
+
+void Session::reportError(const std::string& message) {
+    if (message == shaderError_) return;  // once, not every frame it persists
+    shaderError_ = message;
+    std::fprintf(stderr, "fragpath: error: %s\n", message.c_str());
+}
+
+void Session::setFlying(bool flying) {
+    input_.setFlying(flying);
+    window_.setCursorCaptured(flying);
+    if (ui_) ui_->setMouseEnabled(!flying);
+}
+
+void Session::handleKeys() {
+    bool uiHasKeyboard = ui_ && ui_->wantsKeyboard();
+    for (int key : window_.takeKeyPresses()) {
+        if (uiHasKeyboard) continue;
+        switch (key) {
+            case GLFW_KEY_F:
+                setFlying(!input_.flying());
+                break;
+            case GLFW_KEY_ESCAPE:
+                if (input_.flying()) setFlying(false);
+                break;
+            case GLFW_KEY_R:
+                camera_.reset();
+                break;
+            case GLFW_KEY_P:
+                screenshotKey();
+                break;
+            case GLFW_KEY_H:
+                controls_.showPanel = !controls_.showPanel;
+                break;
+            default:
+                break;
+        }
+    }
+}
+
+void Session::handleCamera(double dt) {
+    GLFWwindow* w = window_.handle();
+    auto key = [w](int k) { return glfwGetKey(w, k) == GLFW_PRESS; };
+    auto button = [w](int b) { return glfwGetMouseButton(w, b) == GLFW_PRESS; };
+    InputFrame in;
+    glfwGetCursorPos(w, &in.cursor.x, &in.cursor.y);
+    in.left = button(GLFW_MOUSE_BUTTON_LEFT);
+    in.middle = button(GLFW_MOUSE_BUTTON_MIDDLE);
+    in.right = button(GLFW_MOUSE_BUTTON_RIGHT);
+    in.shift = key(GLFW_KEY_LEFT_SHIFT) || key(GLFW_KEY_RIGHT_SHIFT);
+    in.forward = key(GLFW_KEY_W);
+    in.back = key(GLFW_KEY_S);
+    in.strafeLeft = key(GLFW_KEY_A);
+    in.strafeRight = key(GLFW_KEY_D);
+    in.down = key(GLFW_KEY_Q);
+    in.up = key(GLFW_KEY_E);
+    in.scroll = window_.takeScroll();
+    in.uiWantsMouse = ui_ && ui_->wantsMouse();
+    in.uiWantsKeyboard = ui_ && ui_->wantsKeyboard();
+    in.dt = std::min(dt, 0.1);  // a stalled frame (a shader compile) must not fling the camera
+    in.windowSize = window_.windowSize();
+    input_.update(in, camera_);
+}
+
+void Session::applyActions(const PanelActions& actions) {
+    if (actions.resetCamera) camera_.reset();
+    if (actions.toggleFly) setFlying(!input_.flying());
+    if (actions.fov) camera_.setFov(*actions.fov);
+    if (actions.fitHeatMap) heatFitRequested_ = true;
+    if (actions.screenshot) screenshotKey();
+}
+
+PanelInfo Session::panelInfo() const {
+    PanelInfo info;
+    info.samples = renderer_.samples();
+    info.accumulation = {renderer_.settings().width, renderer_.settings().height};
+    info.reduced = reduced_;
+    info.samplesPerSecond = stats_.samplesPerSecond();
+    info.pathsPerSecond = stats_.pathsPerSecond();
+    info.frameMs = 1000.0 * stats_.frameSeconds();
+    info.renderer = description_;
+    info.shaderSource = options_.shaderDir.empty()
+                            ? "built into the binary (--shader-dir DIR to edit them)"
+                            : options_.shaderDir + " (hot reload: checked twice a second)";
+    info.shaderError = shaderError_;
+    info.message = message_;
+    info.flying = input_.flying();
+    info.camera = camera_.camera();
+    return info;
+}
+
+void Session::reloadShadersIfChanged(double t) {
+    if (!watcher_ || !watcher_->poll(t)) return;
+    try {
+        renderer_.reloadShaders();  // restarts accumulation, or throws and keeps the running programs
+        tile_ = 0;
+        restartTime_ = now();
+        heatFitDue_ = true;
+        display_.reloadShaders();
+        shaderError_.clear();
+        std::fprintf(stderr, "fragpath: reloaded shaders from %s\n", options_.shaderDir.c_str());
+    } catch (const Error& e) {
+        reportError(e.what());
+    }
+}
+
+void Session::restart(const RenderSettings& settings, bool reduced) {
+    try {
+        renderer_.configure(settings, camera_.camera());
+        lastGood_ = settings;
+        configured_ = true;
+    } catch (const Error& e) {
+        if (!configured_) throw;  // at start there is nothing to fall back to
+        // The renderer keeps the programs it had: go back to the settings they were compiled for, in the
+        // panel too, so that it shows what is rendered.
+        reportError(e.what());
+        controls_.adopt(lastGood_);
+        try {
+            renderer_.configure(lastGood_, camera_.camera());
+        } catch (const Error&) {
+            // Nothing recompiled successfully; the previous programs keep drawing.
+        }
+        policy_.restartFailed(lastGood_);
+    }
+    tile_ = 0;
+    restartTime_ = now();
+    // While moving, keep the heat map's range from the last full-resolution image: a range fitted to
+    // every reduced frame would flicker.
+    if (!reduced || controls_.heatMax <= 0.0f) heatFitDue_ = true;
+}
+
+float Session::movingScale(glm::ivec2 framebuffer) const {
+    // A quarter of the window, or less (by halves) until a whole pass fits in a frame's budget: then
+    // every frame of a camera motion shows a complete image.
+    float scale = 0.25f;
+    while (scale > 1.0f / 16.0f &&
+           planner_.passSeconds(framebuffer) * scale * scale > planner_.budgetSeconds())
+        scale *= 0.5f;
+    return scale;
+}
+
+void Session::renderWithinBudget() {
+    glm::ivec2 size(renderer_.settings().width, renderer_.settings().height);
+    double start = now();
+    planner_.setBudgetSeconds(
+        std::clamp(kTargetFrameSeconds - overheadSeconds_, kMinBudgetSeconds, kMaxBudgetSeconds));
+    for (;;) {
+        if (tile_ == 0) tile_ = planner_.tileSize(size);  // fixed for a whole pass
+        double pixels = TilePlanner::pixelsPerTile(size, tile_);
+        double tileStart = now();
+        bool passDone = renderer_.renderTile(tile_);
+        window_.finish();  // time the work, not the queueing of it
+        planner_.record(pixels, now() - tileStart);
+        framePaths_ += pixels;
+        if (passDone) tile_ = 0;
+        if (targetReached()) break;
+        int next = tile_ ? tile_ : planner_.tileSize(size);
+        if (!planner_.fits(now() - start, TilePlanner::pixelsPerTile(size, next))) break;
+    }
+    frameRenderSeconds_ = now() - start;
+}
+
+void Session::fitHeatMapIfDue() {
+    bool countView = isCountView(renderer_.settings().view);
+    bool due = heatFitRequested_ || (controls_.autoHeatMax && heatFitDue_);
+    if (!countView || !due || renderer_.samples() < 1) return;
+    // One read-back per fit: the largest mean count in the image becomes the top of the scale.
+    Image mean = renderer_.readback().mean();
+    float largest = 0.0f;
+    for (const glm::vec3& p : mean.pixels)
+        if (std::isfinite(p.r)) largest = std::max(largest, p.r);
+    controls_.heatMax = std::max(1.0f, std::ceil(largest));
+    heatFitDue_ = heatFitRequested_ = false;
+}
+
+DisplayOptions Session::displayOptions() const {
+    DisplayOptions d;
+    d.tone = controls_.tone;
+    const RenderSettings& s = renderer_.settings();
+    if (isCountView(s.view)) {
+        // Until the first fit, a range that every count stays within (bounces) or a rough guess.
+        float fallback = s.view == View::Bounces ? float(std::max(s.maxDepth, 1)) : 16.0f;
+        d.heatMax = controls_.heatMax > 0.0f ? controls_.heatMax : fallback;
+    }
+    d.splitLine = s.split.has_value();
+    return d;
+}
+
+void Session::present(glm::ivec2 framebuffer) {
+    window_.bindWindowFramebuffer();
+    if (framebuffer.x > 0 && framebuffer.y > 0)
+        display_.draw(renderer_.sumTexture(), framebuffer.x, framebuffer.y, displayOptions());
+    if (ui_) ui_->render();
+}
+
+void Session::screenshotKey() {
+    std::string base = screenshotBaseName(renderer_.samples());
+    try {
+        Image mean = renderer_.readback().mean();
+        writeViewImage(base + ".png", mean, displayOptions());
+        writeImage(base + ".exr", mean);
+        message_ = "wrote " + base + ".png, .exr";
+        std::printf("wrote %s.png and %s.exr\n", base.c_str(), base.c_str());
+        std::fflush(stdout);
+    } catch (const Error& e) {
+        message_ = "screenshot failed";
+        std::fprintf(stderr, "fragpath: error: %s\n", e.what());
+    }
+}
+
+void Session::printTiming() const {
+    const RenderSettings& s = renderer_.settings();
+    double pixels = double(s.width) * double(s.height);
+    double paths = stats_.steadyPathsPerSecond();
+    std::printf(
+        "view: %zu frames, image %dx%d, %d spp; median frame time %.1f ms; %.3g samples/s, "
+        "%.3g paths/s (after the first frame)\n",
+        stats_.frames(), s.width, s.height, renderer_.samples(), 1000.0 * stats_.medianFrameSeconds(),
+        pixels > 0 ? paths / pixels : 0.0, paths);
+}
+
+void Session::run() {
+    // With --spp in automation nothing moves, and the result must equal `fragpath render`'s.
+    bool automatedSamples = options_.frames > 0 && controls_.targetSpp > 0;
+    double last = now();
+    int frames = 0;
+    bool idle = false;
+    while (!window_.shouldClose()) {
+        if (idle)
+            window_.waitEvents(0.25);  // wakes for input; the timeout keeps hot reload polling
+        else
+            window_.pollEvents();
+        double start = now();
+        double dt = start - last;
+        last = start;
+
+        if (ui_) ui_->beginFrame();
+        handleKeys();
+        handleCamera(dt);
+        reloadShadersIfChanged(start);
+
+        glm::ivec2 framebuffer = window_.framebufferSize();
+        AccumulationPolicy::Request request;
+        request.cameraVersion = camera_.version();
+        request.settings = controls_.requested();
+        request.windowSize = framebuffer;
+        request.resolutionScale = controls_.resolutionScale;
+        glm::ivec2 full =
+            glm::max(glm::ivec2(1), glm::ivec2(glm::vec2(framebuffer) * controls_.resolutionScale));
+        // Reduced resolution only helps where a full pass does not fit in a frame (software rendering).
+        request.reduceWhileMoving =
+            !automatedSamples && planner_.passSeconds(full) > planner_.budgetSeconds();
+        request.movingScale = movingScale(framebuffer);
+        request.now = start;
+        AccumulationPolicy::Decision decision = policy_.update(request);
+        if (decision.restart) restart(decision.settings, decision.reduced);
+        reduced_ = decision.reduced;
+
+        framePaths_ = 0.0;
+        frameRenderSeconds_ = 0.0;
+        bool rendering = decision.render && !targetReached();
+        if (rendering) renderWithinBudget();
+        fitHeatMapIfDue();
+        // After rendering, so that it shows this frame's figures; its changes apply from the next frame.
+        if (ui_ && controls_.showPanel) applyActions(drawPanel(controls_, panelInfo()));
+        ++frames;
+        bool done = automationDone(frames);
+        // A new accumulation is black where its first pass has not reached yet. Rather than wipe the
+        // picture and fill it in tile by tile (most of a second at full resolution on a software
+        // renderer), keep the last complete picture on screen (no swap) until the first pass is done.
+        // Not while moving: motion must show at once (its reduced passes fit in a frame anyway).
+        bool complete = renderer_.samples() >= 1;
+        bool hold = !complete && completeShown_ && !policy_.moving(now()) &&
+                    now() - restartTime_ < kMaxHoldSeconds && !done;
+        if (hold) {
+            if (ui_) ui_->skipFrame();
+        } else {
+            present(framebuffer);
+            if (done && !options_.windowScreenshot.empty()) {
+                glm::ivec2 size;
+                std::vector<std::uint8_t> pixels = window_.readBackBuffer(size);
+                writeRgb8Png(options_.windowScreenshot, size, pixels);
+                std::printf("wrote %s (the window)\n", options_.windowScreenshot.c_str());
+            }
+            window_.swapBuffers();
+            completeShown_ = complete;
+        }
+        double frameSeconds = now() - start;
+        stats_.addFrame(now(), frameSeconds, framePaths_,
+                        double(renderer_.settings().width) * double(renderer_.settings().height));
+        if (rendering)
+            overheadSeconds_ += 0.25 * (std::max(frameSeconds - frameRenderSeconds_, 0.0) - overheadSeconds_);
+        if (done) break;
+        idle = options_.frames == 0 && !rendering && !policy_.moving(now()) && !input_.flying();
+    }
+
+    if (!options_.screenshot.empty()) {
+        writeViewImage(options_.screenshot, renderer_.readback().mean(), displayOptions());
+        std::printf("wrote %s (%d spp)\n", options_.screenshot.c_str(), renderer_.samples());
+    }
+    if (options_.printTiming) printTiming();
+}
+
+}  // namespace
+
+void runViewer(const Scene& scene, const ViewerOptions& options) {
+    Session session(scene, options);
+    session.run();
+}
+
+}  // namespace fp

@@ -1,0 +1,37 @@
+#pragma once
+// Everything the user can change in the viewer besides the camera: what to render (these restart
+// accumulation) and how to show it (these never do). The panel edits it; command-line flags set it.
+#include "image/image.h"
+#include "render/settings.h"
+
+namespace fp {
+
+struct ViewerControls {
+    // What to render. width and height are unused: the accumulation follows the window.
+    RenderSettings render;
+    bool split = false;
+    SplitView splitView;           // the right half, when split
+    float resolutionScale = 1.0f;  // accumulation size / window size when the camera is still
+
+    // How to show it.
+    DisplaySettings tone;
+    bool autoHeatMax = true;  // count views: the heat map's top from the image itself
+    float heatMax = 0.0f;     // count views: the count shown white; 0 until known
+    int targetSpp = 0;        // stop rendering at this many samples per pixel; 0: never
+    bool showPanel = true;
+
+    RenderSettings requested() const {
+        RenderSettings s = render;
+        s.split = split ? std::optional<SplitView>(splitView) : std::nullopt;
+        return s;
+    }
+    // Adopts the render-related fields of `s` (after a failed change, to show what is really rendered).
+    void adopt(const RenderSettings& s) {
+        render = s;
+        render.split.reset();
+        split = s.split.has_value();
+        if (s.split) splitView = *s.split;
+    }
+};
+
+}  // namespace fp

@@ -1,0 +1,84 @@
+// Renders split into sample ranges: parts rendered apart (on other machines, or resumed later) and
+// merged give the image one render of all the samples gives, up to float summation order.
+#include <gtest/gtest.h>
+
+#include "cli/fragpath_runner.h"
+#include "render/partial_render.h"
+
+namespace fp {
+namespace {
+
+class PartialRenders : public test::TempDirTest {
+  protected:
+    void render(const std::string& options, const std::string& out) {
+        test::CliRun r = test::runFragpath("render --size 24x16 --max-depth 3 --quiet " + options + " -o " + path(out));
+        ASSERT_EQ(r.exitCode, 0) << r.output;
+    }
+    void expectClose(const Image& a, const Image& b) {
+        ASSERT_EQ(a.pixels.size(), b.pixels.size());
+        for (size_t i = 0; i < a.pixels.size(); ++i)
+            for (int c = 0; c < 3; ++c)
+                ASSERT_NEAR(a.pixels[i][c], b.pixels[i][c], 1e-5f * (1.0f + b.pixels[i][c])) << "pixel " << i;
+    }
+};
+
+TEST_F(PartialRenders, FourPartsMergedEqualOneRender) {
+    render("--spp 10", "whole.exr");
+    render("--spp 3", "a.exr");
+    render("--spp 2 --sample-offset 3", "b.exr");
+    render("--spp 4 --sample-offset 5", "c.exr");
+    render("--spp 1 --sample-offset 9", "d.exr");
+    // In any order.
+    test::CliRun r = test::runFragpath("merge " + path("c.exr") + " " + path("a.exr") + " " + path("d.exr") + " " +
+                                       path("b.exr") + " -o " + path("merged.exr"));
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    PartialRender merged = readPartial(path("merged.exr")), whole = readPartial(path("whole.exr"));
+    EXPECT_EQ(merged.samples(), 10u);
+    ASSERT_EQ(merged.ranges.size(), 1u) << "adjacent ranges join";
+    EXPECT_EQ(merged.ranges[0].first, 0u);
+    EXPECT_EQ(merged.fingerprint, whole.fingerprint);
+    expectClose(merged.mean, whole.mean);
+}
+
+TEST_F(PartialRenders, OverlapsAndDifferentSettingsAreRefused) {
+    render("--spp 3", "a.exr");
+    render("--spp 3 --sample-offset 2", "overlapping.exr");
+    render("--spp 3 --sample-offset 3 --seed 7", "other_seed.exr");
+    test::CliRun r = test::runFragpath("merge " + path("a.exr") + " " + path("overlapping.exr") + " -o " + path("m.exr"));
+    EXPECT_EQ(r.exitCode, 1);
+    EXPECT_NE(r.output.find("overlap"), std::string::npos) << r.output;
+    r = test::runFragpath("merge " + path("a.exr") + " " + path("other_seed.exr") + " -o " + path("m.exr"));
+    EXPECT_EQ(r.exitCode, 1);
+    EXPECT_NE(r.output.find("different scene or settings"), std::string::npos) << r.output;
+    render("--spp 2 --view depth", "png_source.exr");
+    r = test::runFragpath("merge " + path("a.exr") + " " + path("png_source.exr") + " -o " + path("m.exr"));
+    EXPECT_EQ(r.exitCode, 1);
+    EXPECT_FALSE(std::filesystem::exists(path("m.exr")));
+}
+
+TEST_F(PartialRenders, ResumeContinuesWhereTheSavedRenderStopped) {
+    render("--spp 8", "whole.exr");
+    render("--spp 3", "start.exr");
+    render("--spp 8 --resume " + path("start.exr"), "resumed.exr");
+    PartialRender resumed = readPartial(path("resumed.exr"));
+    EXPECT_EQ(resumed.samples(), 8u);
+    expectClose(resumed.mean, readPartial(path("whole.exr")).mean);
+    // A saved render of other settings cannot be continued.
+    test::CliRun r = test::runFragpath("render --size 24x16 --max-depth 4 --spp 8 --resume " + path("start.exr") +
+                                       " -o " + path("x.exr"));
+    EXPECT_EQ(r.exitCode, 1);
+    EXPECT_NE(r.output.find("different scene or settings"), std::string::npos) << r.output;
+}
+
+TEST_F(PartialRenders, TimeBudgetRendersWhatFitsAndRecordsTheCount) {
+    render("--time-budget 1s", "budget.exr");
+    PartialRender p = readPartial(path("budget.exr"));
+    EXPECT_GE(p.samples(), 1u);
+    EXPECT_LT(p.samples(), 1u << 24);
+    test::CliRun r = test::runFragpath("render --time-budget soon -o " + path("x.exr"));
+    EXPECT_EQ(r.exitCode, 1);
+    EXPECT_NE(r.output.find("duration"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace fp

@@ -1,0 +1,71 @@
+// A screenshot shows what the window shows: the CPU heat map of a count view matches the display pass.
+#include "viewer/screenshot.h"
+
+#include <gtest/gtest.h>
+#include <stb_image.h>
+#include <unistd.h>
+
+#include <filesystem>
+
+#include "gl/context.h"
+#include "render/renderer.h"
+#include "scene/builtin_scene.h"
+
+namespace fp {
+namespace {
+
+TEST(Screenshot, CountViewPngMatchesTheDisplayPass) {
+    static std::unique_ptr<GlContext> context = createOsMesaContext();
+    Scene scene = builtinCornellBox();
+    Renderer renderer(scene);
+    RenderSettings settings;
+    settings.width = 32;
+    settings.height = 24;
+    settings.view = View::Nodes;
+    renderer.configure(settings, *scene.camera);
+    renderer.render(2);
+    Image mean = renderer.readback().mean();
+
+    DisplayOptions options;
+    options.heatMax = 9.0f;  // some pixels above it: the clamp is covered too
+    const int w = settings.width, h = settings.height;
+    GLuint target = 0, framebuffer = 0;
+    glGenTextures(1, &target);
+    glBindTexture(GL_TEXTURE_2D, target);
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, w, h, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
+    glGenFramebuffers(1, &framebuffer);
+    glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
+    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, target, 0);
+    Display display;
+    display.draw(renderer.sumTexture(), w, h, options);
+    std::vector<unsigned char> gpu(size_t(w) * h * 4);
+    glReadPixels(0, 0, w, h, GL_RGBA, GL_UNSIGNED_BYTE, gpu.data());
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    glDeleteFramebuffers(1, &framebuffer);
+    glDeleteTextures(1, &target);
+
+    std::string path =
+        (std::filesystem::temp_directory_path() / ("fragpath_heat_" + std::to_string(getpid()) + ".png"))
+            .string();
+    writeViewImage(path, mean, options);
+    int pw = 0, ph = 0, channels = 0;
+    unsigned char* png = stbi_load(path.c_str(), &pw, &ph, &channels, 3);
+    std::filesystem::remove(path);
+    ASSERT_NE(png, nullptr);
+    ASSERT_EQ(pw, w);
+    ASSERT_EQ(ph, h);
+    int colours = 0;
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x)
+            for (int c = 0; c < 3; ++c) {
+                int g = gpu[(size_t(h - 1 - y) * w + size_t(x)) * 4 + size_t(c)];  // GL rows bottom first
+                int e = png[(size_t(y) * w + size_t(x)) * 3 + size_t(c)];
+                EXPECT_NEAR(g, e, 1) << "pixel " << x << "," << y << " channel " << c;
+                colours += e != png[(size_t(y) * w) * 3 + size_t(c)];
+            }
+    stbi_image_free(png);
+    EXPECT_GT(colours, 0) << "not a uniform image";
+}
+
+}  // namespace
+}  // namespace fp

@@ -1,0 +1,119 @@
+// `fragpath view` end to end: a real GLFW window on a virtual X display (xvfb-run), as CI has no display
+// and no GPU. The viewer drives the same renderer as `fragpath render`, and a pixel's k-th sample depends
+// only on (seed, pixel, k), so the same settings must give the same image.
+#include <gtest/gtest.h>
+#include <stb_image.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <vector>
+
+#include "cli/fragpath_runner.h"
+
+namespace fp {
+namespace {
+
+namespace fs = std::filesystem;
+using test::CliRun;
+
+CliRun run(const std::string& command) {
+    FILE* pipe = popen((command + " 2>&1").c_str(), "r");
+    std::string output;
+    char buffer[4096];
+    while (size_t n = fread(buffer, 1, sizeof buffer, pipe)) output.append(buffer, n);
+    int status = pclose(pipe);
+    return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, output};
+}
+
+// The viewer on its own virtual display (-a picks a free server number).
+CliRun view(const std::string& args) {
+    return run("LP_NUM_THREADS=2 xvfb-run -a -s \"-screen 0 1280x1024x24\" " + std::string(FP_BINARY) +
+               " view " + args);
+}
+
+struct Rgb8Image {
+    int width = 0, height = 0;
+    std::vector<unsigned char> rgb;
+};
+
+Rgb8Image readPng(const std::string& path) {
+    Rgb8Image image;
+    int channels = 0;
+    unsigned char* data = stbi_load(path.c_str(), &image.width, &image.height, &channels, 3);
+    if (!data) {
+        ADD_FAILURE() << "cannot read " << path << ": " << stbi_failure_reason();
+        return image;
+    }
+    image.rgb.assign(data, data + size_t(image.width) * size_t(image.height) * 3);
+    stbi_image_free(data);
+    return image;
+}
+
+class ViewerXvfb : public test::TempDirTest {
+  protected:
+    void SetUp() override {
+        TempDirTest::SetUp();
+        if (run("command -v xvfb-run").exitCode != 0)
+            FAIL() << "xvfb-run is missing: install the xvfb and xauth packages (tools/install-deps.sh)";
+    }
+};
+
+TEST_F(ViewerXvfb, RendersWhatFragpathRenderRenders) {
+    CliRun a = view("--size 64x64 --spp 4 --frames 1 --seed 3 --max-depth 4 --screenshot " + path("A.png") +
+                    " --no-ui");
+    ASSERT_EQ(a.exitCode, 0) << a.output;
+    EXPECT_NE(a.output.find("median frame time"), std::string::npos) << a.output;
+    CliRun b =
+        test::runFragpath("render --size 64x64 --spp 4 --seed 3 --max-depth 4 --quiet -o " + path("B.png"));
+    ASSERT_EQ(b.exitCode, 0) << b.output;
+
+    Rgb8Image imageA = readPng(path("A.png")), imageB = readPng(path("B.png"));
+    ASSERT_EQ(imageA.width, 64);
+    ASSERT_EQ(imageA.height, 64);
+    ASSERT_EQ(imageB.rgb.size(), imageA.rgb.size());
+
+    // Not blank: a lit Cornell box has a clearly non-zero mean and varies across the image.
+    double sum = 0.0, sumSquares = 0.0;
+    for (unsigned char v : imageA.rgb) sum += v, sumSquares += double(v) * v;
+    double n = double(imageA.rgb.size()), mean = sum / n;
+    EXPECT_GT(mean, 10.0);
+    EXPECT_GT(sumSquares / n - mean * mean, 100.0);
+
+    // The same samples through the same tone mapping: identical up to rounding (in practice, equal).
+    int largest = 0;
+    for (size_t i = 0; i < imageA.rgb.size(); ++i)
+        largest = std::max(largest, std::abs(int(imageA.rgb[i]) - int(imageB.rgb[i])));
+    EXPECT_LE(largest, 1);
+}
+
+TEST_F(ViewerXvfb, PanelSplitViewAndCountViewsRun) {
+    CliRun r = view("--size 160x120 --frames 4 --split bsdf --view bounces --screenshot " + path("view.png") +
+                    " --screenshot-window " + path("window.png"));
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    Rgb8Image window = readPng(path("window.png"));
+    EXPECT_EQ(window.width, 160);
+    EXPECT_EQ(window.height, 120);
+    Rgb8Image image = readPng(path("view.png"));
+    EXPECT_EQ(image.width, 160);
+}
+
+TEST_F(ViewerXvfb, WithoutADisplayNamesTheWaysOut) {
+    CliRun r = run("env -u DISPLAY -u WAYLAND_DISPLAY " + std::string(FP_BINARY) + " view --frames 1");
+    EXPECT_EQ(r.exitCode, 1) << r.output;
+    EXPECT_NE(r.output.find("fragpath: error: "), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("xvfb-run"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("fragpath render"), std::string::npos) << r.output;
+}
+
+TEST_F(ViewerXvfb, BadFlagsFailBeforeOpeningAWindow) {
+    CliRun r = run("env -u DISPLAY " + std::string(FP_BINARY) + " view --screenshot " + path("shot.txt"));
+    EXPECT_EQ(r.exitCode, 1) << r.output;
+    EXPECT_NE(r.output.find("--screenshot"), std::string::npos) << r.output;
+    r = run("env -u DISPLAY " + std::string(FP_BINARY) + " view --help");
+    EXPECT_EQ(r.exitCode, 0) << r.output;
+    for (const char* text : {"--frames", "--screenshot", "--shader-dir", "orbit", "fly mode"})
+        EXPECT_NE(r.output.find(text), std::string::npos) << text;
+}
+
+}  // namespace
+}  // namespace fp
