@@ -2,7 +2,7 @@
 BUILD ?= build
 JOBS ?= 2
 
-.PHONY: deps build render test clean format
+.PHONY: deps build render test sanitize fuzz clean format
 
 deps:
 	@tools/install-deps.sh
@@ -16,6 +16,17 @@ render: build
 
 test: build
 	LP_NUM_THREADS=2 ctest --test-dir $(BUILD) --output-on-failure -j 1
+
+# The whole test suite built with AddressSanitizer and UBSan (our code; Mesa itself is not instrumented).
+sanitize: deps
+	cmake -S . -B build-asan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DFP_SANITIZE=ON
+	cmake --build build-asan -j $(JOBS)
+	LP_NUM_THREADS=2 ASAN_OPTIONS=detect_leaks=0 UBSAN_OPTIONS=print_stacktrace=1 \
+		ctest --test-dir build-asan --output-on-failure -j 1
+
+# libFuzzer on the OBJ/MTL loader and the scene file, FUZZ_SECONDS each (default 60).
+fuzz: deps
+	tools/fuzz.sh
 
 format:
 	clang-format -i $$(git ls-files 'src/*.cpp' 'src/*.h' 'tests/*.cpp' 'tests/*.h')

@@ -4,7 +4,7 @@ set -euo pipefail
 packages=(
   cmake make g++ pkg-config python3-glad
   libosmesa6-dev libegl-dev libglm-dev libtinyobjloader-dev nlohmann-json3-dev libstb-dev libtinyexr-dev libgtest-dev
-  libglfw3-dev libimgui-dev xvfb xauth
+  libglfw3-dev libimgui-dev xvfb xauth clang libclang-rt-14-dev
 )
 missing=()
 for p in "${packages[@]}"; do

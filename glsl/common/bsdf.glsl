@@ -70,7 +70,9 @@ float ggxAlpha(float roughness) { return max(roughness * roughness, 1e-4); }
 // Normal distribution D(wm) (pbrt-v4 eq. 9.16, isotropic).
 float ggxD(vec3 wm, float alpha) {
     float a2 = alpha * alpha;
-    float d = wm.z * wm.z * (a2 - 1.0) + 1.0;
+    // cos^2 (a2 - 1) + 1 written as sin^2 + cos^2 a2 (wm is unit): the usual form cancels
+    // catastrophically near the peak of a narrow lobe, where cos^2 is close to 1.
+    float d = (wm.x * wm.x + wm.y * wm.y) + wm.z * wm.z * a2;
     return a2 / (PI * d * d);
 }
 
