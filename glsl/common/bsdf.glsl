@@ -179,8 +179,7 @@ bool plasticSample(MaterialData m, vec3 wo, vec3 u, out BsdfSample s) {
     if (u.z < p) {
         wi = reflectLocal(wo, ggxSampleVisibleNormal(wo, ggxAlpha(m.roughness), u.xy));
     } else {
-        float r = sqrt(u.x), phi = 2.0 * PI * u.y;
-        wi = vec3(r * cos(phi), r * sin(phi), sqrt(max(0.0, 1.0 - u.x)));
+        wi = sampleCosineLocal(u.xy);
     }
     if (wi.z <= 0.0) return false;
     float pdf = plasticPdf(m, wo, wi);
@@ -291,8 +290,7 @@ bool bsdfSample(MaterialData m, vec3 wo, vec3 u, float eta, out BsdfSample s) {
 #if HAS_TYPE(MATERIAL_DIELECTRIC)
     if (m.type == MATERIAL_DIELECTRIC) return dielectricSample(m, wo, u, eta, s);
 #endif
-    float r = sqrt(u.x), phi = 2.0 * PI * u.y;  // cosine-weighted (Malley's method)
-    vec3 wi = vec3(r * cos(phi), r * sin(phi), sqrt(max(0.0, 1.0 - u.x)));
+    vec3 wi = sampleCosineLocal(u.xy);
     s = BsdfSample(wi, m.diffuse, wi.z / PI, false);
     return wi.z > 0.0;
 }

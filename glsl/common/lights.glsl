@@ -85,11 +85,7 @@ vec3 environmentRadiance(vec3 dir) { return uEnvironment; }
 // Uniform over the sphere for a constant environment.
 float environmentPdf(vec3 dir) { return environmentSelection() / (4.0 * PI); }
 
-vec3 sampleEnvironmentDirection() {
-    vec2 v = rand2();
-    float z = 1.0 - 2.0 * v.x, r = sqrt(max(0.0, 1.0 - z * z)), phi = 2.0 * PI * v.y;
-    return vec3(r * cos(phi), r * sin(phi), z);
-}
+vec3 sampleEnvironmentDirection() { return sampleUniformSphere(rand2()); }
 #endif
 
 int pickLight(float u) {

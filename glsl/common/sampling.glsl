@@ -24,11 +24,18 @@ vec3 sampleUniformHemisphere(vec3 n, vec2 u) {
     return toWorld(vec3(r * cos(phi), r * sin(phi), z), n);
 }
 
-// Cosine-weighted around n (Malley's method); pdf = cos(theta) / pi (pbrt-v4 A.5.3).
-vec3 sampleCosineHemisphere(vec3 n, vec2 u) {
+// Uniform over the whole sphere; pdf = 1 / (4 pi) (pbrt-v4 A.5.2).
+vec3 sampleUniformSphere(vec2 u) {
+    float z = 1.0 - 2.0 * u.x, r = sqrt(max(0.0, 1.0 - z * z)), phi = 2.0 * PI * u.y;
+    return vec3(r * cos(phi), r * sin(phi), z);
+}
+
+// Cosine-weighted around +z, the normal of the local shading frame (Malley's method: uniform on the
+// disk, projected up); pdf = cos(theta) / pi (pbrt-v4 A.5.3).
+vec3 sampleCosineLocal(vec2 u) {
     float r = sqrt(u.x);
     float phi = 2.0 * PI * u.y;
-    return toWorld(vec3(r * cos(phi), r * sin(phi), sqrt(max(0.0, 1.0 - u.x))), n);
+    return vec3(r * cos(phi), r * sin(phi), sqrt(max(0.0, 1.0 - u.x)));
 }
 
 // Uniform barycentrics (b1, b2) on a triangle, pdf = 1 / area (the square-root map, pbrt-v3 13.6.5).
