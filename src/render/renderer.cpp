@@ -102,17 +102,28 @@ void Renderer::configure(const RenderSettings& settings, const Camera& camera) {
                         (settings.split && settings.split->integrator != settings_.split->integrator);
     bool recompile = !program_ || settings.integrator != settings_.integrator || settings.view != settings_.view ||
                      splitChanged;
-    settings_ = settings;
-    camera_ = camera;
     if (recompile) {
-        program_ = compile(settings_.integrator);
-        splitProgram_ = settings_.split ? compile(settings_.split->integrator) : nullptr;
+        // Compile both programs before changing anything, so that a compile error leaves the renderer
+        // exactly as it was.
+        RenderSettings previous = settings_;
+        settings_ = settings;  // compile() reads the view from the settings
+        try {
+            std::unique_ptr<Program> program = compile(settings.integrator);
+            std::unique_ptr<Program> split = settings.split ? compile(settings.split->integrator) : nullptr;
+            program_ = std::move(program);
+            splitProgram_ = std::move(split);
+        } catch (...) {
+            settings_ = previous;
+            throw;
+        }
     }
     if (!targets_ || targets_->width() != settings.width || targets_->height() != settings.height) {
         glActiveTexture(GLenum(GL_TEXTURE0 + kSpareUnit));  // never rebind a scene texture's unit
         targets_.reset();
         targets_ = std::make_unique<RenderTargets>(settings.width, settings.height);
     }
+    settings_ = settings;
+    camera_ = camera;
     targets_->clear();
     samples_ = 0;
     nextTile_ = 0;

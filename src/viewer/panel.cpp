@@ -26,7 +26,7 @@ const char* const kViewerControlsHelp =
 
 namespace {
 
-const char* const kIntegrators[] = {"naive", "bsdf", "nee"};
+const char* const kIntegrators[] = {"naive", "bsdf", "nee", "bdpt"};
 const char* const kToneMaps[] = {"clamp", "reinhard", "aces"};
 const float kScales[] = {1.0f, 0.5f, 0.25f, 0.125f};
 const char* const kScaleNames[] = {"full", "1/2", "1/4", "1/8"};

@@ -6,7 +6,9 @@
 namespace fp {
 
 TilePlanner::TilePlanner(const Options& options)
-    : options_(options), secondsPerPixel_(options.initialSecondsPerPixel) {}
+    : options_(options),
+      secondsPerPixel_(options.initialSecondsPerPixel),
+      passSecondsPerPixel_(options.initialSecondsPerPixel) {}
 
 int TilePlanner::tileSize(glm::ivec2 size) const {
     int whole = std::max({size.x, size.y, 1});
@@ -29,6 +31,16 @@ void TilePlanner::record(double pixels, double seconds) {
     // Smoothed, and one slow tile (a shader compiled on first use, another process taking the CPU) can
     // at most double the estimate, so it does not shrink the tiles to nothing for many frames.
     secondsPerPixel_ = std::min(2.0 * secondsPerPixel_, 0.5 * (secondsPerPixel_ + measured));
+    passPixels_ += pixels;
+    passSeconds_ += seconds;
+}
+
+void TilePlanner::passDone() {
+    if (passPixels_ > 0.0) {
+        double measured = std::max(passSeconds_ / passPixels_, 1e-12);
+        passSecondsPerPixel_ = std::min(2.0 * passSecondsPerPixel_, 0.5 * (passSecondsPerPixel_ + measured));
+    }
+    passAbandoned();
 }
 
 bool TilePlanner::fits(double elapsed, double pixels) const {

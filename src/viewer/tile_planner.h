@@ -29,19 +29,29 @@ class TilePlanner {
 
     // Reports a finished tile of `pixels` that took `seconds` (including the wait for the GPU).
     void record(double pixels, double seconds);
+    // Reports that the tiles recorded since the last call completed a pass over the whole image.
+    void passDone();
+    // Starts over without a pass in progress (accumulation restarted).
+    void passAbandoned() { passPixels_ = passSeconds_ = 0.0; }
     // Whether another tile of `pixels` fits when `elapsed` of this frame's budget is used.
     bool fits(double elapsed, double pixels) const;
 
+    // The recent tiles' cost. Costs differ across an image (a tile of sky is nearly free), so this
+    // follows the region being rendered; it sizes the tiles.
     double secondsPerPixel() const { return secondsPerPixel_; }
     double budgetSeconds() const { return options_.budgetSeconds; }
     // The viewer shrinks the budget when drawing the window itself takes long (large windows).
     void setBudgetSeconds(double seconds) { options_.budgetSeconds = seconds; }
-    // Seconds a full pass over `size` is expected to take.
-    double passSeconds(glm::ivec2 size) const { return secondsPerPixel_ * double(size.x) * double(size.y); }
+    // Seconds a full pass over `size` is expected to take, from the average cost of whole passes.
+    double passSeconds(glm::ivec2 size) const {
+        return passSecondsPerPixel_ * double(size.x) * double(size.y);
+    }
 
   private:
     Options options_;
     double secondsPerPixel_;
+    double passSecondsPerPixel_;
+    double passPixels_ = 0.0, passSeconds_ = 0.0;  // of the pass in progress
 };
 
 }  // namespace fp

@@ -204,6 +204,7 @@ void Session::reloadShadersIfChanged(double t) {
     try {
         renderer_.reloadShaders();  // restarts accumulation, or throws and keeps the running programs
         tile_ = 0;
+        planner_.passAbandoned();
         restartTime_ = now();
         heatFitDue_ = true;
         display_.reloadShaders();
@@ -233,6 +234,7 @@ void Session::restart(const RenderSettings& settings, bool reduced) {
         policy_.restartFailed(lastGood_);
     }
     tile_ = 0;
+    planner_.passAbandoned();
     restartTime_ = now();
     // While moving, keep the heat map's range from the last full-resolution image: a range fitted to
     // every reduced frame would flicker.
@@ -262,7 +264,10 @@ void Session::renderWithinBudget() {
         window_.finish();  // time the work, not the queueing of it
         planner_.record(pixels, now() - tileStart);
         framePaths_ += pixels;
-        if (passDone) tile_ = 0;
+        if (passDone) {
+            tile_ = 0;
+            planner_.passDone();
+        }
         if (targetReached()) break;
         int next = tile_ ? tile_ : planner_.tileSize(size);
         if (!planner_.fits(now() - start, TilePlanner::pixelsPerTile(size, next))) break;

@@ -40,6 +40,25 @@ TEST(TilePlanner, OneSlowTileDoesNotCollapseTheTiles) {
     EXPECT_LE(planner.secondsPerPixel(), 2e-6);
 }
 
+TEST(TilePlanner, PassCostIsTheAverageOverWholePasses) {
+    TilePlanner::Options options;
+    options.initialSecondsPerPixel = 1e-6;
+    TilePlanner planner(options);
+    // Half the image is sky (nearly free), half is geometry (2 us per pixel): 1 us on average.
+    for (int pass = 0; pass < 10; ++pass) {
+        planner.record(1000.0, 0.0);
+        planner.record(1000.0, 2e-3);
+        planner.passDone();
+    }
+    EXPECT_NEAR(planner.passSeconds({100, 20}), 2000.0 * 1.0e-6, 1e-7);
+    // An abandoned pass (a restart) does not count.
+    planner.record(1000.0, 1.0);
+    planner.passAbandoned();
+    planner.record(1000.0, 1e-3);
+    planner.passDone();
+    EXPECT_NEAR(planner.passSeconds({100, 20}), 2000.0 * 1.0e-6, 1e-7);
+}
+
 TEST(TilePlanner, BudgetAndAverageTile) {
     TilePlanner::Options options;
     options.budgetSeconds = 0.03;
