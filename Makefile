@@ -23,6 +23,9 @@ sanitize: deps
 	cmake --build build-asan -j $(JOBS)
 	LP_NUM_THREADS=2 ASAN_OPTIONS=detect_leaks=0 UBSAN_OPTIONS=print_stacktrace=1 \
 		ctest --test-dir build-asan --output-on-failure -j 1
+	@echo "leak check of one render (LeakSanitizer; Mesa's own leaks suppressed in tools/lsan.supp)"
+	LP_NUM_THREADS=2 ASAN_OPTIONS=detect_leaks=1 LSAN_OPTIONS=suppressions=$(CURDIR)/tools/lsan.supp \
+		build-asan/fragpath render --size 16x16 --spp 2 --quiet -o build-asan/leak_check.exr
 
 # libFuzzer on the OBJ/MTL loader and the scene file, FUZZ_SECONDS each (default 60).
 fuzz: deps
