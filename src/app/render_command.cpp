@@ -40,7 +40,8 @@ const char* kRenderUsage =
     "  --spp N               samples per pixel (default: the scene file's, else 64)\n"
     "  --max-depth D         bounces: 0 shows emitters only, 1 direct light, ... (default 5)\n"
     "  --seed S              random seed; the same seed gives the same image bit for bit (default 0)\n"
-    "  --integrator NAME     naive | bsdf | nee (default nee: light sampling with MIS)\n"
+    "  --integrator NAME     naive | bsdf | nee | bdpt (default nee: light sampling with MIS; bdpt:\n"
+    "                        bidirectional path tracing with MIS)\n"
     "  --eye X,Y,Z --target X,Y,Z --up X,Y,Z --fov DEG\n"
     "                        camera (default: the scene file's, else one that frames the scene)\n"
     "  --view NAME           radiance (default) | depth | normal | albedo: what the primary ray through\n"
@@ -48,7 +49,7 @@ const char* kRenderUsage =
     "                        BVH nodes visited and triangles tested (per primary ray), averaged\n"
     "  --exposure STOPS      PNG only: scale by 2^STOPS before tone mapping (default 0)\n"
     "  --tonemap NAME        PNG only: clamp | reinhard | aces (default clamp)\n"
-    "  --samples-per-pass N  samples each pixel takes per draw call (default 1)\n"
+    "  --samples-per-pass N  samples each pixel takes per draw call, 1 to 16 (default 1)\n"
     "  --shader-dir DIR      read shaders from DIR instead of the ones built in\n"
     "  --sample-offset K     render sample indices K, K+1, ... (one part of a render spread over machines;\n"
     "                        combine the parts' .exr files with `fragpath merge`)\n"
@@ -137,7 +138,7 @@ int renderCommand(const std::vector<std::string>& argv) {
     settings.seed = uint32_t(args.integer("--seed", 0, 2147483647).value_or(int(d.seed.value_or(0))));
     settings.integrator = parseIntegrator(args.text("--integrator").value_or(d.integrator.value_or("nee")));
     if (auto v = args.text("--view")) settings.view = parseView(*v);
-    settings.samplesPerPass = args.integer("--samples-per-pass", 1, 4096).value_or(1);
+    settings.samplesPerPass = args.integer("--samples-per-pass", 1, RenderSettings::kMaxSamplesPerPass).value_or(1);
     settings.sampleOffset = uint32_t(args.integer("--sample-offset", 0, 1 << 30).value_or(0));
     std::optional<PartialRender> resumed;
     if (auto r = args.text("--resume")) resumed = readPartial(*r);

@@ -97,7 +97,8 @@ void Renderer::reloadShaders() {
 void Renderer::configure(const RenderSettings& settings, const Camera& camera) {
     if (settings.maxDepth < 0 || (settings.split && settings.split->maxDepth < 0))
         throw Error("max depth must be 0 or more");
-    if (settings.samplesPerPass < 1) throw Error("samples per pass must be 1 or more");
+    if (settings.samplesPerPass < 1 || settings.samplesPerPass > RenderSettings::kMaxSamplesPerPass)
+        throw Error("samples per pass must be between 1 and " + std::to_string(RenderSettings::kMaxSamplesPerPass));
     bool splitChanged = settings.split.has_value() != settings_.split.has_value() ||
                         (settings.split && settings.split->integrator != settings_.split->integrator);
     bool recompile = !program_ || settings.integrator != settings_.integrator || settings.view != settings_.view ||

@@ -8,7 +8,8 @@ Integrator parseIntegrator(const std::string& name) {
     if (name == "naive") return Integrator::Naive;
     if (name == "bsdf") return Integrator::Bsdf;
     if (name == "nee") return Integrator::Nee;
-    throw Error("unknown integrator '" + name + "' (choose naive, bsdf or nee)");
+    if (name == "bdpt") return Integrator::Bdpt;
+    throw Error("unknown integrator '" + name + "' (choose naive, bsdf, nee or bdpt)");
 }
 
 const char* integratorName(Integrator integrator) {
@@ -19,6 +20,8 @@ const char* integratorName(Integrator integrator) {
             return "bsdf";
         case Integrator::Nee:
             return "nee";
+        case Integrator::Bdpt:
+            return "bdpt";
     }
     return "?";
 }

@@ -7,7 +7,7 @@
 namespace fp {
 
 // The estimators, in the order a course would teach them (glsl/integrators/<name>.glsl).
-enum class Integrator { Naive, Bsdf, Nee };
+enum class Integrator { Naive, Bsdf, Nee, Bdpt };
 
 Integrator parseIntegrator(const std::string& name);  // throws fp::Error listing the choices
 const char* integratorName(Integrator integrator);
@@ -37,7 +37,11 @@ struct RenderSettings {
     uint32_t seed = 0;
     Integrator integrator = Integrator::Nee;
     View view = View::Radiance;
-    int samplesPerPass = 1;  // samples each pixel takes in one draw call
+    // Samples each pixel takes in one draw call, at most kMaxSamplesPerPass: llvmpipe stops a shader loop
+    // after a fixed number of iterations (measured: 256 samples of the 32x32 Cornell box in one pass
+    // left some pixels with 157), which could cut a path short; real GPUs have draw-time watchdogs.
+    int samplesPerPass = 1;
+    static constexpr int kMaxSamplesPerPass = 16;
     std::optional<SplitView> split;
     uint32_t sampleOffset = 0;  // the first sample index (to render one range of a larger render)
 };

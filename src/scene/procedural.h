@@ -1,7 +1,10 @@
 #pragma once
 // Scenes made by code rather than read from files: test objects with known answers, and benchmark
 // meshes with exact triangle counts.
+#include <array>
 #include <cstdint>
+#include <string>
+#include <vector>
 
 #include "scene/scene.h"
 
@@ -9,7 +12,53 @@ namespace fp {
 
 // Appends a UV sphere of 2 * segments * (rings - 1) triangles, wound counter-clockwise seen from
 // outside; `smooth` gives vertex normals (the sphere's own), otherwise the flat facet normals.
-void appendSphere(Scene& scene, const glm::vec3& center, float radius, int rings, int segments, uint32_t material,
-                  bool smooth);
+void appendSphere(Scene& scene, const glm::vec3& center, float radius, int rings, int segments,
+                  uint32_t material, bool smooth);
+
+// The benchmark scenes below all stand in one lit room, so that their figures differ only by what is in
+// it: a 2 x 2 x 2 box open towards -z (where the camera looks in from, as for the Cornell box), a
+// white floor, ceiling and back wall, a red wall on the image's left and a green one on its right, and a
+// one-sided emitter just below the ceiling, facing down. Walls, ceiling and emitter are 10 triangles; the
+// floor is 2 or more.
+constexpr int kRoomTriangles = 10;  // without the floor
+
+// How benchmarkSphereScene spends its triangles: sphereTriangles = 2 * segments * (rings - 1), and the
+// floor is split into strips to take up the rest, so that the total is exact.
+struct SphereSceneLayout {
+    int rings = 0, segments = 0;
+    int sphereTriangles = 0, floorTriangles = 0;
+};
+constexpr int kMinSphereSceneTriangles = kRoomTriangles + 2 + 6;  // the smallest sphere: 3 segments, 2 rings
+// Throws fp::Error when `triangles` is below kMinSphereSceneTriangles.
+SphereSceneLayout sphereSceneLayout(int triangles);
+
+// A smooth-shaded UV sphere on the floor of the lit room, with exactly `triangles` triangles in all.
+// The sphere gets as many of them as its rings and segments can take with quads no more than 4:1 in
+// aspect, usually all but 2 (a one-quad floor).
+Scene benchmarkSphereScene(int triangles);
+
+// The worst case for a BVH: exactly `triangles` triangles in all, the lit room with a one-quad floor
+// and triangles - 12 random ones filling its middle. Each has random vertices within 0.12 of a random
+// centre, so their bounds overlap heavily and no split separates them well. The same seed gives the
+// same scene on every machine (the generator is our own, not a standard library distribution).
+constexpr int kMinSoupTriangles = kRoomTriangles + 2 + 1;
+Scene randomTriangleSoup(int triangles, uint32_t seed);
+
+// A mesh given as shared vertex positions and triangles indexing them.
+struct IndexedMesh {
+    std::vector<glm::vec3> positions;
+    std::vector<std::array<uint32_t, 3>> cells;
+};
+
+// Reads a mesh as the npm mesh packages ship it (the `bunny` package, for one): a CommonJS module
+// `exports.positions=[[x,y,z],...]` and `exports.cells=[[i,j,k],...]`, or a JSON object with the keys
+// "positions" and "cells". Only those two arrays are read; the module is never run. Throws fp::Error
+// naming `name` for anything else, or an index out of range.
+IndexedMesh parseMeshModule(const std::string& text, const std::string& name);
+
+// The mesh (y up) standing on the middle of the floor of the lit room, its largest side scaled to 0.6 of
+// the room's: the room with a one-quad floor plus one triangle per cell, except cells of zero area,
+// which are dropped. Throws fp::Error for a mesh without a triangle of non-zero area.
+Scene benchmarkMeshScene(const IndexedMesh& mesh, const std::string& name);
 
 }  // namespace fp

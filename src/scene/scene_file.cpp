@@ -156,8 +156,8 @@ RenderDefaults parseRender(const json& render, Fields& fields) {
             fields.integer(render["seed"], "render.seed", 0, std::numeric_limits<uint32_t>::max()));
     if (render.contains("integrator")) {
         std::string integrator = fields.string(render["integrator"], "render.integrator");
-        if (integrator != "naive" && integrator != "bsdf" && integrator != "nee")
-            fields.fail("render.integrator must be one of naive, bsdf, nee; got '" + integrator + "'");
+        if (integrator != "naive" && integrator != "bsdf" && integrator != "nee" && integrator != "bdpt")
+            fields.fail("render.integrator must be one of naive, bsdf, nee, bdpt; got '" + integrator + "'");
         d.integrator = integrator;
     }
     return d;

@@ -17,7 +17,9 @@ namespace {
 namespace fs = std::filesystem;
 using test::CliRun;
 
-CliRun fragpath(const std::string& args) { return test::runFragpath(args); }
+CliRun fragpath(const std::string& args) {
+    return test::runFragpath(args);
+}
 
 class Bench : public test::TempDirTest {};
 
@@ -81,8 +83,75 @@ TEST_F(Bench, WarnsWhenTheThreadCountIsLeftToLlvmpipe) {
 TEST_F(Bench, HelpListsTheOptions) {
     CliRun r = fragpath("bench --help");
     EXPECT_EQ(r.exitCode, 0);
-    for (const char* flag : {"--size", "--spp", "--runs", "--max-depth", "--integrator", "--json"})
+    for (const char* flag : {"--size", "--spp", "--runs", "--max-depth", "--integrator", "--json", "--suite",
+                             "--max-triangles", "--scenes", "--with-bunny", "256x256 with --suite"})
         EXPECT_NE(r.output.find(flag), std::string::npos) << flag;
+}
+
+// The figures every suite scene must have, each positive and finite.
+void expectSceneFigures(const nlohmann::json& scene) {
+    for (const char* key : {"build_seconds", "sah_cost", "nodes", "depth"}) expectPositive(scene["bvh"], key);
+    for (const char* key : {"bytes", "geometry_bytes", "bytes_per_triangle", "geometry_bytes_per_triangle"})
+        expectPositive(scene["gpu"], key);
+    for (const char* key :
+         {"seconds", "load_seconds", "bvh_and_upload_seconds", "compile_seconds", "first_pass_seconds"})
+        expectPositive(scene["first_frame"], key);
+    const char* perRun[] = {"wall_seconds",        "cpu_seconds",          "cpu_per_wall",
+                            "paths_per_second",    "paths_per_cpu_second", "rays_per_second",
+                            "rays_per_cpu_second", "rays_per_path"};
+    ASSERT_EQ(scene["runs"].size(), 1u);
+    for (const char* key : perRun) {
+        expectPositive(scene["runs"][0], key);
+        for (const char* stat : {"median", "min", "max"}) expectPositive(scene["summary"][key], stat);
+    }
+    const nlohmann::json& others = scene["other_processes_cpu_share"];
+    EXPECT_TRUE(others.is_null() || (others.is_number() && others.get<double>() >= 0.0)) << others;
+}
+
+TEST_F(Bench, SuiteWritesOneJsonObjectPerScene) {
+    std::string file = path("suite.json");
+    CliRun r = fragpath("bench --suite --size 8x8 --spp 1 --runs 1 --max-triangles 2000 --json " + file);
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    for (const char* text : {"== cornell ==", "== sphere-1k ==", "skipping sphere-100k", "suite: 8x8"})
+        EXPECT_NE(r.output.find(text), std::string::npos) << text << " in " << r.output;
+
+    std::ifstream in(file);
+    nlohmann::json j = nlohmann::json::parse(in);
+    EXPECT_NE(j["renderer"].get<std::string>().find("llvmpipe"), std::string::npos);
+    EXPECT_EQ(j["lp_num_threads"], "2");
+    EXPECT_EQ(j["settings"]["width"], 8);
+    EXPECT_EQ(j["settings"]["runs"], 1);
+    expectPositive(j, "context_seconds");
+    // Only the scenes of at most 2000 triangles; the others are listed as skipped, with the reason.
+    ASSERT_EQ(j["scenes"].size(), 2u) << j.dump(1);
+    EXPECT_EQ(j["scenes"][0]["name"], "cornell");
+    EXPECT_EQ(j["scenes"][0]["scene"]["triangles"], 32);
+    EXPECT_EQ(j["scenes"][1]["name"], "sphere-1k");
+    EXPECT_EQ(j["scenes"][1]["scene"]["triangles"], 1000);
+    for (const nlohmann::json& scene : j["scenes"]) {
+        SCOPED_TRACE(scene["name"].get<std::string>());
+        EXPECT_GE(scene["scene"]["emitters"].get<int>(), 1);
+        expectSceneFigures(scene);
+    }
+    ASSERT_EQ(j["skipped"].size(), 3u);
+    for (const nlohmann::json& s : j["skipped"])
+        EXPECT_NE(s["reason"].get<std::string>().find("--max-triangles 2000"), std::string::npos) << s;
+}
+
+TEST_F(Bench, SuiteSkipsTheBunnyWithANoteWithoutNpm) {
+    // No PATH, so no npm: the bunny is skipped and the suite still succeeds.
+    std::string file = path("suite.json");
+    CliRun r = test::runFragpath(
+        "bench --suite --scenes cornell --with-bunny --size 8x8 --spp 1 --runs 1 --json " + file,
+        "LP_NUM_THREADS=2 PATH=/nonexistent");
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_NE(r.output.find("note: skipping bunny: npm is not installed"), std::string::npos) << r.output;
+    std::ifstream in(file);
+    nlohmann::json j = nlohmann::json::parse(in);
+    ASSERT_EQ(j["scenes"].size(), 1u);
+    EXPECT_EQ(j["scenes"][0]["name"], "cornell");
+    ASSERT_EQ(j["skipped"].size(), 1u);
+    EXPECT_EQ(j["skipped"][0]["name"], "bunny");
 }
 
 TEST_F(Bench, BadFlagsAreErrors) {
@@ -94,8 +163,12 @@ TEST_F(Bench, BadFlagsAreErrors) {
          {Case{"--bogus", "unknown option --bogus"}, Case{"--runs", "needs a value"},
           Case{"--runs 0", "--runs"}, Case{"--spp 0", "--spp"}, Case{"--spp many", "--spp"},
           Case{"--size 16", "WIDTHxHEIGHT"}, Case{"--max-depth -1", "--max-depth"},
-          Case{"--integrator magic", "naive, bsdf or nee"}, Case{"a.obj b.obj", "one scene file"},
-          Case{"--json /no/such/dir/b.json", "does not exist"}}) {
+          Case{"--integrator magic", "naive, bsdf, nee or bdpt"}, Case{"a.obj b.obj", "one scene file"},
+          Case{"--json /no/such/dir/b.json", "does not exist"},
+          Case{"--max-triangles 10", "only goes with --suite"},
+          Case{"--with-bunny", "only goes with --suite"}, Case{"--suite a.obj", "takes no scene file"},
+          Case{"--suite --max-triangles 0", "--max-triangles"},
+          Case{"--suite --scenes cornell,teapot", "no suite scene 'teapot'"}}) {
         CliRun r = fragpath(std::string("bench ") + c.args);
         EXPECT_EQ(r.exitCode, 1) << c.args << ": " << r.output;
         EXPECT_NE(r.output.find("fragpath: error: "), std::string::npos) << c.args << ": " << r.output;

@@ -88,7 +88,7 @@ TEST_F(Cli, BadFlagsAreErrors) {
     expectError("render --size 10", "WIDTHxHEIGHT");
     expectError("render --size 0x10", "WIDTHxHEIGHT");
     expectError("render --max-depth -1", "--max-depth");
-    expectError("render --integrator magic", "naive, bsdf or nee");
+    expectError("render --integrator magic", "naive, bsdf, nee or bdpt");
     expectError("render --tonemap sepia", "sepia");
     expectError("render --view xray", "radiance, depth, normal, albedo, bounces, nodes or triangles");
     expectError("render --eye 1,2", "X,Y,Z");

@@ -130,6 +130,12 @@ TEST_F(CornellBox, SamplesPerPassDoesNotChangeTheImage) {
         0);
 }
 
+TEST_F(CornellBox, EveryPixelGetsEverySampleItWasAskedFor) {
+    // Guards the per-pass limit (RenderSettings::kMaxSamplesPerPass): llvmpipe ends long shader loops early.
+    Accumulation acc = render(Integrator::Nee, 96);
+    for (const glm::vec4& s : acc.sum) ASSERT_EQ(s.w, 96.0f);
+}
+
 TEST_F(CornellBox, DepthZeroShowsOnlyTheLightExactly) {
     Accumulation acc = render(Integrator::Nee, 16, 0);
     Image mean = acc.mean();

@@ -1,6 +1,7 @@
 #pragma once
 // Shared pieces of the GPU tests: one OSMesa context per test binary, small analytic scenes, and
 // statistics of accumulated images for tolerances derived from the sample variance.
+#include <algorithm>
 #include <cmath>
 #include <memory>
 
@@ -82,7 +83,7 @@ inline Accumulation renderScene(Renderer& renderer, const Camera& camera, Integr
     s.integrator = integrator;
     s.maxDepth = maxDepth;
     s.seed = seed;
-    s.samplesPerPass = spp;  // one draw: tests want throughput, not progress
+    s.samplesPerPass = std::min(spp, RenderSettings::kMaxSamplesPerPass);  // few draws: throughput, not progress
     renderer.configure(s, camera);
     renderer.render(spp);
     return renderer.readback();

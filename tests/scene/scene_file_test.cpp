@@ -194,7 +194,7 @@ TEST(SceneFile, BadRenderSettings) {
     SceneDir(sceneWith(R"("render": {"width": 3000000000})")).reject("render.width must be in");
     SceneDir(sceneWith(R"("render": {"seed": -1})")).reject("render.seed must be in [0, 4294967295]");
     SceneDir(sceneWith(R"("render": {"seed": 4294967296})")).reject("render.seed must be in");
-    SceneDir(sceneWith(R"("render": {"integrator": "path"})")).reject("naive, bsdf, nee; got 'path'");
+    SceneDir(sceneWith(R"("render": {"integrator": "path"})")).reject("naive, bsdf, nee, bdpt; got 'path'");
 }
 
 TEST(SceneFile, ErrorsBeforeMeshWarnings) {

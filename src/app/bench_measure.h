@@ -1,0 +1,114 @@
+#pragma once
+// The measurement behind `fragpath bench`, shared by the single-scene bench and the suite, so that a
+// figure means the same in both: one renderer per scene, time to first frame by stage, one untimed
+// warm-up run, then R timed runs (run i with seed i) reported as median, min and max.
+#include <chrono>
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "render/renderer.h"
+#include "render/settings.h"
+#include "scene/scene.h"
+
+namespace fp {
+
+class GlContext;
+
+namespace bench {
+
+using Clock = std::chrono::steady_clock;
+
+double secondsSince(Clock::time_point start);
+
+// User plus system time of every thread in the process. llvmpipe rasterises on threads of this process,
+// so this is the CPU the render cost, not just the CPU of the thread that waits in glFinish.
+double processCpuSeconds();
+
+struct Run {
+    uint32_t seed = 0;
+    double wallSeconds = 0, cpuSeconds = 0, paths = 0, rays = 0;
+    double pathsPerSecond() const { return paths / wallSeconds; }
+    double pathsPerCpuSecond() const { return paths / cpuSeconds; }
+    double raysPerSecond() const { return rays / wallSeconds; }
+    double raysPerCpuSecond() const { return rays / cpuSeconds; }
+    double raysPerPath() const { return rays / paths; }
+    // How many CPUs were busy on average: near LP_NUM_THREADS (plus the waiting main thread's share)
+    // when rasterisation scales, near 1 when it does not.
+    double cpuPerWall() const { return cpuSeconds / wallSeconds; }
+};
+
+struct Spread {
+    double median = 0, min = 0, max = 0;
+};
+
+// One measured quantity of a run, with the names it has in the table and in the JSON.
+struct Column {
+    const char* heading;
+    const char* key;
+    const char* format;
+    double (*get)(const Run&);
+};
+const std::vector<Column>& columns();
+
+// The settings every scene of one command is measured with.
+struct BenchSettings {
+    RenderSettings render;  // samplesPerPass stays 1, as `fragpath render` renders by default
+    int spp = 8;            // samples per pixel in each run
+    int runs = 5;           // timed runs after the warm-up
+};
+
+struct SceneMeasurement {
+    std::string source;
+    SceneStats stats;
+    // Stages of the first frame: load (or generate) the scene; build the BVH, pack and upload; compile
+    // and link the GLSL; the first pass, which includes llvmpipe's JIT of the fragment shader.
+    Clock::time_point loadStart, firstPassEnd;
+    double loadSeconds = 0, rendererSeconds = 0, compileSeconds = 0, firstPassSeconds = 0;
+    Run warmUp;
+    std::vector<Run> timed;
+    // The share of all the machine's CPU time that other processes used during the timed runs (from
+    // /proc/stat, less this process's own CPU time); absent where /proc/stat cannot be read.
+    std::optional<double> othersCpuShare;
+
+    Spread summary(const Column& column) const;
+    Spread summary(const std::string& key) const;
+    // From the start of loading to the end of the first pass.
+    double sceneFirstFrameSeconds() const;
+};
+
+// Loads the scene with `load` (timed as the load stage), builds a renderer for it and measures it as
+// the header says. Needs a current GL context.
+SceneMeasurement measureScene(const std::function<Scene()>& load, const BenchSettings& settings);
+
+// What the figures depend on besides the scene: the GL renderer and llvmpipe's settings.
+struct BenchEnvironment {
+    std::string renderer;
+    std::optional<std::string> threads, cacheDisable;  // LP_NUM_THREADS, MESA_SHADER_CACHE_DISABLE
+    std::string threadsText() const;
+    std::string cacheText() const;
+};
+// Reads the environment variables, and warns when LP_NUM_THREADS is unset.
+BenchEnvironment readBenchEnvironment();
+
+// The lines before any scene: renderer, thread count, shader cache, settings.
+void printHeader(const BenchEnvironment& environment, const BenchSettings& settings);
+// One scene's figures: scene, BVH, GPU memory, first frame (`firstFrameSeconds`, broken into stages;
+// `contextSeconds` when the context creation is part of it), warm-up, the run table and its spread.
+void printMeasurement(const SceneMeasurement& m, double firstFrameSeconds,
+                      std::optional<double> contextSeconds);
+
+nlohmann::json environmentJson(const BenchEnvironment& environment);
+nlohmann::json settingsJson(const BenchSettings& settings);
+// The scene, BVH, GPU memory, first frame, warm-up, every run and the summary, as in printMeasurement.
+nlohmann::json measurementJson(const SceneMeasurement& m, double firstFrameSeconds);
+
+// Fails before the benchmark, not after minutes of it, when the JSON cannot be written.
+void checkJsonPath(const std::string& path);
+void writeJson(const std::string& path, const nlohmann::json& j);
+
+}  // namespace bench
+}  // namespace fp
