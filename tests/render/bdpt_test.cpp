@@ -48,22 +48,6 @@ INSTANTIATE_TEST_SUITE_P(Depths, BdptFurnace, ::testing::Values(0, 1, 3),
 
 // ---- comparisons with nee ----
 
-// z-scores of the difference of two independent estimates over blocks of b x b pixels inside `rect`.
-std::vector<float> blockZScores(const Accumulation& a, const Accumulation& b, int block,
-                                const PixelRect& rect) {
-    std::vector<float> z;
-    for (int y = rect.y; y + block <= rect.y + rect.height; y += block)
-        for (int x = rect.x; x + block <= rect.x + rect.width; x += block) {
-            ImageEstimate ea = estimate(a, x, y, block, block), eb = estimate(b, x, y, block, block);
-            for (int c = 0; c < 3; ++c) {
-                float se = std::sqrt(ea.standardError[c] * ea.standardError[c] +
-                                     eb.standardError[c] * eb.standardError[c]);
-                if (se > 0.0f) z.push_back((ea.mean[c] - eb.mean[c]) / se);
-            }
-        }
-    return z;
-}
-
 // The whole-image means agree within 5 standard errors (and the comparison is sharp), and per block no
 // z-score exceeds 5 and their mean square is near 1, as for independent estimates of the same image.
 void expectSameImage(const Accumulation& bdpt, const Accumulation& nee, int block, float sharpness) {
@@ -74,7 +58,7 @@ void expectSameImage(const Accumulation& bdpt, const Accumulation& nee, int bloc
         EXPECT_NEAR(eb.mean[c], en.mean[c], 5.0f * se) << "channel " << c;
         EXPECT_LT(se, sharpness * en.mean[c]) << "the comparison must be sharp enough to mean something";
     }
-    std::vector<float> z = blockZScores(bdpt, nee, block, PixelRect{0, 0, bdpt.width, bdpt.height});
+    std::vector<float> z = blockZScores(bdpt, nee, block);
     ASSERT_GT(z.size(), 100u);
     double meanSquare = 0.0;
     for (float v : z) {

@@ -33,21 +33,6 @@ class CornellBox : public ::testing::Test {
 Scene* CornellBox::scene_ = nullptr;
 Renderer* CornellBox::renderer_ = nullptr;
 
-// z-scores of the difference of two independent estimates over blocks of b x b pixels.
-std::vector<float> blockZScores(const Accumulation& a, const Accumulation& b, int block) {
-    std::vector<float> z;
-    for (int y = 0; y < a.height; y += block)
-        for (int x = 0; x < a.width; x += block) {
-            ImageEstimate ea = estimate(a, x, y, block, block), eb = estimate(b, x, y, block, block);
-            for (int c = 0; c < 3; ++c) {
-                float se = std::sqrt(ea.standardError[c] * ea.standardError[c] +
-                                     eb.standardError[c] * eb.standardError[c]);
-                if (se > 0.0f) z.push_back((ea.mean[c] - eb.mean[c]) / se);
-            }
-        }
-    return z;
-}
-
 void expectSameMean(const Accumulation& a, const Accumulation& b, const char* what) {
     ImageEstimate ea = estimate(a), eb = estimate(b);
     for (int c = 0; c < 3; ++c) {

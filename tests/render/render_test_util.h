@@ -6,6 +6,7 @@
 #include <memory>
 
 #include "gl/context.h"
+#include "image/image_stats.h"
 #include "render/renderer.h"
 #include "scene/scene.h"
 
@@ -74,6 +75,26 @@ inline ImageEstimate estimate(const Accumulation& acc, int x0 = 0, int y0 = 0, i
         }
     double count = double(w) * double(h);
     return {glm::vec3(sum / count), glm::vec3(glm::sqrt(varSum) / count)};
+}
+
+// z-scores of the difference of two independent estimates over blocks of b x b pixels inside `rect`.
+inline std::vector<float> blockZScores(const Accumulation& a, const Accumulation& b, int block,
+                                const PixelRect& rect) {
+    std::vector<float> z;
+    for (int y = rect.y; y + block <= rect.y + rect.height; y += block)
+        for (int x = rect.x; x + block <= rect.x + rect.width; x += block) {
+            ImageEstimate ea = estimate(a, x, y, block, block), eb = estimate(b, x, y, block, block);
+            for (int c = 0; c < 3; ++c) {
+                float se = std::sqrt(ea.standardError[c] * ea.standardError[c] +
+                                     eb.standardError[c] * eb.standardError[c]);
+                if (se > 0.0f) z.push_back((ea.mean[c] - eb.mean[c]) / se);
+            }
+        }
+    return z;
+}
+
+inline std::vector<float> blockZScores(const Accumulation& a, const Accumulation& b, int block) {
+    return blockZScores(a, b, block, PixelRect{0, 0, a.width, a.height});
 }
 
 inline Accumulation renderScene(Renderer& renderer, const Camera& camera, Integrator integrator, int size,
