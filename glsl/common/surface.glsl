@@ -7,6 +7,7 @@ struct Surface {
     vec3 shadingNormal;    // unit, interpolated from the vertices, on the same side
     vec3 tangent, bitangent;  // with shadingNormal, the local shading frame of bsdf.glsl
     MaterialData material;
+    int materialIndex;     // where `material` came from, for code that stores vertices
     float eta;             // n_transmitted / n_incident for a dielectric, as seen from the ray's side
     bool frontFace;        // the ray hit the counter-clockwise side: the side that emits
 };
@@ -21,7 +22,8 @@ Surface surfaceAt(Ray ray, Hit hit) {
     vec3 ns = fetchShadingNormal(hit.triangle, hit.uv);
     s.shadingNormal = dot(ns, s.geometricNormal) < 0.0 ? -ns : ns;
     orthonormalBasis(s.shadingNormal, s.tangent, s.bitangent);
-    s.material = fetchMaterial(tri.material);
+    s.materialIndex = tri.material;
+    s.material = fetchMaterial(s.materialIndex);
     // Front faces face out of a closed glass object: a ray hitting one enters it.
     s.eta = s.frontFace ? s.material.ior : 1.0 / s.material.ior;
     return s;

@@ -178,6 +178,17 @@ float misWeight(int s, int t, float zRevLast, float zRevPrev, float yRevLast, fl
 // Traces the light subpath y0 .. y_{n-1}, n <= min(BDPT_MAX_LIGHT_VERTICES, maxDepth) (a light vertex
 // y_{s-1} is used only with t >= 2, so s <= maxDepth). beta of y_i is the light subpath weight
 // Le(y0 -> y1) G f ... G / p(y0 ... y_i), Veach's alpha^L_i (Veach 1997, section 10.2). Returns n.
+// A dispersive glass fixes the path's wavelength (surface.glsl); its spectral weight is kept apart in
+// gSpectralWeight rather than folded into beta. Returns whether this vertex is dispersive.
+bool meetDispersion(inout Surface s) {
+    if (s.material.cauchyB <= 0.0) return false;
+    bool first = gWavelength == 0.0;
+    vec3 w = vec3(1.0);
+    applyDispersion(s, w);
+    if (first) gSpectralWeight = w;
+    return true;
+}
+
 int traceLightSubpath(int maxDepth) {
     int n = min(BDPT_MAX_LIGHT_VERTICES, maxDepth);
     if (n == 0 || uLightCount == 0) return 0;
@@ -204,15 +215,9 @@ int traceLightSubpath(int maxDepth) {
         Hit hit;
         if (!traceClosest(ray, hit)) break;
         Surface s = surfaceAt(ray, hit);
-        if (s.material.cauchyB > 0.0) {
-            bool first = gWavelength == 0.0;
-            vec3 w = vec3(1.0);
-            applyDispersion(s, w);
-            if (first) gSpectralWeight = w;
-            dispersive = true;
-        }
+        dispersive = meetDispersion(s) || dispersive;
         PathVertex y = PathVertex(s.position, s.geometricNormal, s.shadingNormal, -ray.dir, beta,
-                                  fetchTriangle(hit.triangle).material, s.eta, 0.0, 0.0, false, dispersive);
+                                  s.materialIndex, s.eta, 0.0, 0.0, false, dispersive);
         y.pdfFwd = toArea(pdfDir, gLight[count - 1].p, y);
         storeLightVertex(count, y);
         ++count;
@@ -316,15 +321,8 @@ vec3 radiance(Ray ray) {
             break;
         }
         Surface s = surfaceAt(ray, hit);
-        if (s.material.cauchyB > 0.0) {
-            bool first = gWavelength == 0.0;
-            vec3 w = vec3(1.0);
-            applyDispersion(s, w);
-            if (first) gSpectralWeight = w;
-            dispersive = true;
-        }
-        TriangleData tri = fetchTriangle(hit.triangle);
-        PathVertex z = PathVertex(s.position, s.geometricNormal, s.shadingNormal, -ray.dir, beta, tri.material,
+        dispersive = meetDispersion(s) || dispersive;
+        PathVertex z = PathVertex(s.position, s.geometricNormal, s.shadingNormal, -ray.dir, beta, s.materialIndex,
                                   s.eta, 1.0, 0.0, false, dispersive);
         if (t >= 3) z.pdfFwd = toArea(pdfDir, gCamera[t - 2].p, z);
         storeCameraVertex(t - 1, z);
@@ -332,6 +330,7 @@ vec3 radiance(Ray ray) {
         // s = 0: the camera subpath hit an emitter.
         vec3 Le = emittedRadiance(s);
         if (Le != vec3(0.0)) {
+            TriangleData tri = fetchTriangle(hit.triangle);
             float area = 0.5 * length(cross(tri.e1, tri.e2));
             float zRevPrev = t >= 4 ? toArea(dot(s.geometricNormal, z.wo) / PI, z.p, gCamera[t - 2]) : 0.0;
             L += beta * Le * misWeight(0, t, tri.lightPmf / area, zRevPrev, 0.0, 0.0, 0.0) * spectralFactor(dispersive);

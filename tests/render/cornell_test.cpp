@@ -13,25 +13,12 @@ namespace {
 const int kSize = 32;
 const int kDepth = 4;
 
-class CornellBox : public ::testing::Test {
+class CornellBox : public CornellBoxSuite {
   protected:
-    static void SetUpTestSuite() {
-        ensureGlContext();
-        scene_ = new Scene(builtinCornellBox());
-        renderer_ = new Renderer(*scene_);
-    }
-    static void TearDownTestSuite() {
-        delete renderer_;
-        delete scene_;
-    }
     static Accumulation render(Integrator integrator, int spp, int depth = kDepth, uint32_t seed = 1) {
         return renderScene(*renderer_, *scene_->camera, integrator, kSize, spp, depth, seed);
     }
-    static Scene* scene_;
-    static Renderer* renderer_;
 };
-Scene* CornellBox::scene_ = nullptr;
-Renderer* CornellBox::renderer_ = nullptr;
 
 void expectSameMean(const Accumulation& a, const Accumulation& b, const char* what) {
     ImageEstimate ea = estimate(a), eb = estimate(b);

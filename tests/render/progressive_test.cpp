@@ -10,17 +10,8 @@
 namespace fp::test {
 namespace {
 
-class Progressive : public ::testing::Test {
+class Progressive : public CornellBoxSuite {
   protected:
-    static void SetUpTestSuite() {
-        ensureGlContext();
-        scene_ = new Scene(builtinCornellBox());
-        renderer_ = new Renderer(*scene_);
-    }
-    static void TearDownTestSuite() {
-        delete renderer_;
-        delete scene_;
-    }
     static RenderSettings settings() {
         RenderSettings s;
         s.width = 37;  // not a multiple of the tile size: partial tiles at the edges
@@ -34,11 +25,7 @@ class Progressive : public ::testing::Test {
         renderer_->render(spp);
         return renderer_->readback();
     }
-    static Scene* scene_;
-    static Renderer* renderer_;
 };
-Scene* Progressive::scene_ = nullptr;
-Renderer* Progressive::renderer_ = nullptr;
 
 bool sameSums(const Accumulation& a, const Accumulation& b) {
     return a.sum.size() == b.sum.size() &&

@@ -4,10 +4,12 @@
 #include <algorithm>
 #include <cmath>
 #include <memory>
+#include <vector>
 
 #include "gl/context.h"
 #include "image/image_stats.h"
 #include "render/renderer.h"
+#include "scene/builtin_scene.h"
 #include "scene/scene.h"
 
 namespace fp::test {
@@ -79,7 +81,7 @@ inline ImageEstimate estimate(const Accumulation& acc, int x0 = 0, int y0 = 0, i
 
 // z-scores of the difference of two independent estimates over blocks of b x b pixels inside `rect`.
 inline std::vector<float> blockZScores(const Accumulation& a, const Accumulation& b, int block,
-                                const PixelRect& rect) {
+                                       const PixelRect& rect) {
     std::vector<float> z;
     for (int y = rect.y; y + block <= rect.y + rect.height; y += block)
         for (int x = rect.x; x + block <= rect.x + rect.width; x += block) {
@@ -97,6 +99,53 @@ inline std::vector<float> blockZScores(const Accumulation& a, const Accumulation
     return blockZScores(a, b, block, PixelRect{0, 0, a.width, a.height});
 }
 
+// A test suite sharing one renderer of the built-in Cornell box (BVH build and shader compile once).
+class CornellBoxSuite : public ::testing::Test {
+  protected:
+    static void SetUpTestSuite() {
+        ensureGlContext();
+        scene_ = std::make_unique<Scene>(builtinCornellBox());
+        renderer_ = std::make_unique<Renderer>(*scene_);
+    }
+    static void TearDownTestSuite() {
+        renderer_.reset();
+        scene_.reset();
+    }
+    static inline std::unique_ptr<Scene> scene_;
+    static inline std::unique_ptr<Renderer> renderer_;
+};
+
+// An 8-bit RGBA framebuffer for the display pass to draw into, bound while it lives; read() gives its
+// pixels, rows bottom first as GL stores them.
+class Rgba8Target {
+  public:
+    Rgba8Target(int width, int height) : width_(width), height_(height) {
+        glGenTextures(1, &texture_);
+        glBindTexture(GL_TEXTURE_2D, texture_);
+        glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, width, height, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
+        glGenFramebuffers(1, &framebuffer_);
+        glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_);
+        glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, texture_, 0);
+    }
+    ~Rgba8Target() {
+        glBindFramebuffer(GL_FRAMEBUFFER, 0);
+        glDeleteFramebuffers(1, &framebuffer_);
+        glDeleteTextures(1, &texture_);
+    }
+    Rgba8Target(const Rgba8Target&) = delete;
+    Rgba8Target& operator=(const Rgba8Target&) = delete;
+    std::vector<uint8_t> read() const {
+        std::vector<uint8_t> pixels(size_t(width_) * size_t(height_) * 4);
+        glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_);
+        glReadPixels(0, 0, width_, height_, GL_RGBA, GL_UNSIGNED_BYTE, pixels.data());
+        return pixels;
+    }
+
+  private:
+    int width_, height_;
+    GLuint texture_ = 0, framebuffer_ = 0;
+};
+
 inline Accumulation renderScene(Renderer& renderer, const Camera& camera, Integrator integrator, int size,
                                 int spp, int maxDepth, uint32_t seed = 1) {
     RenderSettings s;
@@ -104,7 +153,8 @@ inline Accumulation renderScene(Renderer& renderer, const Camera& camera, Integr
     s.integrator = integrator;
     s.maxDepth = maxDepth;
     s.seed = seed;
-    s.samplesPerPass = std::min(spp, RenderSettings::kMaxSamplesPerPass);  // few draws: throughput, not progress
+    s.samplesPerPass =
+        std::min(spp, RenderSettings::kMaxSamplesPerPass);  // few draws: throughput, not progress
     renderer.configure(s, camera);
     renderer.render(spp);
     return renderer.readback();

@@ -69,24 +69,18 @@ TEST(DisplayPass, MatchesThePngWriter) {
             linear.at(x, h - 1 - y) = v;  // Image rows are top first; GL rows bottom first
             sums[size_t(y) * w + size_t(x)] = glm::vec4(v * samples, samples);
         }
-    GLuint texture, target, framebuffer;
+    GLuint texture;
     glGenTextures(1, &texture);
     glBindTexture(GL_TEXTURE_2D, texture);
     glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA32F, w, h, 0, GL_RGBA, GL_FLOAT, sums.data());
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);  // complete without mipmaps
-    glGenTextures(1, &target);
-    glBindTexture(GL_TEXTURE_2D, target);
-    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, w, h, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
-    glGenFramebuffers(1, &framebuffer);
-    glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
-    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, target, 0);
+    Rgba8Target target(w, h);
     Display display;
     for (ToneMap toneMap : {ToneMap::Clamp, ToneMap::Reinhard, ToneMap::Aces}) {
         DisplayOptions options;
         options.tone = {0.5f, toneMap};
         display.draw(texture, w, h, options);
-        std::vector<uint8_t> gpu(size_t(w) * h * 4);
-        glReadPixels(0, 0, w, h, GL_RGBA, GL_UNSIGNED_BYTE, gpu.data());
+        std::vector<uint8_t> gpu = target.read();
         std::vector<uint8_t> cpu = toDisplay8(linear, options.tone);  // RGB, top row first
         for (int y = 0; y < h; ++y)
             for (int x = 0; x < w; ++x)
@@ -96,8 +90,6 @@ TEST(DisplayPass, MatchesThePngWriter) {
                     EXPECT_NEAR(g, e, 1) << "tone map " << int(toneMap) << " pixel " << x << "," << y;
                 }
     }
-    glDeleteFramebuffers(1, &framebuffer);
-    glDeleteTextures(1, &target);
     glDeleteTextures(1, &texture);
 }
 

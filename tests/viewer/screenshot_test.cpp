@@ -8,6 +8,7 @@
 #include <filesystem>
 
 #include "gl/context.h"
+#include "render/render_test_util.h"
 #include "render/renderer.h"
 #include "scene/builtin_scene.h"
 
@@ -15,7 +16,7 @@ namespace fp {
 namespace {
 
 TEST(Screenshot, CountViewPngMatchesTheDisplayPass) {
-    static std::unique_ptr<GlContext> context = createOsMesaContext();
+    test::ensureGlContext();
     Scene scene = builtinCornellBox();
     Renderer renderer(scene);
     RenderSettings settings;
@@ -29,20 +30,13 @@ TEST(Screenshot, CountViewPngMatchesTheDisplayPass) {
     DisplayOptions options;
     options.heatMax = 9.0f;  // some pixels above it: the clamp is covered too
     const int w = settings.width, h = settings.height;
-    GLuint target = 0, framebuffer = 0;
-    glGenTextures(1, &target);
-    glBindTexture(GL_TEXTURE_2D, target);
-    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, w, h, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
-    glGenFramebuffers(1, &framebuffer);
-    glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
-    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, target, 0);
-    Display display;
-    display.draw(renderer.sumTexture(), w, h, options);
-    std::vector<unsigned char> gpu(size_t(w) * h * 4);
-    glReadPixels(0, 0, w, h, GL_RGBA, GL_UNSIGNED_BYTE, gpu.data());
-    glBindFramebuffer(GL_FRAMEBUFFER, 0);
-    glDeleteFramebuffers(1, &framebuffer);
-    glDeleteTextures(1, &target);
+    std::vector<unsigned char> gpu;
+    {
+        test::Rgba8Target target(w, h);
+        Display display;
+        display.draw(renderer.sumTexture(), w, h, options);
+        gpu = target.read();
+    }
 
     std::string path =
         (std::filesystem::temp_directory_path() / ("fragpath_heat_" + std::to_string(getpid()) + ".png"))
