@@ -5,10 +5,8 @@
 namespace fp {
 
 Integrator parseIntegrator(const std::string& name) {
-    if (name == "naive") return Integrator::Naive;
-    if (name == "bsdf") return Integrator::Bsdf;
-    if (name == "nee") return Integrator::Nee;
-    if (name == "bdpt") return Integrator::Bdpt;
+    for (Integrator i : kAllIntegrators)
+        if (name == integratorName(i)) return i;
     throw Error("unknown integrator '" + name + "' (choose naive, bsdf, nee or bdpt)");
 }
 
@@ -29,18 +27,26 @@ const char* integratorName(Integrator integrator) {
 View parseView(const std::string& name) {
     for (View v : kAllViews)
         if (name == viewName(v)) return v;
-    throw Error("unknown view '" + name + "' (choose radiance, depth, normal, albedo, bounces, nodes or triangles)");
+    throw Error("unknown view '" + name +
+                "' (choose radiance, depth, normal, albedo, bounces, nodes or triangles)");
 }
 
 const char* viewName(View view) {
     switch (view) {
-        case View::Radiance: return "radiance";
-        case View::Depth: return "depth";
-        case View::Normal: return "normal";
-        case View::Albedo: return "albedo";
-        case View::Bounces: return "bounces";
-        case View::Nodes: return "nodes";
-        case View::Triangles: return "triangles";
+        case View::Radiance:
+            return "radiance";
+        case View::Depth:
+            return "depth";
+        case View::Normal:
+            return "normal";
+        case View::Albedo:
+            return "albedo";
+        case View::Bounces:
+            return "bounces";
+        case View::Nodes:
+            return "nodes";
+        case View::Triangles:
+            return "triangles";
     }
     return "?";
 }

@@ -16,7 +16,8 @@
 //                        turn about world up); pitch > 0 raises the eye, so the camera looks down more.
 //     pan(dx, dy):       dx > 0 moves the camera along `right` (the scene slides left on screen);
 //                        dy > 0 moves it along `imageUp` (the scene slides down on screen).
-//     dolly(amount):     amount > 0 moves the eye toward the target (zoom in); one wheel notch = 1.
+//     dolly(amount):     amount > 0 moves the eye toward the target (zoom in); CameraInput
+//                        maps one wheel notch to kDollyPerNotch (camera_input.h).
 //     fly(v):            v = (along right, along imageUp, along forward) in world units.
 //     look(yaw, pitch):  yaw > 0 turns the view to the right; pitch > 0 tilts it up.
 // Screen coordinates usually grow downward, so a viewer passes e.g. pan(-dxPixels / height,

@@ -26,7 +26,6 @@ const char* const kViewerControlsHelp =
 
 namespace {
 
-const char* const kIntegrators[] = {"naive", "bsdf", "nee", "bdpt"};
 const char* const kToneMaps[] = {"clamp", "reinhard", "aces"};
 const float kScales[] = {1.0f, 0.5f, 0.25f, 0.125f};
 const char* const kScaleNames[] = {"full", "1/2", "1/4", "1/8"};
@@ -46,10 +45,16 @@ const char* countUnit(View view) {
 }
 
 bool integratorCombo(const char* label, Integrator& integrator) {
-    int index = int(integrator);
-    if (!ImGui::Combo(label, &index, kIntegrators, int(std::size(kIntegrators)))) return false;
-    integrator = Integrator(index);
-    return true;
+    bool changed = false;
+    if (!ImGui::BeginCombo(label, integratorName(integrator))) return false;
+    for (Integrator choice : kAllIntegrators) {
+        if (ImGui::Selectable(integratorName(choice), choice == integrator) && choice != integrator) {
+            integrator = choice;
+            changed = true;
+        }
+    }
+    ImGui::EndCombo();
+    return changed;
 }
 
 void depthSlider(const char* label, int& depth) {
