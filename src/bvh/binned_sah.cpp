@@ -29,11 +29,6 @@ constexpr uint32_t kJobsPerThread = 16;
 // Large nodes are binned and bounded in chunks of this many primitives, one thread job each.
 constexpr uint32_t kChunk = 16384;
 
-int threadsFor(const BvhBuildOptions& options) {
-    if (options.threadCount > 0) return options.threadCount;
-    return int(std::max(1u, std::thread::hardware_concurrency()));
-}
-
 struct Range {
     uint32_t begin, end;
 };
@@ -108,8 +103,8 @@ class ParallelBuild {
         const size_t binsPerSet = 3 * size_t(binCount);
         std::vector<Bin> chunkBins(chunks.size() * binsPerSet);
         parallelFor(threads_, chunks.size(), [&](size_t c) {
-            detail::binRange(refs_.data(), chunks[c].begin, chunks[c].end, mappings[binnedNode[chunks[c].range]],
-                             &chunkBins[c * binsPerSet], binCount);
+            detail::binRange(refs_.data(), chunks[c].begin, chunks[c].end,
+                             mappings[binnedNode[chunks[c].range]], &chunkBins[c * binsPerSet], binCount);
         });
         std::vector<PlaneChoice> choices(level.size());
         for (size_t c = 0; c < chunks.size(); ++c) {
@@ -123,8 +118,9 @@ class ParallelBuild {
         std::vector<uint32_t> mids(level.size());
         parallelFor(threads_, level.size(), [&](size_t i) {
             const Range r = top_[level[i]].range;
-            mids[i] = choices[i].axis < 0 ? r.begin
-                                          : detail::partition(refs_.data(), r.begin, r.end, mappings[i], choices[i]);
+            mids[i] = choices[i].axis < 0
+                          ? r.begin
+                          : detail::partition(refs_.data(), r.begin, r.end, mappings[i], choices[i]);
         });
 
         std::vector<uint32_t> next;
@@ -223,13 +219,18 @@ class ParallelBuild {
 
 }  // namespace
 
+int buildThreadCount(const BvhBuildOptions& options) {
+    if (options.threadCount > 0) return options.threadCount;
+    return int(std::max(1u, std::thread::hardware_concurrency()));
+}
+
 Bvh buildBinnedSah(const std::vector<Aabb>& primBounds, const BvhBuildOptions& options) {
     detail::validateOptions(options, primBounds.size());  // before binCount sizes anything
     Bvh bvh;
     if (primBounds.empty()) return bvh;
     std::vector<PrimRef> refs = detail::makePrimRefs(primBounds);
     const auto n = uint32_t(refs.size());
-    const int threads = threadsFor(options);
+    const int threads = buildThreadCount(options);
     const uint32_t subtreeLimit = std::max(kMinSubtree, n / (uint32_t(threads) * kJobsPerThread));
     if (threads > 1 && n > subtreeLimit) return ParallelBuild(refs, options, threads).build(subtreeLimit);
 

@@ -74,7 +74,8 @@ class BinnedSah {
     uint32_t operator()(PrimRef* refs, uint32_t begin, uint32_t end, const RangeBounds& rb);
 
   private:
-    uint32_t splitPair(PrimRef* refs, uint32_t begin, const RangeBounds& rb, const NodeMapping& mapping) const;
+    uint32_t splitPair(PrimRef* refs, uint32_t begin, const RangeBounds& rb,
+                       const NodeMapping& mapping) const;
 
     const BvhBuildOptions& options_;
     int binCount_;

@@ -85,7 +85,8 @@ inline void validateOptions(const BvhBuildOptions& options, size_t primCount) {
     if (options.binCount < 2) throw std::invalid_argument("BvhBuildOptions::binCount must be at least 2");
     if (options.maxLeafSize < 1)
         throw std::invalid_argument("BvhBuildOptions::maxLeafSize must be at least 1");
-    if (options.threadCount < 0) throw std::invalid_argument("BvhBuildOptions::threadCount must not be negative");
+    if (options.threadCount < 0)
+        throw std::invalid_argument("BvhBuildOptions::threadCount must not be negative");
     // Node indices (up to 2n - 1) must fit the 32-bit node fields.
     if (primCount > std::numeric_limits<uint32_t>::max() / 2)
         throw std::length_error("too many primitives for a 32-bit BVH");
@@ -94,7 +95,8 @@ inline void validateOptions(const BvhBuildOptions& options, size_t primCount) {
 // The SAH builders' leaf rule. `bracketCost` is A_L N_L + A_R N_R of the best split found; the split's
 // SAH cost is traversalCost + intersectCost * bracketCost / A (MacDonald & Booth 1990), a leaf's is
 // intersectCost * count. A leaf is chosen when it is strictly cheaper and allowed (count <= maxLeafSize).
-inline bool preferLeaf(float bracketCost, uint32_t count, const RangeBounds& rb, const BvhBuildOptions& options) {
+inline bool preferLeaf(float bracketCost, uint32_t count, const RangeBounds& rb,
+                       const BvhBuildOptions& options) {
     const float area = rb.bounds.area();
     const float splitCost =
         options.traversalCost + options.intersectCost * (area > 0.0f ? bracketCost / area : 0.0f);

@@ -44,6 +44,8 @@ struct BvhBuildOptions {
 // is split at the lowest-cost of the binCount - 1 planes per axis between equal-width bins over its
 // centroid bounds, or made a leaf when that is strictly cheaper and it holds at most maxLeafSize.
 Bvh buildBinnedSah(const std::vector<Aabb>& primBounds, const BvhBuildOptions& options = {});
+// The threads buildBinnedSah may use with these options (threadCount, or the hardware's if 0).
+int buildThreadCount(const BvhBuildOptions& options);
 // Full-sweep SAH: the quality reference for the binned builder (O(n log n) per level; not for rendering).
 // Each node is split at the lowest-cost of all planes between consecutive distinct centroids along each
 // axis (centroids sorted per axis), with the binned builder's costs and leaf rule; binCount is not used.

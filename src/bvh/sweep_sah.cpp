@@ -39,7 +39,8 @@ class SweepSahSplitter {
                 rightArea_[i] = acc.area();
             }
             acc = LaneBox{};
-            for (uint32_t left = 1; left < n; ++left) {  // the plane between sorted[left - 1] and sorted[left]
+            for (uint32_t left = 1; left < n;
+                 ++left) {  // the plane between sorted[left - 1] and sorted[left]
                 acc.grow(sorted[left - 1].lo, sorted[left - 1].hi);
                 if (!(key(sorted[left - 1]) < key(sorted[left]))) continue;  // equal centroids: no plane
                 const float cost = acc.area() * float(left) + rightArea_[left] * float(n - left);

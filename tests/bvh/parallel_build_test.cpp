@@ -48,12 +48,9 @@ std::vector<test::NamedMesh> largeMeshes() {
     test::Mesh zeros = test::randomSoup(12000, 31);
     for (size_t i = 0; i < zeros.size(); ++i) zeros[i].p0.y = i % 2 ? 0.0f : -0.0f;
     return {
-        {"randomSoup", test::randomSoup(30000, 21)},
-        {"uneven", test::unevenDensity(20000, 500, 22)},
-        {"coincidentGrid", test::coincidentGrid(40, 4)},
-        {"slivers", test::sliverSoup(10000, 23)},
-        {"identical", test::identicalTriangles(10000)},
-        {"signedZeros", zeros},
+        {"randomSoup", test::randomSoup(30000, 21)},     {"uneven", test::unevenDensity(20000, 500, 22)},
+        {"coincidentGrid", test::coincidentGrid(40, 4)}, {"slivers", test::sliverSoup(10000, 23)},
+        {"identical", test::identicalTriangles(10000)},  {"signedZeros", zeros},
     };
 }
 
@@ -66,7 +63,8 @@ TEST(ParallelBuild, SameTreeForAnyThreadCount) {
         ASSERT_TRUE(test::checkStructure(one, bounds, options)) << m.name;
         for (int threads : {2, 3, 8}) {
             options.threadCount = threads;
-            EXPECT_TRUE(sameBits(buildBinnedSah(bounds, options), one)) << m.name << ", " << threads << " threads";
+            EXPECT_TRUE(sameBits(buildBinnedSah(bounds, options), one))
+                << m.name << ", " << threads << " threads";
         }
     }
 }
@@ -88,9 +86,9 @@ TEST(ParallelBuild, SameTreeAsTheSingleThreadedBuilderItReplaced) {
     // Digests of the trees that buildBinnedSah built at commit a330d72, before it had threads. The meshes
     // use only mt19937 and sqrt, so they are the same on every platform.
     const std::vector<std::pair<std::string, uint64_t>> before = {
-        {"randomSoup", 0xe8e486d17daddcc9ull}, {"uneven", 0x27f6055109b7c39bull},
+        {"randomSoup", 0xe8e486d17daddcc9ull},     {"uneven", 0x27f6055109b7c39bull},
         {"coincidentGrid", 0x4cd41d5bb8900a17ull}, {"slivers", 0x5565ef3bfb9be07dull},
-        {"identical", 0xc950a21b1a67b9fdull}, {"signedZeros", 0x85d69e9c6af2fa0dull},
+        {"identical", 0xc950a21b1a67b9fdull},      {"signedZeros", 0x85d69e9c6af2fa0dull},
     };
     const std::vector<test::NamedMesh> meshes = largeMeshes();
     ASSERT_EQ(meshes.size(), before.size());

@@ -58,14 +58,16 @@ TEST(SahQuality, BinnedWithinTwoPercentOfSweepOnSlivers) {
 // sweep, and a sphere or a soup inside the benchmark room 3 to 20 % more; more bins do not close the gap
 // in the room. Run with --gtest_also_run_disabled_tests to see the figures.
 TEST(SahQuality, DISABLED_BinnedWithinTwoPercentOfSweepOnRoomScenes) {
-    for (const Scene& scene : {builtinCornellBox(), benchmarkSphereScene(20000), randomTriangleSoup(20000, 1)}) {
+    for (const Scene& scene :
+         {builtinCornellBox(), benchmarkSphereScene(20000), randomTriangleSoup(20000, 1)}) {
         SCOPED_TRACE(scene.triangles.size());
         expectBinnedNearSweep(sahCosts(sceneBounds(scene)));
     }
 }
 
 TEST(SahQuality, SweepAndBinnedBeatMedianOnBenchmarkRoomScenes) {
-    for (const Scene& scene : {builtinCornellBox(), benchmarkSphereScene(20000), randomTriangleSoup(20000, 1)}) {
+    for (const Scene& scene :
+         {builtinCornellBox(), benchmarkSphereScene(20000), randomTriangleSoup(20000, 1)}) {
         SCOPED_TRACE(scene.triangles.size());
         Costs c = sahCosts(sceneBounds(scene));
         EXPECT_LT(c.sweep, c.median);
@@ -119,7 +121,8 @@ TEST(SahQuality, SweepFindsTheBestSinglePlaneOfASmallNode) {
             return bounds[a].center()[axis] < bounds[b].center()[axis];
         });
         for (size_t cut = 1; cut < order.size(); ++cut) {
-            const std::vector<uint32_t> l(order.begin(), order.begin() + cut), r(order.begin() + cut, order.end());
+            const std::vector<uint32_t> l(order.begin(), order.begin() + cut),
+                r(order.begin() + cut, order.end());
             EXPECT_LE(chosen, bracket(l, r) * (1.0f + 1e-5f)) << "axis " << axis << " cut " << cut;
         }
     }
