@@ -219,7 +219,7 @@ void printMeasurement(const SceneMeasurement& m, double firstFrameSeconds,
     std::printf("scene            %s: %u triangles (%u emissive)\n", m.source.c_str(), stats.triangles,
                 stats.emitters);
     std::printf(
-        "bvh              %u nodes, depth %u, SAH cost %.3f, built in %.3g s (%.3g CPU-s, %d threads): "
+        "bvh              %u nodes, depth %u, SAH cost %.3f, built in %.3g s (%.3g CPU-s, threads %d): "
         "%.3g triangles/s\n",
         stats.bvh.nodeCount, stats.bvh.maxDepth, stats.bvh.sahCost, stats.bvhBuildSeconds,
         stats.bvhBuildCpuSeconds, stats.bvhBuildThreads, stats.triangles / stats.bvhBuildSeconds);

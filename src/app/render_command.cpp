@@ -210,7 +210,7 @@ int renderCommand(const std::vector<std::string>& argv) {
             "bvh              %u nodes, %u leaves, depth %u, leaf size %u..%u (mean %.2f), SAH cost %.2f\n",
             s.bvh.nodeCount, s.bvh.leafCount, s.bvh.maxDepth, s.bvh.minLeafSize, s.bvh.maxLeafSize,
             s.bvh.meanLeafSize, s.bvh.sahCost);
-        std::printf("bvh build        %.3f s, %.3f CPU-s on %d threads (%.3g triangles/s)\n",
+        std::printf("bvh build        %.3f s, %.3f CPU-s, threads %d (%.3g triangles/s)\n",
                     s.bvhBuildSeconds, s.bvhBuildCpuSeconds, s.bvhBuildThreads,
                     s.bvhBuildSeconds > 0 ? s.triangles / s.bvhBuildSeconds : 0.0);
         std::printf("gpu memory       %zu bytes (%.1f per triangle; positions + BVH %.1f per triangle)\n",
