@@ -27,22 +27,30 @@ uint32_t partition(PrimRef* refs, uint32_t begin, uint32_t end, const NodeMappin
 NodeMapping::NodeMapping(const RangeBounds& rb, int binCount) {
     for (int a = 0; a < 3; ++a) {
         const float extent = rb.centroids.hi[a] - rb.centroids.lo[a];
-        const float scale = float(binCount) / extent;
+        const float binsPerUnit = float(binCount) / extent;
         axis[a].origin = rb.centroids.lo[a];
         // Skips flat axes, and extents so small that the scale overflows.
-        axis[a].scale = extent > 0.0f && std::isfinite(scale) ? scale : 0.0f;
+        axis[a].scale = extent > 0.0f && std::isfinite(binsPerUnit) ? binsPerUnit : 0.0f;
         axis[a].lastBin = binCount - 1;
+        origin[a] = axis[a].origin;
+        scale[a] = axis[a].scale;
+        lastBin[a] = float(axis[a].lastBin);
     }
+    origin[3] = scale[3] = lastBin[3] = 0.0f;
 }
 
 void binRange(const PrimRef* refs, uint32_t begin, uint32_t end, const NodeMapping& mapping, Bin* bins,
               int binCount) {
+    typedef int32_t Ints __attribute__((vector_size(16)));
     for (uint32_t i = begin; i < end; ++i) {
-        const glm::vec3 c = refs[i].centroid2();
+        const PrimRef& r = refs[i];
+        // BinMapping::operator() on all lanes at once, with the same operations in the same order. The
+        // fourth lane (index bits) has scale 0, so it maps to bin 0, or is clamped like a NaN; unread.
+        const Lanes f = (r.lo + r.hi - mapping.origin) * mapping.scale;
+        const Ints k = __builtin_convertvector(f < mapping.lastBin ? f : mapping.lastBin, Ints);
         for (int axis = 0; axis < 3; ++axis) {
-            const int k = mapping.axis[axis](c[axis]);
-            Bin& bin = bins[size_t(axis) * binCount + k];
-            bin.bounds.grow(refs[i].lo, refs[i].hi);
+            Bin& bin = bins[axis * binCount + k[axis]];
+            bin.bounds.grow(r.lo, r.hi);
             ++bin.count;
         }
     }

@@ -33,6 +33,7 @@ struct BinMapping {
 // The bin index of a node's primitives along each axis.
 struct NodeMapping {
     BinMapping axis[3];
+    Lanes origin, scale, lastBin;  // the same, lane by lane, to map all three axes at once
 
     NodeMapping(const RangeBounds& rb, int binCount);
     // Centroids coincide: no plane separates them.

@@ -70,15 +70,15 @@ struct RangeBounds {
     Aabb centroids;
 };
 
+// Lane-wise, with the operand order of Aabb::grow, so the same bits as growing Aabbs one by one.
 inline RangeBounds rangeBounds(const PrimRef* refs, uint32_t begin, uint32_t end) {
-    LaneBox bounds;
-    RangeBounds rb;
+    LaneBox bounds, centroids;
     for (uint32_t i = begin; i < end; ++i) {
         bounds.grow(refs[i].lo, refs[i].hi);
-        rb.centroids.grow(refs[i].centroid2());
+        const Lanes c = refs[i].lo + refs[i].hi;  // the lanes of centroid2()
+        centroids.grow(c, c);
     }
-    rb.bounds = bounds.aabb();
-    return rb;
+    return {bounds.aabb(), centroids.aabb()};
 }
 
 inline void validateOptions(const BvhBuildOptions& options, size_t primCount) {
