@@ -45,8 +45,8 @@ void binRange(const PrimRef* refs, uint32_t begin, uint32_t end, const NodeMappi
     for (uint32_t i = begin; i < end; ++i) {
         const PrimRef& r = refs[i];
         // BinMapping::operator() on all lanes at once, with the same operations in the same order. The
-        // fourth lane (index bits) has scale 0, so it maps to bin 0, or is clamped like a NaN; unread.
-        const Lanes f = (r.lo + r.hi - mapping.origin) * mapping.scale;
+        // fourth lane is 0 and maps to bin 0, unread.
+        const Lanes f = (r.centroid2Lanes() - mapping.origin) * mapping.scale;
         const Ints k = __builtin_convertvector(f < mapping.lastBin ? f : mapping.lastBin, Ints);
         for (int axis = 0; axis < 3; ++axis) {
             Bin& bin = bins[axis * binCount + k[axis]];
