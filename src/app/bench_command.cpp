@@ -46,6 +46,7 @@ const char* kBenchUsage =
     "  --runs R              timed runs after the warm-up (default 5; 3 with --suite)\n"
     "  --max-depth D         bounces (default 5)\n"
     "  --integrator NAME     naive | bsdf | nee | bdpt (default nee)\n"
+    "  --bvh-threads N       threads that build the BVH (default: every CPU); the tree is the same\n"
     "  --json FILE           also write every figure to FILE as JSON (with --suite: one object per scene)\n"
     "  --suite               measure the benchmark suite instead of one scene\n"
     "  --max-triangles N     with --suite: skip the scenes with more than N triangles\n"
@@ -113,10 +114,10 @@ int benchCommand(const std::vector<std::string>& argv) {
     // Time to first frame counts from here: argument parsing is negligible, and everything a user waits
     // for before the first pixel (context, load, BVH, upload, compile, JIT, first pass) comes after.
     auto start = bench::Clock::now();
-    Args args(
-        argv,
-        {"--size", "--spp", "--runs", "--max-depth", "--integrator", "--json", "--max-triangles", "--scenes"},
-        {"-h", "--help", "--suite", "--with-bunny"});
+    Args args(argv,
+              {"--size", "--spp", "--runs", "--max-depth", "--integrator", "--json", "--max-triangles",
+               "--scenes", "--bvh-threads"},
+              {"-h", "--help", "--suite", "--with-bunny"});
     if (args.has("-h") || args.has("--help")) {
         std::fputs(kBenchUsage, stdout);
         return 0;
@@ -137,6 +138,7 @@ int benchCommand(const std::vector<std::string>& argv) {
     settings.runs = args.integer("--runs", 1, 1000).value_or(suite ? 3 : 5);
     settings.render.maxDepth = args.integer("--max-depth", 0, 1000).value_or(5);
     settings.render.integrator = parseIntegrator(args.text("--integrator").value_or("nee"));
+    settings.bvh.threadCount = args.integer("--bvh-threads", 1, 1024).value_or(0);
     std::optional<std::string> jsonPath = args.text("--json");
     if (jsonPath) bench::checkJsonPath(*jsonPath);
     if (!suite) return benchOneScene(args, settings, jsonPath, start);

@@ -59,6 +59,7 @@ struct BenchSettings {
     RenderSettings render;  // samplesPerPass stays 1, as `fragpath render` renders by default
     int spp = 8;            // samples per pixel in each run
     int runs = 5;           // timed runs after the warm-up
+    BvhBuildOptions bvh;
 };
 
 struct SceneMeasurement {

@@ -1,172 +1,243 @@
-// Binned SAH builder after Wald 2007, "On fast construction of SAH-based bounding volume hierarchies".
+// The binned SAH builder on several threads. Nodes larger than a threshold are split level by level,
+// each level's binning and partitioning spread over the threads; the subtrees below the threshold are
+// then built whole, one thread job each, and spliced into the depth-first node array. Every node is
+// split by the same steps (binned_sah_split.h) on the same primitives in the same order, whichever
+// thread runs them, and partial bins and bounds are merged in index order (min and max keep the first
+// of equal values, so even the sign of a zero is as one pass would give it): the tree is the same,
+// bit for bit, for any thread count.
 #include <algorithm>
-#include <cmath>
+#include <thread>
 
-#include "bvh/build_common.h"
+#include "bvh/binned_sah_split.h"
+#include "bvh/parallel_for.h"
 
 namespace fp {
 namespace {
 
-using detail::LaneBox;
+using detail::Bin;
+using detail::BinnedSah;
+using detail::NodeMapping;
+using detail::parallelFor;
+using detail::PlaneChoice;
 using detail::PrimRef;
 using detail::RangeBounds;
 
-struct Bin {
-    LaneBox bounds;
-    uint32_t count = 0;
+// Subtrees of at most max(kMinSubtree, n / (threads * kJobsPerThread)) primitives are thread jobs: enough
+// jobs to balance the threads, few enough levels above them.
+constexpr uint32_t kMinSubtree = 4096;
+constexpr uint32_t kJobsPerThread = 16;
+// Large nodes are binned and bounded in chunks of this many primitives, one thread job each.
+constexpr uint32_t kChunk = 16384;
+
+struct Range {
+    uint32_t begin, end;
 };
 
-// Maps a doubled centroid coordinate to its bin along one axis. Binning and partitioning both call
-// this, so a primitive always lands on the side of the plane that the bin counts said it would.
-struct BinMapping {
-    float origin = 0.0f;  // lowest centroid2 coordinate of the node
-    float scale = 0.0f;   // bins per unit; 0 for an axis with no centroid extent (all land in bin 0)
-    int lastBin = 0;
-
-    int operator()(float c) const {
-        const float f = (c - origin) * scale;
-        // f >= 0 since c >= origin; the clamp catches c at the top of the range, where f == binCount.
-        // In this form it is a branch-free min, and a NaN (from non-finite input) also clamps instead
-        // of converting to int undefinedly.
-        return int(f < float(lastBin) ? f : float(lastBin));
-    }
+// The ranges cut into chunks of at most kChunk, in order: chunks of one range are consecutive.
+struct Chunk {
+    size_t range;
+    uint32_t begin, end;
 };
-
-// In-place partition of refs[begin, end) into those binned below `plane` and the rest; returns the
-// first index of the rest. Lomuto's scheme with an unconditional swap: no branch on the (unpredictable)
-// side, which matters more than the extra moves.
-uint32_t partition(PrimRef* refs, uint32_t begin, uint32_t end, const BinMapping& mapping, int axis,
-                   int plane) {
-    uint32_t store = begin;  // [begin, store) is left, [store, i) is right
-    for (uint32_t i = begin; i < end; ++i) {
-        const PrimRef r = refs[i];
-        const bool isLeft = mapping(r.lo[axis] + r.hi[axis]) < plane;
-        refs[i] = refs[store];
-        refs[store] = r;
-        store += isLeft;
-    }
-    return store;
+std::vector<Chunk> chunksOf(const std::vector<Range>& ranges) {
+    std::vector<Chunk> chunks;
+    for (size_t r = 0; r < ranges.size(); ++r)
+        for (uint32_t b = ranges[r].begin; b < ranges[r].end; b += std::min(kChunk, ranges[r].end - b))
+            chunks.push_back({r, b, b + std::min(kChunk, ranges[r].end - b)});
+    return chunks;
 }
 
-class BinnedSahSplitter {
+std::vector<RangeBounds> parallelRangeBounds(const PrimRef* refs, const std::vector<Range>& ranges,
+                                             int threads) {
+    const std::vector<Chunk> chunks = chunksOf(ranges);
+    std::vector<RangeBounds> partial(chunks.size());
+    parallelFor(threads, chunks.size(),
+                [&](size_t c) { partial[c] = detail::rangeBounds(refs, chunks[c].begin, chunks[c].end); });
+    std::vector<RangeBounds> out(ranges.size());
+    for (size_t c = 0; c < chunks.size(); ++c) {  // in order: see the file comment
+        out[chunks[c].range].bounds.grow(partial[c].bounds);
+        out[chunks[c].range].centroids.grow(partial[c].centroids);
+    }
+    return out;
+}
+
+// A node of the top of the tree, above the subtree jobs.
+struct TopNode {
+    Range range;
+    RangeBounds rb;        // for nodes split here (not for subtree roots)
+    uint32_t left = 0;     // children in the top node list; 0 for leaves and subtree roots
+    int32_t subtree = -1;  // >= 0: the root of that subtree job
+    uint32_t count() const { return range.end - range.begin; }
+};
+
+class ParallelBuild {
   public:
-    explicit BinnedSahSplitter(const BvhBuildOptions& options)
-        : options_(options),
-          binCount_(options.binCount),
-          bins_(3 * size_t(binCount_)),
-          used_(binCount_),
-          rightArea_(binCount_),
-          rightCount_(binCount_) {}
+    ParallelBuild(std::vector<PrimRef>& refs, const BvhBuildOptions& options, int threads)
+        : refs_(refs), options_(options), threads_(threads) {}
 
-    uint32_t operator()(PrimRef* refs, uint32_t begin, uint32_t end, const RangeBounds& rb) {
-        BinMapping mapping[3];
-        for (int axis = 0; axis < 3; ++axis) {
-            const float extent = rb.centroids.hi[axis] - rb.centroids.lo[axis];
-            const float scale = float(binCount_) / extent;
-            mapping[axis].origin = rb.centroids.lo[axis];
-            // Skips flat axes, and extents so small that the scale overflows.
-            mapping[axis].scale = extent > 0.0f && std::isfinite(scale) ? scale : 0.0f;
-            mapping[axis].lastBin = binCount_ - 1;
-        }
-        if (mapping[0].scale == 0.0f && mapping[1].scale == 0.0f && mapping[2].scale == 0.0f)
-            return begin;  // centroids coincide: no plane separates them
-        if (end - begin == 2) return splitPair(refs, begin, rb, mapping);
-
-        // One pass bins every primitive along all three axes at once (as in Wald 2007).
-        for (uint32_t i = begin; i < end; ++i) {
-            const glm::vec3 c = refs[i].centroid2();
-            for (int axis = 0; axis < 3; ++axis) {
-                const int k = mapping[axis](c[axis]);
-                Bin& bin = bins_[size_t(axis) * binCount_ + k];
-                bin.bounds.grow(refs[i].lo, refs[i].hi);
-                ++bin.count;
-            }
-        }
-
-        // A plane between bins p - 1 and p splits them into [0, p) and [p, binCount). Its SAH cost is
-        // traversalCost + intersectCost * (A_L N_L + A_R N_R) / A; only the bracket is compared here.
-        // Only planes right after an occupied bin are evaluated: the others repeat the split of the
-        // plane before them, and on equal costs the first plane (lowest axis, then lowest p) wins.
-        float bestCost = std::numeric_limits<float>::infinity();
-        int bestAxis = -1, bestPlane = 0;
-        for (int axis = 0; axis < 3; ++axis) {
-            Bin* bins = &bins_[size_t(axis) * binCount_];
-            // The sweeps and the reset touch only occupied bins: small nodes, which are most nodes,
-            // leave most bins empty. (Branch-free: occupancy is unpredictable.)
-            int used = 0;
-            for (int k = 0; k < binCount_; ++k) {
-                used_[used] = k;
-                used += bins[k].count != 0;
-            }
-            if (mapping[axis].scale != 0.0f) {
-                LaneBox acc;
-                uint32_t count = 0;
-                for (int i = used - 1; i > 0; --i) {  // sweep from the right...
-                    acc.grow(bins[used_[i]].bounds);
-                    count += bins[used_[i]].count;
-                    rightArea_[i] = acc.area();
-                    rightCount_[i] = count;
-                }
-                acc = LaneBox{};
-                count = 0;
-                for (int i = 0; i + 1 < used; ++i) {  // ...then from the left, evaluating each plane
-                    acc.grow(bins[used_[i]].bounds);
-                    count += bins[used_[i]].count;
-                    const float cost =
-                        acc.area() * float(count) + rightArea_[i + 1] * float(rightCount_[i + 1]);
-                    if (cost < bestCost) {
-                        bestCost = cost;
-                        bestAxis = axis;
-                        bestPlane = used_[i] + 1;
-                    }
-                }
-            }
-            for (int i = 0; i < used; ++i) bins[used_[i]] = Bin{};
-        }
-        if (bestAxis < 0) return begin;  // only when every cost overflowed to inf
-
-        if (preferLeaf(bestCost, end - begin, rb)) return begin;
-        return partition(refs, begin, end, mapping[bestAxis], bestAxis, bestPlane);
+    Bvh build(uint32_t subtreeLimit) {
+        const auto n = uint32_t(refs_.size());
+        top_.push_back({{0, n}, {}, 0, -1});
+        std::vector<uint32_t> level{0};
+        top_[0].rb = parallelRangeBounds(refs_.data(), {top_[0].range}, threads_)[0];
+        while (!level.empty()) level = splitLevel(level, subtreeLimit);
+        buildSubtrees();
+        return assemble();
     }
 
   private:
-    // Whether a leaf is strictly cheaper than the best split (bracket cost as above), and allowed.
-    bool preferLeaf(float bestCost, uint32_t count, const RangeBounds& rb) const {
-        const float area = rb.bounds.area();
-        const float splitCost =
-            options_.traversalCost + options_.intersectCost * (area > 0.0f ? bestCost / area : 0.0f);
-        const float leafCost = options_.intersectCost * float(count);
-        return leafCost < splitCost && count <= uint32_t(options_.maxLeafSize);
+    // Splits the nodes of one level, as detail::buildSubtree would one by one; returns the children that
+    // are still above subtreeLimit (with their bounds), and lists the others as subtree jobs.
+    std::vector<uint32_t> splitLevel(const std::vector<uint32_t>& level, uint32_t subtreeLimit) {
+        const int binCount = options_.binCount;
+        std::vector<NodeMapping> mappings;
+        std::vector<Range> binned;  // the nodes with a plane to look for
+        std::vector<size_t> binnedNode;
+        for (size_t i = 0; i < level.size(); ++i) {
+            mappings.emplace_back(top_[level[i]].rb, binCount);
+            if (!mappings[i].flat()) {
+                binned.push_back(top_[level[i]].range);
+                binnedNode.push_back(i);
+            }
+        }
+        const std::vector<Chunk> chunks = chunksOf(binned);
+        const size_t binsPerSet = 3 * size_t(binCount);
+        std::vector<Bin> chunkBins(chunks.size() * binsPerSet);
+        parallelFor(threads_, chunks.size(), [&](size_t c) {
+            detail::binRange(refs_.data(), chunks[c].begin, chunks[c].end,
+                             mappings[binnedNode[chunks[c].range]], &chunkBins[c * binsPerSet], binCount);
+        });
+        std::vector<PlaneChoice> choices(level.size());
+        for (size_t c = 0; c < chunks.size(); ++c) {
+            detail::mergeBins(&chunkBins[c * binsPerSet], sah_.bins(), binCount);  // in order
+            if (c + 1 == chunks.size() || chunks[c + 1].range != chunks[c].range) {
+                const size_t i = binnedNode[chunks[c].range];
+                const TopNode& node = top_[level[i]];
+                choices[i] = sah_.choosePlane(mappings[i], node.count(), node.rb);
+            }
+        }
+        std::vector<uint32_t> mids(level.size());
+        parallelFor(threads_, level.size(), [&](size_t i) {
+            const Range r = top_[level[i]].range;
+            mids[i] = choices[i].axis < 0
+                          ? r.begin
+                          : detail::partition(refs_.data(), r.begin, r.end, mappings[i], choices[i]);
+        });
+
+        std::vector<uint32_t> next;
+        std::vector<Range> nextRanges;
+        for (size_t i = 0; i < level.size(); ++i) {
+            const Range r = top_[level[i]].range;
+            uint32_t mid = mids[i];
+            if (mid <= r.begin || mid >= r.end) {  // the leaf rule of detail::buildSubtree
+                if (r.end - r.begin <= uint32_t(options_.maxLeafSize)) continue;
+                mid = r.begin + (r.end - r.begin) / 2;
+            }
+            top_[level[i]].left = uint32_t(top_.size());
+            for (Range child : {Range{r.begin, mid}, Range{mid, r.end}}) {
+                TopNode node{child, {}, 0, -1};
+                if (child.end - child.begin <= subtreeLimit) {
+                    node.subtree = int32_t(subtreeRoots_.size());
+                    subtreeRoots_.push_back(uint32_t(top_.size()));
+                } else {
+                    next.push_back(uint32_t(top_.size()));
+                    nextRanges.push_back(child);
+                }
+                top_.push_back(node);
+            }
+        }
+        const std::vector<RangeBounds> rbs = parallelRangeBounds(refs_.data(), nextRanges, threads_);
+        for (size_t i = 0; i < next.size(); ++i) top_[next[i]].rb = rbs[i];
+        return next;
     }
 
-    // Two primitives (a large share of all nodes): every candidate plane on every axis splits them the
-    // same way, so the bin search above would pick the first axis along which their centroids differ,
-    // at cost area(a) + area(b). Same decision and order, without touching the bins.
-    uint32_t splitPair(PrimRef* refs, uint32_t begin, const RangeBounds& rb,
-                       const BinMapping* mapping) const {
-        PrimRef& a = refs[begin];
-        PrimRef& b = refs[begin + 1];
-        const int axis = mapping[0].scale != 0.0f ? 0 : (mapping[1].scale != 0.0f ? 1 : 2);
-        const float cost = LaneBox{a.lo, a.hi}.area() + LaneBox{b.lo, b.hi}.area();
-        if (preferLeaf(cost, 2, rb)) return begin;
-        if (a.lo[axis] + a.hi[axis] > b.lo[axis] + b.hi[axis]) std::swap(a, b);
-        return begin + 1;
+    void buildSubtrees() {
+        subtreeNodes_.resize(subtreeRoots_.size());
+        std::vector<size_t> largestFirst(subtreeRoots_.size());
+        for (size_t s = 0; s < largestFirst.size(); ++s) largestFirst[s] = s;
+        std::stable_sort(largestFirst.begin(), largestFirst.end(), [this](size_t a, size_t b) {
+            return top_[subtreeRoots_[a]].count() > top_[subtreeRoots_[b]].count();
+        });
+        parallelFor(threads_, largestFirst.size(), [&](size_t j) {
+            const size_t s = largestFirst[j];
+            const Range r = top_[subtreeRoots_[s]].range;
+            BinnedSah sah(options_);
+            detail::buildSubtree(refs_.data(), r.begin, r.end, options_, sah, subtreeNodes_[s]);
+        });
     }
 
+    // The top nodes and the subtrees in depth-first order, subtree indices offset to their place.
+    Bvh assemble() {
+        size_t total = 0;
+        for (const TopNode& node : top_) total += node.subtree < 0;
+        for (const std::vector<BvhNode>& nodes : subtreeNodes_) total += nodes.size();
+        Bvh bvh;
+        bvh.nodes.resize(total);
+        std::vector<uint32_t> offsets(subtreeNodes_.size());
+        constexpr uint32_t kNoParent = std::numeric_limits<uint32_t>::max();
+        struct Visit {
+            uint32_t node, parent;  // parent: as in detail::buildSubtree
+        };
+        std::vector<Visit> stack{{0, kNoParent}};
+        uint32_t cursor = 0;
+        while (!stack.empty()) {
+            const Visit v = stack.back();
+            stack.pop_back();
+            if (v.parent != kNoParent) bvh.nodes[v.parent].first = cursor;
+            const TopNode& node = top_[v.node];
+            if (node.subtree >= 0) {
+                offsets[node.subtree] = cursor;
+                cursor += uint32_t(subtreeNodes_[node.subtree].size());
+            } else if (node.left == 0) {
+                bvh.nodes[cursor++] = {node.rb.bounds, node.range.begin, node.count()};
+            } else {
+                bvh.nodes[cursor] = {node.rb.bounds, 0, 0};
+                stack.push_back({node.left + 1, cursor});
+                stack.push_back({node.left, kNoParent});
+                ++cursor;
+            }
+        }
+        parallelFor(threads_, subtreeNodes_.size(), [&](size_t s) {
+            BvhNode* out = &bvh.nodes[offsets[s]];
+            for (const BvhNode& node : subtreeNodes_[s]) {
+                *out = node;
+                if (!node.isLeaf()) out->first += offsets[s];
+                ++out;
+            }
+        });
+        bvh.primIndex = detail::primIndexOf(refs_);
+        return bvh;
+    }
+
+    std::vector<PrimRef>& refs_;
     const BvhBuildOptions& options_;
-    int binCount_;
-    std::vector<Bin> bins_;             // axis-major: bins_[axis * binCount + bin]; empty between calls
-    std::vector<int> used_;             // scratch: one axis's occupied bins, in order
-    std::vector<float> rightArea_;      // scratch: area of the union of bins used_[i..]
-    std::vector<uint32_t> rightCount_;  // scratch: primitives in them
+    int threads_;
+    BinnedSah sah_{options_};             // for the top nodes: their bins are merged here
+    std::vector<TopNode> top_;            // top_[0] is the root; children are pushed in pairs
+    std::vector<uint32_t> subtreeRoots_;  // top node of each subtree job
+    std::vector<std::vector<BvhNode>> subtreeNodes_;
 };
 
 }  // namespace
 
+int buildThreadCount(const BvhBuildOptions& options) {
+    if (options.threadCount > 0) return options.threadCount;
+    return int(std::max(1u, std::thread::hardware_concurrency()));
+}
+
 Bvh buildBinnedSah(const std::vector<Aabb>& primBounds, const BvhBuildOptions& options) {
     detail::validateOptions(options, primBounds.size());  // before binCount sizes anything
-    BinnedSahSplitter splitter(options);
-    return detail::buildTopDown(primBounds, options, splitter);
+    Bvh bvh;
+    if (primBounds.empty()) return bvh;
+    std::vector<PrimRef> refs = detail::makePrimRefs(primBounds);
+    const auto n = uint32_t(refs.size());
+    const int threads = buildThreadCount(options);
+    const uint32_t subtreeLimit = std::max(kMinSubtree, n / (uint32_t(threads) * kJobsPerThread));
+    if (threads > 1 && n > subtreeLimit) return ParallelBuild(refs, options, threads).build(subtreeLimit);
+
+    BinnedSah sah(options);
+    detail::buildSubtree(refs.data(), 0, n, options, sah, bvh.nodes);
+    bvh.primIndex = detail::primIndexOf(refs);
+    return bvh;
 }
 
 }  // namespace fp

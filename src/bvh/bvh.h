@@ -27,20 +27,29 @@ struct BvhBuildOptions {
     int maxLeafSize = 4;         // a node with more primitives is always split
     float traversalCost = 1.0f;  // SAH cost of one node visit, relative to...
     float intersectCost = 1.0f;  // ...one primitive test
+    // Threads the binned builder may use, the caller's included; 0: std::thread::hardware_concurrency().
+    // The tree does not depend on it.
+    int threadCount = 0;
 };
 
-// Both builders share these rules:
+// The builders share these rules:
 // - primBounds must be non-empty, finite boxes (one per primitive); nodes store exact unions of them.
 // - No primitives gives an empty Bvh (no nodes, no primIndex); one primitive gives a single leaf.
 // - Every leaf holds 1..maxLeafSize primitives, without exception: a larger node whose centroids all
 //   coincide (no plane separates them) is split into the two halves of its index range.
-// - The output depends only on the input and options (same input, same tree).
-// - binCount < 2 or maxLeafSize < 1 throws std::invalid_argument.
+// - The output depends only on the input and options, never on threadCount (same input, same tree).
+// - binCount < 2, maxLeafSize < 1 or threadCount < 0 throws std::invalid_argument.
 
 // Binned SAH (Wald 2007, "On fast construction of SAH-based bounding volume hierarchies"): each node
 // is split at the lowest-cost of the binCount - 1 planes per axis between equal-width bins over its
 // centroid bounds, or made a leaf when that is strictly cheaper and it holds at most maxLeafSize.
 Bvh buildBinnedSah(const std::vector<Aabb>& primBounds, const BvhBuildOptions& options = {});
+// The threads buildBinnedSah may use with these options (threadCount, or the hardware's if 0).
+int buildThreadCount(const BvhBuildOptions& options);
+// Full-sweep SAH: the quality reference for the binned builder (O(n log n) per level; not for rendering).
+// Each node is split at the lowest-cost of all planes between consecutive distinct centroids along each
+// axis (centroids sorted per axis), with the binned builder's costs and leaf rule; binCount is not used.
+Bvh buildSweepSah(const std::vector<Aabb>& primBounds, const BvhBuildOptions& options = {});
 // Object median split along the longest centroid axis: the baseline the SAH builder must beat.
 // Nodes with at most maxLeafSize primitives become leaves; binCount and the costs are not used.
 Bvh buildMedianSplit(const std::vector<Aabb>& primBounds, const BvhBuildOptions& options = {});

@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <ctime>
 
 #include "core/error.h"
 #include "gpu/layout.h"
@@ -25,11 +26,14 @@ constexpr int kSpareUnit = kSumUnit + RenderTargets::kAttachments;
 Renderer::Renderer(const Scene& scene, ShaderLibrary shaders, const BvhBuildOptions& bvhOptions)
     : shaders_(std::move(shaders)) {
     auto start = std::chrono::steady_clock::now();
+    const std::clock_t cpuStart = std::clock();  // CPU time of the whole process, so of every build thread
     std::vector<Aabb> bounds;
     bounds.reserve(scene.triangles.size());
     for (const Triangle& t : scene.triangles) bounds.push_back(t.bounds());
     Bvh bvh = buildBinnedSah(bounds, bvhOptions);
     stats_.bvhBuildSeconds = secondsSince(start);
+    stats_.bvhBuildCpuSeconds = double(std::clock() - cpuStart) / CLOCKS_PER_SEC;
+    stats_.bvhBuildThreads = buildThreadCount(bvhOptions);
     stats_.bvh = computeStats(bvh, bvhOptions);
 
     start = std::chrono::steady_clock::now();

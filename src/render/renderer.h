@@ -20,6 +20,8 @@ struct SceneStats {
     uint32_t triangles = 0, emitters = 0;
     BvhStats bvh;
     double bvhBuildSeconds = 0.0, uploadSeconds = 0.0;
+    double bvhBuildCpuSeconds = 0.0;  // process CPU time of the build, all its threads together
+    int bvhBuildThreads = 0;
     size_t gpuBytes = 0, gpuGeometryBytes = 0;  // all buffers; positions + BVH only
     uint32_t stackSize = 0;                     // traversal stack entries the shader was compiled with
 };

@@ -124,6 +124,19 @@ inline Mesh sliverSoup(size_t count, uint32_t seed) {
     return mesh;
 }
 
+// Long thin triangles in random directions: 4 units long and 0.02 wide in a 10-unit cube, so that their
+// bounds are large and overlap though their centroids are spread.
+inline Mesh longThinTriangles(size_t count, uint32_t seed) {
+    std::mt19937 rng(seed);
+    Mesh mesh;
+    const Aabb starts{glm::vec3(0.0f), glm::vec3(10.0f)};
+    for (size_t i = 0; i < count; ++i) {
+        glm::vec3 a = uniformIn(rng, starts), along = 4.0f * unitVector(rng);
+        mesh.push_back({a, a + along, a + 0.5f * along + 0.02f * unitVector(rng)});
+    }
+    return mesh;
+}
+
 inline Mesh translated(Mesh mesh, glm::vec3 offset) {
     for (TriangleVerts& t : mesh) {
         t.p0 += offset;
@@ -161,6 +174,7 @@ struct NamedBuilder {
 
 inline std::vector<NamedBuilder> builders() {
     return {{"binnedSah", [](auto& b, auto& o) { return buildBinnedSah(b, o); }},
+            {"sweepSah", [](auto& b, auto& o) { return buildSweepSah(b, o); }},
             {"medianSplit", [](auto& b, auto& o) { return buildMedianSplit(b, o); }}};
 }
 
