@@ -44,6 +44,8 @@ struct Run {
 struct Spread {
     double median = 0, min = 0, max = 0;
 };
+// Median, min and max of values (not empty).
+Spread spread(std::vector<double> values);
 
 // One measured quantity of a run, with the names it has in the table and in the JSON.
 struct Column {
