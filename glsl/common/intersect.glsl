@@ -83,23 +83,26 @@ bool traverse(Ray ray, float tMax, bool anyHit, out Hit hit) {
         vec4 b0 = texelFetch(uNodeBounds, int(node) * NODE_BOUNDS_TEXELS);
         vec4 b1 = texelFetch(uNodeBounds, int(node) * NODE_BOUNDS_TEXELS + 1);
         vec4 b2 = texelFetch(uNodeBounds, int(node) * NODE_BOUNDS_TEXELS + 2);
-        uvec4 link = texelFetch(uNodeLinks, int(node));
+        uvec2 link = texelFetch(uNodeLinks, int(node)).xy;  // child links, encoded as layout.h says
         float tLeft = boxEntry(ray.origin, invDir, b0.xyz, vec3(b0.w, b1.xy), hit.t);
         float tRight = boxEntry(ray.origin, invDir, vec3(b1.zw, b2.x), b2.yzw, hit.t);
+        bool leftLeaf = (link.x & LEAF_BIT) != 0u, rightLeaf = (link.y & LEAF_BIT) != 0u;
         // Leaf children are tested at once, left then right; only interior children remain.
-        uint leftCount = tLeft < INF ? link.y : 0u, rightCount = tRight < INF ? link.w : 0u;
-        if (leftCount + rightCount > 0u && intersectLeaves(ray, link.x, leftCount, link.z, rightCount, anyHit, hit))
+        uint leftCount = tLeft < INF && leftLeaf ? ((link.x >> LEAF_COUNT_SHIFT) & 15u) + 1u : 0u;
+        uint rightCount = tRight < INF && rightLeaf ? ((link.y >> LEAF_COUNT_SHIFT) & 15u) + 1u : 0u;
+        if (leftCount + rightCount > 0u &&
+            intersectLeaves(ray, link.x & LEAF_FIRST_MASK, leftCount, link.y & LEAF_FIRST_MASK, rightCount, anyHit, hit))
             return true;
-        if (link.y > 0u) tLeft = INF;
-        if (link.w > 0u) tRight = INF;
+        if (leftLeaf) tLeft = INF;
+        if (rightLeaf) tRight = INF;
         if (tLeft < INF && tRight < INF) {
             bool leftFirst = tLeft <= tRight;
-            stack[size++] = leftFirst ? link.z : link.x;
-            node = leftFirst ? link.x : link.z;
+            stack[size++] = leftFirst ? link.y : link.x;
+            node = leftFirst ? link.x : link.y;
         } else if (tLeft < INF) {
             node = link.x;
         } else if (tRight < INF) {
-            node = link.z;
+            node = link.y;
         } else {
             if (size == 0) break;
             node = stack[--size];

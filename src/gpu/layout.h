@@ -9,14 +9,22 @@
 //  buffer        format     texels per item  contents
 //  triangles     RGBA32F    3 per triangle   (v0.xyz, material index)  (e1.xyz, light pmf)  (e2.xyz, 0)
 //                                            e1 = v1 - v0, e2 = v2 - v0; light pmf = probability that
-//                                            light sampling picks this triangle (0 if not emissive)
+//                                            light sampling picks this triangle (0 if not emissive).
+//                                            (RGB32F positions, 36 bytes, with the rest moved to the
+//                                            normals, rendered the same image 10 % slower on llvmpipe:
+//                                            BENCHMARKS.md, optimisation log.)
 //  normals       RGBA32F    3 per triangle   (n0.xyz, 0) (n1.xyz, 0) (n2.xyz, 0)  unit shading normals
 //  nodeBounds    RGBA32F    3 per node       both children's boxes, packed 12 floats:
 //                                            (L.lo.xyz, L.hi.x) (L.hi.yz, R.lo.xy) (R.lo.z, R.hi.xyz)
-//  nodeLinks     RGBA32UI   1 per node       (left first, left count, right first, right count):
-//                                            count > 0: a leaf of triangles [first, first + count);
-//                                            count = 0: an interior node at index `first`. Node 0 is the
-//                                            root.
+//  nodeLinks     RG32UI     1 per node       (left child, right child), each one uint (encodeChild):
+//                                            bit 31 set: a leaf of triangles [first, first + count) with
+//                                            first in bits 0-26 and count - 1 in bits 27-30;
+//                                            bit 31 clear: the interior node of that index. Node 0 is
+//                                            the root.
+//                                            A node is 56 bytes; with leaves of about 2 triangles (the
+//                                            binned SAH builder's default options) there is about one
+//                                            node per 2 triangles, so positions + BVH come to about
+//                                            36 + 28 = 64 bytes per triangle (BENCHMARKS.md).
 //  materials     RGBA32F    4 per material   (Kd.rgb, type) (Ke.rgb, roughness) (Ks.rgb, ior) (Tf.rgb, B)
 //                                            B: Cauchy coefficient in nm^2 of a dispersive glass, else 0
 //                                            (ior is then the index at 587.6 nm; scene/spectrum.h)
@@ -39,6 +47,19 @@ constexpr int kTriangleTexels = 3;
 constexpr int kNormalTexels = 3;
 constexpr int kNodeBoundsTexels = 3;
 constexpr int kNodeLinkTexels = 1;
+
+// A child link of nodeLinks (see above).
+constexpr uint32_t kLeafBit = 1u << 31;
+constexpr int kLeafCountShift = 27;
+constexpr uint32_t kMaxLeafFirst = (1u << kLeafCountShift) - 1;
+constexpr uint32_t kMaxLeafCount = 16;
+struct ChildLink {
+    uint32_t first = 0;  // first triangle of a leaf, or the interior node's index
+    uint32_t count = 0;  // triangles of a leaf; 0 for an interior node
+};
+// Throws fp::Error when the leaf cannot be encoded (first > kMaxLeafFirst, count > kMaxLeafCount).
+uint32_t encodeChild(const ChildLink& child);
+ChildLink decodeChild(uint32_t link);
 constexpr int kMaterialTexels = 4;
 constexpr int kLightTexels = 1;
 constexpr uint32_t kMaxFloatIndex = 1u << 24;
