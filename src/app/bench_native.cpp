@@ -3,6 +3,7 @@
 #include <cstdio>
 
 #include "core/error.h"
+#include "gpu/layout.h"
 #include "native/native_path.h"
 
 namespace fp::bench {
@@ -19,7 +20,7 @@ NativeMeasurement measureNative(const std::function<Scene()>& load, const BenchS
     Scene scene = load();
     native::Scene prepared;
     try {
-        prepared = native::buildScene(scene);
+        prepared = native::buildScene(scene, layout::bvhOptions());
     } catch (const Error& e) {
         m.skipped = e.what();
         return m;

@@ -23,6 +23,13 @@ ShaderDefines layoutDefines() {
             {"LEAF_FIRST_MASK", std::to_string(kMaxLeafFirst) + "u"}};
 }
 
+BvhBuildOptions bvhOptions() {
+    BvhBuildOptions options;
+    options.maxLeafSize = 8;
+    options.traversalCost = 3.0f;
+    return options;
+}
+
 uint32_t encodeChild(const ChildLink& child) {
     if (child.count == 0) {
         if (child.first >= kLeafBit) throw Error("internal: BVH node index too large for the GPU layout");

@@ -39,6 +39,7 @@
 // Indices stored in float channels are exact integers below 2^24, which every GPU keeps exactly.
 #include <cstdint>
 
+#include "bvh/bvh.h"
 #include "gl/shader_source.h"
 
 namespace fp::layout {
@@ -78,5 +79,11 @@ enum Unit : int {
 };
 
 ShaderDefines layoutDefines();
+
+// The BVH build options the renderer uses with this layout: leaves of up to 8 triangles, and a node
+// visit priced at 3 triangle tests, so that the SAH builder makes leaves of about 4 triangles. On the
+// suite this brings positions + BVH from about 76 to about 60 bytes per triangle at the same speed
+// (BENCHMARKS.md, optimisation log). The native reference builds its tree with the same options.
+BvhBuildOptions bvhOptions();
 
 }  // namespace fp::layout

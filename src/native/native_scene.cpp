@@ -42,7 +42,7 @@ struct NodeFlattener {
 
 }  // namespace
 
-Scene buildScene(const fp::Scene& scene) {
+Scene buildScene(const fp::Scene& scene, const BvhBuildOptions& options) {
     if (scene.triangles.empty()) throw Error(scene.source + ": the native reference needs triangles");
     if (scene.environment.hasMap())
         throw Error(scene.source + ": the native reference has no environment maps (a constant colour only)");
@@ -58,7 +58,7 @@ Scene buildScene(const fp::Scene& scene) {
 
     std::vector<Aabb> bounds;
     for (const Triangle& t : scene.triangles) bounds.push_back(t.bounds());
-    Bvh bvh = buildBinnedSah(bounds);
+    Bvh bvh = buildBinnedSah(bounds, options);
 
     // Emitters chosen in proportion to their power, as gpu/pack.cpp does.
     float total = 0.0f;

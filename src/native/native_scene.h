@@ -1,7 +1,7 @@
 #pragma once
 // The native reference's scene: the data the GPU layout holds (src/gpu/layout.h), as plain C++ arrays
 // in the natural in-memory form a scalar CPU tracer would use. The BVH is the renderer's own
-// (buildBinnedSah with default options), so both trace the same tree over the same triangle order.
+// (buildBinnedSah with gpu/layout.h bvhOptions()), so both trace the same tree in the same order.
 //
 // Benchmark-only: this and the other src/native files are a single-threaded scalar C++ path tracer of
 // exactly the default integrator's algorithm (glsl/integrators/nee.glsl on Lambertian surfaces), so that
@@ -12,6 +12,7 @@
 
 #include <glm/glm.hpp>
 
+#include "bvh/bvh.h"
 #include "core/aabb.h"
 #include "scene/scene.h"
 
@@ -49,6 +50,7 @@ struct Scene {
 
 // Throws fp::Error for what the reference does not implement: materials other than Lambertian (with
 // optional emission) and environment maps.
-Scene buildScene(const fp::Scene& scene);
+// `options` must be the renderer's (gpu/layout.h bvhOptions()) for both to trace the same tree.
+Scene buildScene(const fp::Scene& scene, const BvhBuildOptions& options);
 
 }  // namespace fp::native

@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "core/error.h"
+#include "gpu/layout.h"
 #include "native/native_path.h"
 #include "render/render_test_util.h"
 
@@ -30,7 +31,7 @@ native::Result renderNative(const Scene& scene, uint32_t seed) {
     s.spp = kSpp;
     s.maxDepth = kDepth;
     s.seed = seed;
-    return native::render(native::buildScene(scene), *scene.camera, s);
+    return native::render(native::buildScene(scene, layout::bvhOptions()), *scene.camera, s);
 }
 
 class NativeReference : public CornellBoxSuite {};
@@ -60,7 +61,9 @@ TEST_F(NativeReference, FollowsTheShadersRandomStream) {
     s.spp = 4;
     s.maxDepth = kDepth;
     s.seed = 7;
-    Image cpu = asAccumulation(native::render(native::buildScene(*scene_), *scene_->camera, s)).mean();
+    Image cpu =
+        asAccumulation(native::render(native::buildScene(*scene_, layout::bvhOptions()), *scene_->camera, s))
+            .mean();
     Image mean = gpu.mean();
     int alike = 0;
     for (int y = 0; y < kSize; ++y)
@@ -76,7 +79,7 @@ TEST_F(NativeReference, FollowsTheShadersRandomStream) {
 TEST(NativeReferenceScene, RejectsWhatItDoesNotImplement) {
     Scene scene = builtinCornellBox();
     scene.materials[0].type = MaterialType::Conductor;
-    EXPECT_THROW(native::buildScene(scene), Error);
+    EXPECT_THROW(native::buildScene(scene, layout::bvhOptions()), Error);
 }
 
 }  // namespace

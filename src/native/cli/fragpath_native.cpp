@@ -7,6 +7,7 @@
 
 #include "app/args.h"
 #include "core/error.h"
+#include "gpu/layout.h"
 #include "image/image.h"
 #include "native/native_path.h"
 #include "scene/builtin_scene.h"
@@ -38,7 +39,8 @@ int run(const std::vector<std::string>& argv) {
     settings.seed = uint32_t(args.integer("--seed", 0, 1 << 30).value_or(0));
     fp::Camera camera = scene.camera.value_or(fp::frameBounds(scene.bounds()));
 
-    fp::native::Result r = fp::native::render(fp::native::buildScene(scene), camera, settings);
+    fp::native::Result r =
+        fp::native::render(fp::native::buildScene(scene, fp::layout::bvhOptions()), camera, settings);
     std::printf("native: %dx%d %d spp depth %d: %.4g paths/cpu-s, %.4g rays/cpu-s (%.3f cpu s, one thread)\n",
                 settings.width, settings.height, settings.spp, settings.maxDepth, r.paths / r.cpuSeconds,
                 r.rays / r.cpuSeconds, r.cpuSeconds);
