@@ -47,6 +47,8 @@ const char* kBenchUsage =
     "  --runs R              timed runs after the warm-up (default 5; 3 with --suite)\n"
     "  --max-depth D         bounces (default 5)\n"
     "  --integrator NAME     naive | bsdf | nee | bdpt (default nee)\n"
+    "  --samples-per-pass N  samples per pixel per draw in the timed runs, 1 to 16 (default 8); the\n"
+    "                        warm-up, whose first pass is the first frame, draws 1\n"
     "  --json FILE           also write every figure to FILE as JSON (with --suite: one object per scene)\n"
     "  --suite               measure the benchmark suite instead of one scene\n"
     "  --max-triangles N     with --suite: skip the scenes with more than N triangles\n"
@@ -123,10 +125,10 @@ int benchCommand(const std::vector<std::string>& argv) {
     // Time to first frame counts from here: argument parsing is negligible, and everything a user waits
     // for before the first pixel (context, load, BVH, upload, compile, JIT, first pass) comes after.
     auto start = bench::Clock::now();
-    Args args(
-        argv,
-        {"--size", "--spp", "--runs", "--max-depth", "--integrator", "--json", "--max-triangles", "--scenes"},
-        {"-h", "--help", "--suite", "--with-bunny", "--native"});
+    Args args(argv,
+              {"--size", "--spp", "--runs", "--max-depth", "--integrator", "--json", "--max-triangles",
+               "--scenes", "--samples-per-pass"},
+              {"-h", "--help", "--suite", "--with-bunny", "--native"});
     if (args.has("-h") || args.has("--help")) {
         std::fputs(kBenchUsage, stdout);
         return 0;
@@ -147,6 +149,8 @@ int benchCommand(const std::vector<std::string>& argv) {
     settings.runs = args.integer("--runs", 1, 1000).value_or(suite ? 3 : 5);
     settings.render.maxDepth = args.integer("--max-depth", 0, 1000).value_or(5);
     settings.render.integrator = parseIntegrator(args.text("--integrator").value_or("nee"));
+    settings.render.samplesPerPass =
+        args.integer("--samples-per-pass", 1, RenderSettings::kMaxSamplesPerPass).value_or(8);
     std::optional<std::string> jsonPath = args.text("--json");
     if (jsonPath) bench::checkJsonPath(*jsonPath);
     if (!suite) return benchOneScene(args, settings, jsonPath, start);

@@ -146,6 +146,7 @@ SceneMeasurement measureScene(const std::function<Scene()>& load, const BenchSet
     // Run i has seed i: the warm-up is run 0, the timed runs 1..R, so no two runs trace the same paths.
     auto measure = [&](uint32_t seed, bool first) {
         render.seed = seed;
+        render.samplesPerPass = first ? 1 : settings.render.samplesPerPass;
         renderer->configure(render, camera);
         Run run;
         run.seed = seed;

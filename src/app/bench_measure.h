@@ -58,9 +58,12 @@ const std::vector<Column>& columns();
 
 // The settings every scene of one command is measured with.
 struct BenchSettings {
-    RenderSettings render;  // samplesPerPass stays 1, as `fragpath render` renders by default
-    int spp = 8;            // samples per pixel in each run
-    int runs = 5;           // timed runs after the warm-up
+    // The timed runs draw render.samplesPerPass samples per pass (bench's default: 8, which costs about
+    // 5 % less CPU per path than 1 on llvmpipe: BENCHMARKS.md); the warm-up, whose first pass is the
+    // first frame, always draws 1, as `fragpath render` does by default.
+    RenderSettings render;
+    int spp = 8;   // samples per pixel in each run
+    int runs = 5;  // timed runs after the warm-up
 };
 
 struct SceneMeasurement {

@@ -48,6 +48,7 @@ TEST_F(Bench, WritesEveryFigureAsJson) {
     EXPECT_EQ(j["settings"]["width"], 16);
     EXPECT_EQ(j["settings"]["spp"], 1);
     EXPECT_EQ(j["settings"]["integrator"], "nee");
+    EXPECT_EQ(j["settings"]["samples_per_pass"], 8);
     expectPositive(j["bvh"], "build_seconds");
     expectPositive(j["bvh"], "sah_cost");
     for (const char* key :
