@@ -58,7 +58,8 @@ struct NodePacker {
         b[0] = {l.bounds.lo.x, l.bounds.lo.y, l.bounds.lo.z, l.bounds.hi.x};
         b[1] = {l.bounds.hi.y, l.bounds.hi.z, r.bounds.lo.x, r.bounds.lo.y};
         b[2] = {r.bounds.lo.z, r.bounds.hi.x, r.bounds.hi.y, r.bounds.hi.z};
-        out.nodeLinks[index] = {layout::encodeChild({l.first, l.count}), layout::encodeChild({r.first, r.count})};
+        out.nodeLinks[index] = {layout::encodeChild({l.first, l.count}),
+                                layout::encodeChild({r.first, r.count})};
     }
 };
 
