@@ -21,10 +21,10 @@
 //                                            first in bits 0-26 and count - 1 in bits 27-30;
 //                                            bit 31 clear: the interior node of that index. Node 0 is
 //                                            the root.
-//                                            A node is 56 bytes; with leaves of about 2 triangles (the
-//                                            binned SAH builder's default options) there is about one
-//                                            node per 2 triangles, so positions + BVH come to about
-//                                            36 + 28 = 64 bytes per triangle (BENCHMARKS.md).
+//                                            A node is 56 bytes. With bvhOptions() below, leaves hold
+//                                            about 4 triangles and there is about one node per 4 to 5
+//                                            triangles, so positions + BVH come to about 48 + 12 = 60
+//                                            bytes per triangle (57-60 on the suite; BENCHMARKS.md).
 //  materials     RGBA32F    4 per material   (Kd.rgb, type) (Ke.rgb, roughness) (Ks.rgb, ior) (Tf.rgb, B)
 //                                            B: Cauchy coefficient in nm^2 of a dispersive glass, else 0
 //                                            (ior is then the index at 587.6 nm; scene/spectrum.h)
@@ -36,7 +36,8 @@
 // texture of importance-sampling CDFs: H entries of the marginal CDF over rows, then for each row y
 // W entries of the conditional CDF over its texels (each cumulative, ending at 1).
 //
-// Indices stored in float channels are exact integers below 2^24, which every GPU keeps exactly.
+// Indices stored in float channels are exact integers below 2^24, which every GPU keeps exactly; the
+// node links are integers in an integer format, so no GPU can flush them as denormals.
 #include <cstdint>
 
 #include "bvh/bvh.h"
