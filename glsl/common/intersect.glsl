@@ -43,10 +43,16 @@ float boxEntry(vec3 origin, vec3 invDir, vec3 lo, vec3 hi, float tMax) {
     return enter <= exit ? enter : INF;
 }
 
-// Tests the leaf's triangles, shrinking hit.t; returns true as soon as one is hit when anyHit is set.
-bool intersectLeaf(Ray ray, uint first, uint count, bool anyHit, inout Hit hit) {
+// Tests the triangles of two leaf ranges, [firstA, firstA + countA) then [firstB, firstB + countB), in
+// one loop, shrinking hit.t; returns true as soon as one is hit when anyHit is set. One loop for both
+// children of a node, not one call per child: llvmpipe runs every inlined copy of this loop whenever
+// any pixel of its SIMD group needs it, and the second copy cost 15 % of a Cornell box render
+// (BENCHMARKS.md, optimisation log).
+bool intersectLeaves(Ray ray, uint firstA, uint countA, uint firstB, uint countB, bool anyHit, inout Hit hit) {
+    uint count = countA + countB;
     gTrianglesTested += int(count);
-    for (uint i = first; i < first + count; ++i) {
+    for (uint k = 0u; k < count; ++k) {
+        uint i = k < countA ? firstA + k : firstB + (k - countA);
         TriangleData tri = fetchTriangle(int(i));
         float t;
         vec2 uv;
@@ -77,25 +83,26 @@ bool traverse(Ray ray, float tMax, bool anyHit, out Hit hit) {
         vec4 b0 = texelFetch(uNodeBounds, int(node) * NODE_BOUNDS_TEXELS);
         vec4 b1 = texelFetch(uNodeBounds, int(node) * NODE_BOUNDS_TEXELS + 1);
         vec4 b2 = texelFetch(uNodeBounds, int(node) * NODE_BOUNDS_TEXELS + 2);
-        uvec4 link = texelFetch(uNodeLinks, int(node));
+        uvec2 link = texelFetch(uNodeLinks, int(node)).xy;  // child links, encoded as layout.h says
         float tLeft = boxEntry(ray.origin, invDir, b0.xyz, vec3(b0.w, b1.xy), hit.t);
         float tRight = boxEntry(ray.origin, invDir, vec3(b1.zw, b2.x), b2.yzw, hit.t);
-        if (tLeft < INF && link.y > 0u) {
-            if (intersectLeaf(ray, link.x, link.y, anyHit, hit)) return true;
-            tLeft = INF;
-        }
-        if (tRight < INF && link.w > 0u) {
-            if (intersectLeaf(ray, link.z, link.w, anyHit, hit)) return true;
-            tRight = INF;
-        }
+        bool leftLeaf = (link.x & LEAF_BIT) != 0u, rightLeaf = (link.y & LEAF_BIT) != 0u;
+        // Leaf children are tested at once, left then right; only interior children remain.
+        uint leftCount = tLeft < INF && leftLeaf ? ((link.x >> LEAF_COUNT_SHIFT) & 15u) + 1u : 0u;
+        uint rightCount = tRight < INF && rightLeaf ? ((link.y >> LEAF_COUNT_SHIFT) & 15u) + 1u : 0u;
+        if (leftCount + rightCount > 0u &&
+            intersectLeaves(ray, link.x & LEAF_FIRST_MASK, leftCount, link.y & LEAF_FIRST_MASK, rightCount, anyHit, hit))
+            return true;
+        if (leftLeaf) tLeft = INF;
+        if (rightLeaf) tRight = INF;
         if (tLeft < INF && tRight < INF) {
             bool leftFirst = tLeft <= tRight;
-            stack[size++] = leftFirst ? link.z : link.x;
-            node = leftFirst ? link.x : link.z;
+            stack[size++] = leftFirst ? link.y : link.x;
+            node = leftFirst ? link.x : link.y;
         } else if (tLeft < INF) {
             node = link.x;
         } else if (tRight < INF) {
-            node = link.z;
+            node = link.y;
         } else {
             if (size == 0) break;
             node = stack[--size];

@@ -3,7 +3,7 @@
 uniform samplerBuffer uTriangles;
 uniform samplerBuffer uNormals;
 uniform samplerBuffer uNodeBounds;
-uniform usamplerBuffer uNodeLinks;
+uniform usamplerBuffer uNodeLinks;  // RG32UI
 uniform samplerBuffer uMaterials;
 uniform samplerBuffer uLights;
 uniform int uLightCount;

@@ -12,6 +12,7 @@
 
 #include "app/args.h"
 #include "app/bench_measure.h"
+#include "app/bench_native.h"
 #include "app/bench_suite.h"
 #include "app/commands.h"
 #include "core/error.h"
@@ -47,12 +48,18 @@ const char* kBenchUsage =
     "  --max-depth D         bounces (default 5)\n"
     "  --integrator NAME     naive | bsdf | nee | bdpt (default nee)\n"
     "  --bvh-threads N       threads that build the BVH (default: every CPU); the tree is the same\n"
+    "  --samples-per-pass N  samples per pixel per draw in the timed runs, 1 to 16 (default 8); the\n"
+    "                        warm-up, whose first pass is the first frame, draws 1\n"
     "  --json FILE           also write every figure to FILE as JSON (with --suite: one object per scene)\n"
     "  --suite               measure the benchmark suite instead of one scene\n"
     "  --max-triangles N     with --suite: skip the scenes with more than N triangles\n"
     "  --scenes A,B,...      with --suite: only these scenes (cornell, sphere-1k, bunny, sphere-100k,\n"
     "                        soup-100k, sphere-1m), in the suite's order\n"
     "  --with-bunny          with --suite: add the Stanford bunny (needs npm and the network)\n"
+    "  --native              also measure the native reference (fragpath_native: one thread of scalar C++,\n"
+    "                        the same algorithm on the same BVH; Lambertian scenes only) on each scene, 1 "
+    "spp\n"
+    "                        per run, and print GPU paths per CPU-second over the native's\n"
     "  -h, --help            this text\n"
     "\n"
     "The suite's defaults keep it to a few minutes on a 2-core software renderer; sphere-1m and\n"
@@ -81,9 +88,12 @@ int benchOneScene(const Args& args, const bench::BenchSettings& settings, std::o
     std::unique_ptr<GlContext> context = createOsMesaContext();
     double contextSeconds = secondsSince(stage);
     environment.renderer = context->description();
-    SceneMeasurement m = measureScene(
-        [&] { return args.positional().empty() ? builtinCornellBox() : loadScene(args.positional()[0]); },
-        settings);
+    auto load = [&] {
+        return args.positional().empty() ? builtinCornellBox() : loadScene(args.positional()[0]);
+    };
+    SceneMeasurement m = measureScene(load, settings);
+    std::optional<NativeMeasurement> native;
+    if (args.has("--native")) native = measureNative(load, settings);
     // Here the first frame counts from the start of the command, so it includes the context.
     double firstFrameSeconds = std::chrono::duration<double>(m.firstPassEnd - start).count();
 
@@ -97,12 +107,14 @@ int benchOneScene(const Args& args, const bench::BenchSettings& settings, std::o
         integratorName(r.integrator), r.width, r.height, settings.spp, r.maxDepth,
         environment.threadsText().c_str(), paths.median, paths.min, paths.max,
         m.summary("rays_per_second").median, m.summary("paths_per_cpu_second").median, firstFrameSeconds);
+    if (native) printNative(*native, m);
 
     if (jsonPath) {
         nlohmann::json j = environmentJson(environment);
         j["settings"] = settingsJson(settings);
         j.update(measurementJson(m, firstFrameSeconds));
         j["first_frame"]["context_seconds"] = contextSeconds;
+        if (native) j["native"] = nativeJson(*native, m);
         writeJson(*jsonPath, j);
     }
     return 0;
@@ -116,8 +128,8 @@ int benchCommand(const std::vector<std::string>& argv) {
     auto start = bench::Clock::now();
     Args args(argv,
               {"--size", "--spp", "--runs", "--max-depth", "--integrator", "--json", "--max-triangles",
-               "--scenes", "--bvh-threads"},
-              {"-h", "--help", "--suite", "--with-bunny"});
+               "--scenes", "--bvh-threads", "--samples-per-pass"},
+              {"-h", "--help", "--suite", "--with-bunny", "--native"});
     if (args.has("-h") || args.has("--help")) {
         std::fputs(kBenchUsage, stdout);
         return 0;
@@ -139,6 +151,8 @@ int benchCommand(const std::vector<std::string>& argv) {
     settings.render.maxDepth = args.integer("--max-depth", 0, 1000).value_or(5);
     settings.render.integrator = parseIntegrator(args.text("--integrator").value_or("nee"));
     settings.bvh.threadCount = args.integer("--bvh-threads", 1, 1024).value_or(0);
+    settings.render.samplesPerPass =
+        args.integer("--samples-per-pass", 1, RenderSettings::kMaxSamplesPerPass).value_or(8);
     std::optional<std::string> jsonPath = args.text("--json");
     if (jsonPath) bench::checkJsonPath(*jsonPath);
     if (!suite) return benchOneScene(args, settings, jsonPath, start);
@@ -147,6 +161,7 @@ int benchCommand(const std::vector<std::string>& argv) {
     options.settings = settings;
     options.jsonPath = jsonPath;
     options.withBunny = args.has("--with-bunny");
+    options.native = args.has("--native");
     if (auto n = args.integer("--max-triangles", 1, 2000000000)) options.maxTriangles = *n;
     if (auto names = args.text("--scenes")) {
         const std::vector<std::string>& known = bench::suiteSceneNames();

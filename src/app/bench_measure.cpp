@@ -33,14 +33,6 @@ bool mesaTrue(const std::optional<std::string>& value) {
     return !(v == "0" || v == "n" || v == "no" || v == "f" || v == "false");
 }
 
-// The median rather than the mean, so one run disturbed by another process does not move the figure.
-Spread spread(std::vector<double> values) {
-    std::sort(values.begin(), values.end());
-    size_t n = values.size();
-    double median = n % 2 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
-    return {median, values.front(), values.back()};
-}
-
 // CPU time of the whole machine so far, summed over its CPUs, from the first line of /proc/stat.
 struct MachineCpu {
     double busySeconds = 0, totalSeconds = 0;
@@ -78,6 +70,14 @@ nlohmann::json runJson(const Run& run) {
 }
 
 }  // namespace
+
+// The median rather than the mean, so one run disturbed by another process does not move the figure.
+Spread spread(std::vector<double> values) {
+    std::sort(values.begin(), values.end());
+    size_t n = values.size();
+    double median = n % 2 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
+    return {median, values.front(), values.back()};
+}
 
 double secondsSince(Clock::time_point start) {
     return std::chrono::duration<double>(Clock::now() - start).count();
@@ -146,6 +146,7 @@ SceneMeasurement measureScene(const std::function<Scene()>& load, const BenchSet
     // Run i has seed i: the warm-up is run 0, the timed runs 1..R, so no two runs trace the same paths.
     auto measure = [&](uint32_t seed, bool first) {
         render.seed = seed;
+        render.samplesPerPass = first ? 1 : settings.render.samplesPerPass;
         renderer->configure(render, camera);
         Run run;
         run.seed = seed;

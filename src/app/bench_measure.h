@@ -44,6 +44,8 @@ struct Run {
 struct Spread {
     double median = 0, min = 0, max = 0;
 };
+// Median, min and max of values (not empty).
+Spread spread(std::vector<double> values);
 
 // One measured quantity of a run, with the names it has in the table and in the JSON.
 struct Column {
@@ -56,10 +58,13 @@ const std::vector<Column>& columns();
 
 // The settings every scene of one command is measured with.
 struct BenchSettings {
-    RenderSettings render;  // samplesPerPass stays 1, as `fragpath render` renders by default
-    int spp = 8;            // samples per pixel in each run
-    int runs = 5;           // timed runs after the warm-up
-    BvhBuildOptions bvh;
+    // The timed runs draw render.samplesPerPass samples per pass (bench's default: 8, which costs about
+    // 5 % less CPU per path than 1 on llvmpipe: BENCHMARKS.md); the warm-up, whose first pass is the
+    // first frame, always draws 1, as `fragpath render` does by default.
+    RenderSettings render;
+    int spp = 8;   // samples per pixel in each run
+    int runs = 5;  // timed runs after the warm-up
+    BvhBuildOptions bvh = layout::bvhOptions();
 };
 
 struct SceneMeasurement {

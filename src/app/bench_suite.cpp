@@ -7,6 +7,7 @@
 #include <functional>
 #include <memory>
 
+#include "app/bench_native.h"
 #include "core/error.h"
 #include "core/file.h"
 #include "gl/context.h"
@@ -124,6 +125,7 @@ struct Measured {
     std::string name;
     SceneMeasurement m;
     std::optional<double> fetchSeconds;
+    std::optional<NativeMeasurement> native;
 };
 
 struct Skipped {
@@ -147,19 +149,24 @@ void printSummary(const std::vector<Measured>& measured, const SuiteOptions& opt
     std::printf("\nsuite: %dx%d, %d spp per run, %s depth %d, LP_NUM_THREADS=%s; median of %d timed runs\n",
                 r.width, r.height, options.settings.spp, integratorName(r.integrator), r.maxDepth,
                 environment.threadsText().c_str(), options.settings.runs);
-    std::printf("  %-12s %10s %8s %8s %7s %7s %9s %11s %11s %11s %11s %7s\n", "scene", "triangles", "bvh s",
-                "SAH", "B/tri", "geo B/t", "1st frame", "paths/s", "rays/s", "paths/cpu-s", "rays/cpu-s",
-                "others");
+    std::printf("  %-12s %10s %8s %8s %7s %7s %9s %11s %11s %11s %11s %7s %10s\n", "scene", "triangles",
+                "bvh s", "SAH", "B/tri", "geo B/t", "1st frame", "paths/s", "rays/s", "paths/cpu-s",
+                "rays/cpu-s", "others", "gpu/native");
     for (const Measured& e : measured) {
         const SceneStats& s = e.m.stats;
         std::string others = e.m.othersCpuShare ? engineering(100.0 * *e.m.othersCpuShare) + "%" : "-";
-        std::printf("  %-12s %10u %8.3f %8.2f %7.1f %7.1f %8.3fs %11s %11s %11s %11s %7s\n", e.name.c_str(),
-                    s.triangles, s.bvhBuildSeconds, s.bvh.sahCost, double(s.gpuBytes) / s.triangles,
-                    double(s.gpuGeometryBytes) / s.triangles, e.m.sceneFirstFrameSeconds(),
-                    engineering(e.m.summary("paths_per_second").median).c_str(),
+        std::string ratio = "-";
+        if (e.native && !e.native->skipped)
+            ratio = engineering(e.m.summary("paths_per_cpu_second").median /
+                                e.native->pathsPerCpuSecond().median);
+        std::printf("  %-12s %10u %8.3f %8.2f %7.1f %7.1f %8.3fs %11s %11s %11s %11s %7s %10s\n",
+                    e.name.c_str(), s.triangles, s.bvhBuildSeconds, s.bvh.sahCost,
+                    double(s.gpuBytes) / s.triangles, double(s.gpuGeometryBytes) / s.triangles,
+                    e.m.sceneFirstFrameSeconds(), engineering(e.m.summary("paths_per_second").median).c_str(),
                     engineering(e.m.summary("rays_per_second").median).c_str(),
                     engineering(e.m.summary("paths_per_cpu_second").median).c_str(),
-                    engineering(e.m.summary("rays_per_cpu_second").median).c_str(), others.c_str());
+                    engineering(e.m.summary("rays_per_cpu_second").median).c_str(), others.c_str(),
+                    ratio.c_str());
     }
 }
 
@@ -235,8 +242,13 @@ int runSuite(const SuiteOptions& options) {
         if (fetchSeconds)
             std::printf("fetched          in %.3f s with npm (not in the first frame)\n", *fetchSeconds);
         printMeasurement(m, m.sceneFirstFrameSeconds(), std::nullopt);
+        std::optional<NativeMeasurement> native;
+        if (options.native) {
+            native = measureNative(make, options.settings);
+            printNative(*native, m);
+        }
         std::fflush(stdout);
-        measured.push_back({s.name, std::move(m), fetchSeconds});
+        measured.push_back({s.name, std::move(m), fetchSeconds, std::move(native)});
     }
     printSummary(measured, options, environment);
     for (const Skipped& s : skipped) std::printf("  skipped %s: %s\n", s.name.c_str(), s.reason.c_str());
@@ -250,6 +262,7 @@ int runSuite(const SuiteOptions& options) {
             nlohmann::json scene = measurementJson(e.m, e.m.sceneFirstFrameSeconds());
             scene["name"] = e.name;
             if (e.fetchSeconds) scene["fetch_seconds"] = *e.fetchSeconds;
+            if (e.native) scene["native"] = nativeJson(*e.native, e.m);
             j["scenes"].push_back(scene);
         }
         j["skipped"] = nlohmann::json::array();

@@ -14,6 +14,7 @@ struct SuiteOptions {
     BenchSettings settings;
     std::optional<long long> maxTriangles;  // scenes with more are skipped
     bool withBunny = false;                 // add the Stanford bunny, fetched with npm
+    bool native = false;                    // also measure the native reference (bench_native.h)
     std::vector<std::string> scenes;        // only these (by name); empty: the default set
     std::optional<std::string> jsonPath;
 };

@@ -153,7 +153,7 @@ int renderCommand(const std::vector<std::string>& argv) {
 
     std::unique_ptr<GlContext> context = createOffscreenContext(args.text("--backend").value_or("auto"));
     if (!quiet) std::fprintf(stderr, "renderer: %s\n", context->description().c_str());
-    BvhBuildOptions bvhOptions;
+    BvhBuildOptions bvhOptions = layout::bvhOptions();
     bvhOptions.threadCount = args.integer("--bvh-threads", 1, 1024).value_or(0);
     Renderer renderer(scene, ShaderLibrary(args.text("--shader-dir").value_or("")), bvhOptions);
     renderer.configure(settings, camera);

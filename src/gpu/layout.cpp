@@ -2,15 +2,50 @@
 
 #include <string>
 
+#include "core/error.h"
+
 namespace fp::layout {
 
 ShaderDefines layoutDefines() {
     auto s = [](int v) { return std::to_string(v); };
-    return {{"TRIANGLE_TEXELS", s(kTriangleTexels)},      {"NORMAL_TEXELS", s(kNormalTexels)},
-            {"NODE_BOUNDS_TEXELS", s(kNodeBoundsTexels)}, {"MATERIAL_TEXELS", s(kMaterialTexels)},
-            {"TRIANGLES_UNIT", s(kTrianglesUnit)},        {"NORMALS_UNIT", s(kNormalsUnit)},
-            {"NODE_BOUNDS_UNIT", s(kNodeBoundsUnit)},     {"NODE_LINKS_UNIT", s(kNodeLinksUnit)},
-            {"MATERIALS_UNIT", s(kMaterialsUnit)},        {"LIGHTS_UNIT", s(kLightsUnit)}};
+    return {{"TRIANGLE_TEXELS", s(kTriangleTexels)},
+            {"NORMAL_TEXELS", s(kNormalTexels)},
+            {"NODE_BOUNDS_TEXELS", s(kNodeBoundsTexels)},
+            {"MATERIAL_TEXELS", s(kMaterialTexels)},
+            {"TRIANGLES_UNIT", s(kTrianglesUnit)},
+            {"NORMALS_UNIT", s(kNormalsUnit)},
+            {"NODE_BOUNDS_UNIT", s(kNodeBoundsUnit)},
+            {"NODE_LINKS_UNIT", s(kNodeLinksUnit)},
+            {"MATERIALS_UNIT", s(kMaterialsUnit)},
+            {"LIGHTS_UNIT", s(kLightsUnit)},
+            {"LEAF_BIT", std::to_string(kLeafBit) + "u"},
+            {"LEAF_COUNT_SHIFT", s(kLeafCountShift)},
+            {"LEAF_FIRST_MASK", std::to_string(kMaxLeafFirst) + "u"}};
+}
+
+BvhBuildOptions bvhOptions() {
+    BvhBuildOptions options;
+    options.maxLeafSize = 8;
+    options.traversalCost = 3.0f;
+    return options;
+}
+
+uint32_t encodeChild(const ChildLink& child) {
+    if (child.count == 0) {
+        if (child.first >= kLeafBit) throw Error("internal: BVH node index too large for the GPU layout");
+        return child.first;
+    }
+    if (child.first > kMaxLeafFirst || child.count > kMaxLeafCount)
+        throw Error("the GPU layout cannot address a BVH leaf of " + std::to_string(child.count) +
+                    " triangles from triangle " + std::to_string(child.first) + " (at most " +
+                    std::to_string(kMaxLeafCount) + " triangles, from below " +
+                    std::to_string(kMaxLeafFirst + 1) + ")");
+    return kLeafBit | ((child.count - 1) << kLeafCountShift) | child.first;
+}
+
+ChildLink decodeChild(uint32_t link) {
+    if (!(link & kLeafBit)) return {link, 0};
+    return {link & kMaxLeafFirst, ((link >> kLeafCountShift) & 15u) + 1};
 }
 
 }  // namespace fp::layout

@@ -9,14 +9,22 @@
 //  buffer        format     texels per item  contents
 //  triangles     RGBA32F    3 per triangle   (v0.xyz, material index)  (e1.xyz, light pmf)  (e2.xyz, 0)
 //                                            e1 = v1 - v0, e2 = v2 - v0; light pmf = probability that
-//                                            light sampling picks this triangle (0 if not emissive)
+//                                            light sampling picks this triangle (0 if not emissive).
+//                                            (RGB32F positions, 36 bytes, with the rest moved to the
+//                                            normals, rendered the same image 10 % slower on llvmpipe:
+//                                            BENCHMARKS.md, optimisation log.)
 //  normals       RGBA32F    3 per triangle   (n0.xyz, 0) (n1.xyz, 0) (n2.xyz, 0)  unit shading normals
 //  nodeBounds    RGBA32F    3 per node       both children's boxes, packed 12 floats:
 //                                            (L.lo.xyz, L.hi.x) (L.hi.yz, R.lo.xy) (R.lo.z, R.hi.xyz)
-//  nodeLinks     RGBA32UI   1 per node       (left first, left count, right first, right count):
-//                                            count > 0: a leaf of triangles [first, first + count);
-//                                            count = 0: an interior node at index `first`. Node 0 is the
-//                                            root.
+//  nodeLinks     RG32UI     1 per node       (left child, right child), each one uint (encodeChild):
+//                                            bit 31 set: a leaf of triangles [first, first + count) with
+//                                            first in bits 0-26 and count - 1 in bits 27-30;
+//                                            bit 31 clear: the interior node of that index. Node 0 is
+//                                            the root.
+//                                            A node is 56 bytes. With bvhOptions() below, leaves hold
+//                                            about 4 triangles and there is about one node per 4 to 5
+//                                            triangles, so positions + BVH come to about 48 + 12 = 60
+//                                            bytes per triangle (57-60 on the suite; BENCHMARKS.md).
 //  materials     RGBA32F    4 per material   (Kd.rgb, type) (Ke.rgb, roughness) (Ks.rgb, ior) (Tf.rgb, B)
 //                                            B: Cauchy coefficient in nm^2 of a dispersive glass, else 0
 //                                            (ior is then the index at 587.6 nm; scene/spectrum.h)
@@ -28,9 +36,11 @@
 // texture of importance-sampling CDFs: H entries of the marginal CDF over rows, then for each row y
 // W entries of the conditional CDF over its texels (each cumulative, ending at 1).
 //
-// Indices stored in float channels are exact integers below 2^24, which every GPU keeps exactly.
+// Indices stored in float channels are exact integers below 2^24, which every GPU keeps exactly; the
+// node links are integers in an integer format, so no GPU can flush them as denormals.
 #include <cstdint>
 
+#include "bvh/bvh.h"
 #include "gl/shader_source.h"
 
 namespace fp::layout {
@@ -39,6 +49,19 @@ constexpr int kTriangleTexels = 3;
 constexpr int kNormalTexels = 3;
 constexpr int kNodeBoundsTexels = 3;
 constexpr int kNodeLinkTexels = 1;
+
+// A child link of nodeLinks (see above).
+constexpr uint32_t kLeafBit = 1u << 31;
+constexpr int kLeafCountShift = 27;
+constexpr uint32_t kMaxLeafFirst = (1u << kLeafCountShift) - 1;
+constexpr uint32_t kMaxLeafCount = 16;
+struct ChildLink {
+    uint32_t first = 0;  // first triangle of a leaf, or the interior node's index
+    uint32_t count = 0;  // triangles of a leaf; 0 for an interior node
+};
+// Throws fp::Error when the leaf cannot be encoded (first > kMaxLeafFirst, count > kMaxLeafCount).
+uint32_t encodeChild(const ChildLink& child);
+ChildLink decodeChild(uint32_t link);
 constexpr int kMaterialTexels = 4;
 constexpr int kLightTexels = 1;
 constexpr uint32_t kMaxFloatIndex = 1u << 24;
@@ -57,5 +80,11 @@ enum Unit : int {
 };
 
 ShaderDefines layoutDefines();
+
+// The BVH build options the renderer uses with this layout: leaves of up to 8 triangles, and a node
+// visit priced at 3 triangle tests, so that the SAH builder makes leaves of about 4 triangles. On the
+// suite this brings positions + BVH from about 76 to about 60 bytes per triangle at the same speed
+// (BENCHMARKS.md, optimisation log). The native reference builds its tree with the same options.
+BvhBuildOptions bvhOptions();
 
 }  // namespace fp::layout

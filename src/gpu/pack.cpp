@@ -16,11 +16,11 @@ float luminance(const glm::vec3& rgb) {
 size_t PackedScene::bytes() const {
     return sizeof(glm::vec4) *
                (triangles.size() + normals.size() + nodeBounds.size() + materials.size() + lights.size()) +
-           sizeof(glm::uvec4) * nodeLinks.size();
+           sizeof(glm::uvec2) * nodeLinks.size();
 }
 
 size_t PackedScene::geometryBytes() const {
-    return sizeof(glm::vec4) * (triangles.size() + nodeBounds.size()) + sizeof(glm::uvec4) * nodeLinks.size();
+    return sizeof(glm::vec4) * (triangles.size() + nodeBounds.size()) + sizeof(glm::uvec2) * nodeLinks.size();
 }
 
 namespace {
@@ -58,7 +58,8 @@ struct NodePacker {
         b[0] = {l.bounds.lo.x, l.bounds.lo.y, l.bounds.lo.z, l.bounds.hi.x};
         b[1] = {l.bounds.hi.y, l.bounds.hi.z, r.bounds.lo.x, r.bounds.lo.y};
         b[2] = {r.bounds.lo.z, r.bounds.hi.x, r.bounds.hi.y, r.bounds.hi.z};
-        out.nodeLinks[index] = {l.first, l.count, r.first, r.count};
+        out.nodeLinks[index] = {layout::encodeChild({l.first, l.count}),
+                                layout::encodeChild({r.first, r.count})};
     }
 };
 

@@ -13,7 +13,7 @@ namespace fp {
 
 struct PackedScene {
     std::vector<glm::vec4> triangles, normals, nodeBounds, materials, lights;
-    std::vector<glm::uvec4> nodeLinks;
+    std::vector<glm::uvec2> nodeLinks;
     uint32_t triangleCount = 0, nodeCount = 0, lightCount = 0;
     uint32_t bvhDepth = 0;         // deepest interior node (root = 0): the traversal stack must hold it
     float totalLightPower = 0.0f;  // sum over emitters of luminance(Ke) * area

@@ -29,7 +29,7 @@ SceneTextures::SceneTextures(const PackedScene& s, size_t maxTexels) {
     };
     const BufferSpec specs[kCount] = {
         spec("triangles", s.triangles, GL_RGBA32F),        spec("normals", s.normals, GL_RGBA32F),
-        spec("BVH node bounds", s.nodeBounds, GL_RGBA32F), spec("BVH node links", s.nodeLinks, GL_RGBA32UI),
+        spec("BVH node bounds", s.nodeBounds, GL_RGBA32F), spec("BVH node links", s.nodeLinks, GL_RG32UI),
         spec("materials", s.materials, GL_RGBA32F),        spec("lights", s.lights, GL_RGBA32F)};
 
     if (maxTexels == 0) {

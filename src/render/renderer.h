@@ -7,6 +7,7 @@
 #include "bvh/bvh.h"
 #include "gl/program.h"
 #include "gpu/environment.h"
+#include "gpu/layout.h"
 #include "gpu/pack.h"
 #include "gpu/scene_textures.h"
 #include "render/accumulation.h"
@@ -28,7 +29,8 @@ struct SceneStats {
 
 class Renderer {
   public:
-    Renderer(const Scene& scene, ShaderLibrary shaders = ShaderLibrary(), const BvhBuildOptions& bvh = {});
+    Renderer(const Scene& scene, ShaderLibrary shaders = ShaderLibrary(),
+             const BvhBuildOptions& bvh = layout::bvhOptions());
     ~Renderer();
 
     // Sets what to render; restarts accumulation, recompiling shaders only when the integrator, view or

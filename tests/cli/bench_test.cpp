@@ -48,6 +48,7 @@ TEST_F(Bench, WritesEveryFigureAsJson) {
     EXPECT_EQ(j["settings"]["width"], 16);
     EXPECT_EQ(j["settings"]["spp"], 1);
     EXPECT_EQ(j["settings"]["integrator"], "nee");
+    EXPECT_EQ(j["settings"]["samples_per_pass"], 8);
     expectPositive(j["bvh"], "build_seconds");
     expectPositive(j["bvh"], "sah_cost");
     for (const char* key :
@@ -72,6 +73,39 @@ TEST_F(Bench, WritesEveryFigureAsJson) {
     }
 }
 
+TEST_F(Bench, NativeReferenceGivesTheRatioInTheSameRun) {
+    std::string file = path("native.json");
+    CliRun r = fragpath("bench --size 16x16 --spp 1 --runs 3 --native --json " + file);
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_NE(r.output.find("gpu / native"), std::string::npos) << r.output;
+    std::ifstream in(file);
+    nlohmann::json j = nlohmann::json::parse(in);
+    const nlohmann::json& native = j["native"];
+    ASSERT_EQ(native["runs"].size(), 3u);
+    for (const nlohmann::json& run : native["runs"]) {
+        EXPECT_EQ(run["paths"], 16 * 16);
+        expectPositive(run, "paths_per_cpu_second");
+        EXPECT_GE(run["rays"].get<double>(), 16 * 16) << "at least the camera rays";
+    }
+    expectPositive(native["paths_per_cpu_second"], "median");
+    double expected = j["summary"]["paths_per_cpu_second"]["median"].get<double>() /
+                      native["paths_per_cpu_second"]["median"].get<double>();
+    EXPECT_NEAR(native["gpu_over_native"].get<double>(), expected, 1e-9 * expected);
+}
+
+TEST_F(Bench, NativeReferenceSkipsScenesItCannotRender) {
+    // The suite's scenes are Lambertian; a glossy OBJ is not, and is skipped with the reason.
+    std::string obj = path("metal.obj"), mtl = path("metal.mtl"), file = path("skip.json");
+    std::ofstream(mtl) << "newmtl m\nKd 0.5 0.5 0.5\nPm 1\n";
+    std::ofstream(obj) << "mtllib metal.mtl\nusemtl m\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n";
+    CliRun r = fragpath("bench " + obj + " --size 8x8 --spp 1 --runs 1 --native --json " + file);
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_NE(r.output.find("native reference skipped"), std::string::npos) << r.output;
+    std::ifstream in(file);
+    nlohmann::json j = nlohmann::json::parse(in);
+    EXPECT_NE(j["native"]["skipped"].get<std::string>().find("Lambertian"), std::string::npos);
+}
+
 TEST_F(Bench, WarnsWhenTheThreadCountIsLeftToLlvmpipe) {
     CliRun r = test::runFragpath("bench --size 8x8 --spp 1 --runs 1", "env -u LP_NUM_THREADS");
     ASSERT_EQ(r.exitCode, 0) << r.output;
@@ -83,8 +117,9 @@ TEST_F(Bench, WarnsWhenTheThreadCountIsLeftToLlvmpipe) {
 TEST_F(Bench, HelpListsTheOptions) {
     CliRun r = fragpath("bench --help");
     EXPECT_EQ(r.exitCode, 0);
-    for (const char* flag : {"--size", "--spp", "--runs", "--max-depth", "--integrator", "--json", "--suite",
-                             "--max-triangles", "--scenes", "--with-bunny", "256x256 with --suite"})
+    for (const char* flag :
+         {"--size", "--spp", "--runs", "--max-depth", "--integrator", "--json", "--suite", "--max-triangles",
+          "--scenes", "--with-bunny", "--native", "256x256 with --suite"})
         EXPECT_NE(r.output.find(flag), std::string::npos) << flag;
 }
 

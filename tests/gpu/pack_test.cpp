@@ -63,9 +63,9 @@ Aabb packedTriangleBounds(const PackedScene& p, uint32_t i) {
 void walk(const PackedScene& p, uint32_t node, std::vector<int>& visits, uint32_t& nodesSeen) {
     ++nodesSeen;
     ASSERT_LT(node, p.nodeCount);
-    const glm::uvec4 link = p.nodeLinks[node];
     for (int side = 0; side < 2; ++side) {
-        uint32_t first = link[2 * side], count = link[2 * side + 1];
+        layout::ChildLink link = layout::decodeChild(p.nodeLinks[node][side]);
+        uint32_t first = link.first, count = link.count;
         Aabb box = childBounds(p, node, side);
         if (count > 0) {
             for (uint32_t t = first; t < first + count; ++t) {
@@ -97,7 +97,7 @@ TEST(PackScene, EveryTriangleReachableOnceAndBoxesContainTheirContents) {
         walk(p, 0, visits, nodesSeen);
         EXPECT_EQ(nodesSeen, p.nodeCount) << n << " triangles";
         // A root that is a leaf is stored as a node with the leaf on both sides.
-        int expected = p.nodeCount == 1 && p.nodeLinks[0].x == p.nodeLinks[0].z ? 2 : 1;
+        int expected = p.nodeCount == 1 && p.nodeLinks[0].x == p.nodeLinks[0].y ? 2 : 1;
         for (int v : visits) EXPECT_EQ(v, expected) << n << " triangles";
     }
 }
@@ -129,8 +129,27 @@ TEST(PackScene, LightCdfIsPowerProportionalAndEndsAtOne) {
 TEST(PackScene, BytesPerTriangleAreReported) {
     Scene s = randomScene(1000, 3);
     PackedScene p = packScene(s, buildFor(s));
-    EXPECT_EQ(p.geometryBytes(), 16 * (p.triangles.size() + p.nodeBounds.size() + p.nodeLinks.size()));
+    EXPECT_EQ(p.geometryBytes(), 16 * (p.triangles.size() + p.nodeBounds.size()) + 8 * p.nodeLinks.size());
     EXPECT_GT(p.bytes(), p.geometryBytes());
+}
+
+TEST(PackScene, ChildLinksRoundTripAndRefuseWhatTheyCannotHold) {
+    for (layout::ChildLink c :
+         {layout::ChildLink{0, 0}, layout::ChildLink{12345, 0}, layout::ChildLink{0, 1},
+          layout::ChildLink{layout::kMaxLeafFirst, layout::kMaxLeafCount}, layout::ChildLink{777, 3}}) {
+        layout::ChildLink d = layout::decodeChild(layout::encodeChild(c));
+        EXPECT_EQ(d.first, c.first);
+        EXPECT_EQ(d.count, c.count);
+    }
+    EXPECT_THROW(layout::encodeChild({layout::kMaxLeafFirst + 1, 2}), Error);
+    EXPECT_THROW(layout::encodeChild({0, layout::kMaxLeafCount + 1}), Error);
+    // Coincident triangles cannot be split, so a builder allowed larger leaves makes one of all of them.
+    Scene s = randomScene(1, 5);
+    s.triangles.resize(layout::kMaxLeafCount + 1, s.triangles[0]);
+    std::vector<Aabb> bounds(s.triangles.size(), s.triangles[0].bounds());
+    BvhBuildOptions wide;
+    wide.maxLeafSize = int(layout::kMaxLeafCount) + 1;
+    EXPECT_THROW(packScene(s, buildBinnedSah(bounds, wide)), Error);
 }
 
 TEST(PackScene, MismatchedBvhIsRejected) {

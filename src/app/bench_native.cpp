@@ -1,0 +1,77 @@
+#include "app/bench_native.h"
+
+#include <cstdio>
+
+#include "core/error.h"
+#include "gpu/layout.h"
+#include "native/native_path.h"
+
+namespace fp::bench {
+
+Spread NativeMeasurement::pathsPerCpuSecond() const {
+    std::vector<double> values;
+    for (const Run& run : timed) values.push_back(run.pathsPerCpuSecond());
+    return values.empty() ? Spread{} : spread(values);
+}
+
+NativeMeasurement measureNative(const std::function<Scene()>& load, const BenchSettings& settings, int spp) {
+    NativeMeasurement m;
+    m.spp = spp;
+    Scene scene = load();
+    native::Scene prepared;
+    try {
+        prepared = native::buildScene(scene, layout::bvhOptions());
+    } catch (const Error& e) {
+        m.skipped = e.what();
+        return m;
+    }
+    Camera camera = scene.camera.value_or(frameBounds(scene.bounds()));
+    native::Settings s;
+    s.width = settings.render.width;
+    s.height = settings.render.height;
+    s.maxDepth = settings.render.maxDepth;
+    s.spp = spp;
+    for (int i = 0; i <= settings.runs; ++i) {  // run 0 warms the caches and is not counted
+        s.seed = uint32_t(i);
+        native::Result r = native::render(prepared, camera, s);
+        if (i == 0) continue;
+        Run run;
+        run.seed = s.seed;
+        run.wallSeconds = run.cpuSeconds = r.cpuSeconds;
+        run.paths = r.paths;
+        run.rays = r.rays;
+        m.timed.push_back(run);
+    }
+    return m;
+}
+
+void printNative(const NativeMeasurement& native, const SceneMeasurement& gpu) {
+    if (native.skipped) {
+        std::printf("native reference skipped: %s\n", native.skipped->c_str());
+        return;
+    }
+    Spread n = native.pathsPerCpuSecond();
+    double g = gpu.summary("paths_per_cpu_second").median;
+    std::printf(
+        "native reference %.4g paths/cpu-s (min %.4g, max %.4g; one thread, %d spp per run, median of %zu)\n"
+        "gpu / native     %.3f (paths per CPU-second of the shader over the native reference's)\n",
+        n.median, n.min, n.max, native.spp, native.timed.size(), g / n.median);
+}
+
+nlohmann::json nativeJson(const NativeMeasurement& native, const SceneMeasurement& gpu) {
+    if (native.skipped) return {{"skipped", *native.skipped}};
+    Spread n = native.pathsPerCpuSecond();
+    nlohmann::json runs = nlohmann::json::array();
+    for (const Run& run : native.timed)
+        runs.push_back({{"seed", run.seed},
+                        {"paths", run.paths},
+                        {"rays", run.rays},
+                        {"cpu_seconds", run.cpuSeconds},
+                        {"paths_per_cpu_second", run.pathsPerCpuSecond()}});
+    return {{"spp_per_run", native.spp},
+            {"runs", runs},
+            {"paths_per_cpu_second", {{"median", n.median}, {"min", n.min}, {"max", n.max}}},
+            {"gpu_over_native", gpu.summary("paths_per_cpu_second").median / n.median}};
+}
+
+}  // namespace fp::bench

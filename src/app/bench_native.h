@@ -1,0 +1,31 @@
+#pragma once
+// `fragpath bench --native`: the native reference (src/native) measured in the same process as the GPU
+// figures, so that their ratio compares the fragment shader with native code on the same machine at
+// the same moment: GPU paths per CPU-second over native paths per CPU-second.
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "app/bench_measure.h"
+
+namespace fp::bench {
+
+struct NativeMeasurement {
+    int spp = 1;                         // samples per pixel in each run
+    std::vector<Run> timed;              // cpuSeconds is the tracing thread's CPU time; wallSeconds equals it
+    std::optional<std::string> skipped;  // why there are no runs (a scene the reference cannot render)
+    Spread pathsPerCpuSecond() const;
+};
+
+// One untimed warm-up run, then settings.runs timed runs (run i with seed i) of `spp` samples per pixel
+// at the settings' size and depth, on the scene `load` gives.
+NativeMeasurement measureNative(const std::function<Scene()>& load, const BenchSettings& settings,
+                                int spp = 1);
+
+void printNative(const NativeMeasurement& native, const SceneMeasurement& gpu);
+nlohmann::json nativeJson(const NativeMeasurement& native, const SceneMeasurement& gpu);
+
+}  // namespace fp::bench

@@ -1,0 +1,263 @@
+#include "native/native_path.h"
+
+#include <time.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "core/error.h"
+#include "native/native_trace.h"
+
+namespace fp::native {
+
+namespace {
+
+constexpr float kPi = 3.14159265358979324f;
+
+// glsl/common/rng.glsl: the PCG hash (Jarzynski & Olano 2020) seeds, PCG-RXS-M-XS steps.
+uint32_t pcgHash(uint32_t v) {
+    uint32_t state = v * 747796405u + 2891336453u;
+    uint32_t word = ((state >> ((state >> 28u) + 4u)) ^ state) * 277803737u;
+    return (word >> 22u) ^ word;
+}
+
+struct Rng {
+    uint32_t state;
+    Rng(uint32_t seed, uint32_t x, uint32_t y, uint32_t sample)
+        : state(pcgHash(seed ^ pcgHash(x ^ pcgHash(y ^ pcgHash(sample))))) {}
+    float next() {
+        state = state * 747796405u + 2891336453u;
+        uint32_t word = ((state >> ((state >> 28u) + 4u)) ^ state) * 277803737u;
+        return float(((word >> 22u) ^ word) >> 8u) * (1.0f / 16777216.0f);
+    }
+};
+
+// glsl/common/sampling.glsl
+void orthonormalBasis(const glm::vec3& n, glm::vec3& t, glm::vec3& b) {
+    float s = n.z >= 0.0f ? 1.0f : -1.0f;
+    float a = -1.0f / (s + n.z);
+    float c = n.x * n.y * a;
+    t = {1.0f + s * n.x * n.x * a, s * c, -s * n.x};
+    b = {c, s + n.y * n.y * a, -n.y};
+}
+
+float powerHeuristic(float pdfA, float pdfB) {
+    float a = pdfA * pdfA, b = pdfB * pdfB;
+    return a / (a + b);
+}
+
+struct Surface {
+    glm::vec3 position, geometricNormal, shadingNormal, tangent, bitangent;
+    uint32_t material;
+    bool frontFace;
+    glm::vec3 toLocal(const glm::vec3& v) const {
+        return {glm::dot(v, tangent), glm::dot(v, bitangent), glm::dot(v, shadingNormal)};
+    }
+    glm::vec3 toWorld(const glm::vec3& v) const {
+        return v.x * tangent + v.y * bitangent + v.z * shadingNormal;
+    }
+    bool sameSide(const glm::vec3& local, const glm::vec3& world) const {
+        return (local.z > 0.0f) == (glm::dot(world, geometricNormal) > 0.0f);
+    }
+};
+
+struct LightSample {
+    glm::vec3 dir{0.0f, 0.0f, 1.0f};
+    float dist = 0.0f;
+    glm::vec3 radiance{0.0f};
+    float pdf = 0.0f;
+};
+
+class PathTracer {
+  public:
+    PathTracer(const Scene& scene, int maxDepth) : scene_(scene), maxDepth_(maxDepth) {
+        // lights.glsl environmentSelection(): half of the light samples when there are also emitters.
+        environmentSelection_ = scene.environment == glm::vec3(0.0f) ? 0.0f
+                                : scene.lights.empty()               ? 1.0f
+                                                                     : 0.5f;
+    }
+    double rays = 0;
+
+    // glsl/integrators/nee.glsl radiance(), for Lambertian materials (MATERIAL_TYPES == 1).
+    glm::vec3 radiance(Ray ray, Rng& rng) {
+        glm::vec3 L(0.0f), beta(1.0f);
+        float lastPdf = 0.0f;
+        bool fullWeight = true;
+        for (int depth = 0;; ++depth) {
+            Hit hit;
+            rays += 1;
+            if (!traverse(scene_, ray, kInf, false, hit)) {
+                glm::vec3 Le = scene_.environment;
+                L += beta * Le * (fullWeight ? 1.0f : powerHeuristic(lastPdf, environmentPdf()));
+                break;
+            }
+            Surface s = surfaceAt(ray, hit);
+            glm::vec3 Le = s.frontFace ? scene_.emission[s.material] : glm::vec3(0.0f);
+            if (Le != glm::vec3(0.0f))
+                L += beta * Le * (fullWeight ? 1.0f : powerHeuristic(lastPdf, lightPdf(ray, hit)));
+            if (depth == maxDepth_) break;
+
+            const glm::vec3& kd = scene_.diffuse[s.material];
+            LightSample ls = sampleLight(s.position, rng);
+            glm::vec3 wi = s.toLocal(ls.dir);
+            if (ls.pdf > 0.0f && s.sameSide(wi, ls.dir)) {
+                glm::vec3 f = wi.z > 0.0f ? kd / kPi * wi.z : glm::vec3(0.0f);
+                if (f != glm::vec3(0.0f)) {
+                    Hit shadow;
+                    rays += 1;
+                    if (!traverse(scene_, spawnRay(s, ls.dir), ls.dist * (1.0f - 1e-4f), true, shadow))
+                        L += beta * f * ls.radiance *
+                             powerHeuristic(ls.pdf, wi.z > 0.0f ? wi.z / kPi : 0.0f) / ls.pdf;
+                }
+            }
+
+            // bsdf.glsl bsdfSample() for a Lambertian surface: cosine-weighted (Malley's method). The
+            // third number is drawn and unused, as the shader draws vec3(rand2(), rand()).
+            float u0 = rng.next(), u1 = rng.next();
+            rng.next();
+            float r = std::sqrt(u0), phi = 2.0f * kPi * u1;
+            glm::vec3 local(r * std::cos(phi), r * std::sin(phi), std::sqrt(std::max(0.0f, 1.0f - u0)));
+            if (!(local.z > 0.0f)) break;
+            glm::vec3 dir = s.toWorld(local);
+            if (!s.sameSide(local, dir)) break;
+            beta *= kd;
+            lastPdf = local.z / kPi;
+            fullWeight = false;
+            // surface.glsl survivesRoulette() (pbrt-v4 PathIntegrator::Li).
+            if (depth >= 3) {
+                float keep = std::min(1.0f, std::max(beta.r, std::max(beta.g, beta.b)));
+                if (rng.next() >= keep) break;
+                beta /= keep;
+            }
+            ray = spawnRay(s, dir);
+        }
+        return L;
+    }
+
+  private:
+    // surface.glsl surfaceAt()
+    Surface surfaceAt(const Ray& ray, const Hit& hit) const {
+        const Tri& tri = scene_.tris[hit.triangle];
+        Surface s;
+        s.position = ray.origin + hit.t * ray.dir;
+        glm::vec3 n = glm::normalize(glm::cross(tri.e1, tri.e2));
+        s.frontFace = glm::dot(n, ray.dir) < 0.0f;
+        s.geometricNormal = s.frontFace ? n : -n;
+        const auto& vn = scene_.normals[hit.triangle];
+        glm::vec3 ns =
+            glm::normalize((1.0f - hit.uv.x - hit.uv.y) * vn[0] + hit.uv.x * vn[1] + hit.uv.y * vn[2]);
+        s.shadingNormal = glm::dot(ns, s.geometricNormal) < 0.0f ? -ns : ns;
+        orthonormalBasis(s.shadingNormal, s.tangent, s.bitangent);
+        s.material = tri.material;
+        return s;
+    }
+
+    Ray spawnRay(const Surface& s, const glm::vec3& dir) const {
+        float side = glm::dot(dir, s.geometricNormal) >= 0.0f ? 1.0f : -1.0f;
+        return {s.position + side * scene_.rayOffset * s.geometricNormal, dir};
+    }
+
+    float environmentPdf() const { return environmentSelection_ / (4.0f * kPi); }
+
+    // lights.glsl sampleLight()
+    LightSample sampleLight(const glm::vec3& from, Rng& rng) const {
+        LightSample ls;
+        float u = rng.next();
+        if (u < environmentSelection_) {
+            float z = 1.0f - 2.0f * rng.next(), phi = 2.0f * kPi * rng.next();
+            float r = std::sqrt(std::max(0.0f, 1.0f - z * z));
+            ls.dir = {r * std::cos(phi), r * std::sin(phi), z};
+            ls.dist = kInf;
+            ls.radiance = scene_.environment;
+            ls.pdf = environmentPdf();
+            return ls;
+        }
+        if (scene_.lights.empty()) return ls;
+        float v = (u - environmentSelection_) / (1.0f - environmentSelection_);
+        int lo = 0, hi = int(scene_.lights.size()) - 1;
+        while (lo < hi) {  // first entry whose cdf exceeds v
+            int mid = (lo + hi) / 2;
+            if (scene_.lights[mid].cdf <= v)
+                lo = mid + 1;
+            else
+                hi = mid;
+        }
+        const Light& light = scene_.lights[lo];
+        const Tri& tri = scene_.tris[light.triangle];
+        float b0 = rng.next(), b1 = rng.next();
+        float su = std::sqrt(b0);  // uniform on the triangle: sampling.glsl sampleTriangle()
+        glm::vec3 toLight = tri.v0 + (1.0f - su) * tri.e1 + b1 * su * tri.e2 - from;
+        float dist2 = glm::dot(toLight, toLight);
+        ls.dist = std::sqrt(dist2);
+        ls.dir = toLight / ls.dist;
+        float cosLight = -glm::dot(glm::normalize(glm::cross(tri.e1, tri.e2)), ls.dir);
+        if (cosLight <= 0.0f || dist2 == 0.0f) return ls;
+        ls.radiance = scene_.emission[tri.material];
+        ls.pdf = (1.0f - environmentSelection_) * light.pmf / light.area * dist2 / cosLight;
+        return ls;
+    }
+
+    // lights.glsl lightPdf()
+    float lightPdf(const Ray& ray, const Hit& hit) const {
+        const Tri& tri = scene_.tris[hit.triangle];
+        glm::vec3 n = glm::cross(tri.e1, tri.e2);
+        float area = 0.5f * glm::length(n);
+        float cosLight = std::abs(glm::dot(n, ray.dir)) / (2.0f * area);
+        return (1.0f - environmentSelection_) * tri.lightPmf / area * hit.t * hit.t / cosLight;
+    }
+
+    const Scene& scene_;
+    int maxDepth_;
+    float environmentSelection_ = 0.0f;
+};
+
+double threadCpuSeconds() {
+    timespec t{};
+    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
+    return double(t.tv_sec) + 1e-9 * double(t.tv_nsec);
+}
+
+}  // namespace
+
+Result render(const Scene& scene, const Camera& camera, const Settings& settings) {
+    if (settings.width < 1 || settings.height < 1 || settings.spp < 1 || settings.maxDepth < 0)
+        throw Error("native reference: size, spp and max depth must be positive");
+    Result out;
+    out.width = settings.width;
+    out.height = settings.height;
+    out.sum.assign(size_t(settings.width) * settings.height, glm::vec4(0.0f));
+    out.squares = out.sum;
+
+    // glsl/common/camera.glsl with the basis Renderer::draw computes.
+    glm::vec3 forward = glm::normalize(camera.target - camera.eye);
+    glm::vec3 rightUnit = glm::normalize(glm::cross(forward, camera.up));
+    glm::vec3 up = glm::cross(rightUnit, forward);
+    float tanHalf = std::tan(0.5f * glm::radians(camera.fovY));
+    float aspect = float(settings.width) / float(settings.height);
+    glm::vec3 right = rightUnit * tanHalf * aspect;
+    up *= tanHalf;
+    glm::vec2 resolution(settings.width, settings.height);
+
+    PathTracer tracer(scene, settings.maxDepth);
+    double cpuStart = threadCpuSeconds();
+    for (int y = 0; y < settings.height; ++y)  // y counts from the bottom, as gl_FragCoord does
+        for (int x = 0; x < settings.width; ++x) {
+            size_t index = size_t(settings.height - 1 - y) * settings.width + x;
+            for (int i = 0; i < settings.spp; ++i) {
+                Rng rng(settings.seed, uint32_t(x), uint32_t(y), settings.sampleOffset + uint32_t(i));
+                float jx = rng.next(), jy = rng.next();
+                glm::vec2 ndc = 2.0f * (glm::vec2(x, y) + glm::vec2(jx, jy)) / resolution - 1.0f;
+                Ray ray{camera.eye, glm::normalize(forward + ndc.x * right + ndc.y * up)};
+                glm::vec3 c = tracer.radiance(ray, rng);
+                if (!std::isfinite(c.x) || !std::isfinite(c.y) || !std::isfinite(c.z)) c = glm::vec3(0.0f);
+                out.sum[index] += glm::vec4(c, 1.0f);
+                out.squares[index] += glm::vec4(c * c, 0.0f);
+            }
+        }
+    out.cpuSeconds = threadCpuSeconds() - cpuStart;
+    out.paths = double(settings.width) * settings.height * settings.spp;
+    out.rays = tracer.rays;
+    return out;
+}
+
+}  // namespace fp::native
