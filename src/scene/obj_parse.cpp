@@ -117,13 +117,18 @@ std::vector<uint32_t> resolveMaterials(const ObjMesh& mesh, const std::string& n
     return bySlot;
 }
 
+std::vector<bool> usedMaterials(const Scene& scene) {
+    std::vector<bool> used(scene.materials.size(), false);
+    for (const Triangle& t : scene.triangles) used[t.material] = true;
+    return used;
+}
+
 // Loads the textures of the materials some triangle uses (each file once) into scene->textures and
 // points the materials at them; unused materials lose theirs, so that an unused broken map costs nothing.
 // A texture file is relative to its MTL library. Throws fp::Error naming the library, line and file if a
 // texture is missing or not an image.
 void loadTextures(const std::vector<TextureRef>& refs, const MtlLookup& lookup, Scene* scene) {
-    std::vector<bool> used(scene->materials.size(), false);
-    for (const Triangle& t : scene->triangles) used[t.material] = true;
+    std::vector<bool> used = usedMaterials(*scene);
     std::map<std::string, int32_t> loaded;  // by path relative to the OBJ
     for (size_t m = 0; m < scene->materials.size(); ++m) {
         int32_t& index = scene->materials[m].diffuseTexture;
@@ -134,7 +139,8 @@ void loadTextures(const std::vector<TextureRef>& refs, const MtlLookup& lookup, 
         }
         const TextureRef& ref = refs[static_cast<size_t>(index)];
         fs::path file(ref.texture.file);
-        std::string path = (file.is_absolute() ? file : fs::path(ref.libraryFile).parent_path() / file).string();
+        std::string path =
+            (file.is_absolute() ? file : fs::path(ref.libraryFile).parent_path() / file).lexically_normal().string();
         auto [it, added] = loaded.emplace(path, static_cast<int32_t>(scene->textures.size()));
         index = it->second;
         if (!added) continue;
@@ -175,6 +181,10 @@ void untextureFacesWithoutTexcoords(const std::vector<int>& noTexcoordLine, cons
         if (line != lastLine) faces.add(line);  // a polygon's triangles count once
         lastLine = line;
     }
+    // A material left to no triangle needs no texture (the renderer then compiles no lookups).
+    std::vector<bool> used = usedMaterials(*scene);
+    for (size_t m = 0; m < used.size(); ++m)
+        if (!used[m]) scene->materials[m].diffuseTexture = -1;
     faces.report(name, "gave", "face",
                  "of textured materials without texture coordinates (vt) Kd times the texture's mean colour");
 }
