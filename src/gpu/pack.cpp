@@ -20,7 +20,8 @@ size_t PackedScene::bytes() const {
 }
 
 size_t PackedScene::textureBytes() const {
-    return sizeof(glm::vec2) * texcoords.size() + textureTexels.size() + sizeof(glm::ivec4) * textureTable.size();
+    return sizeof(glm::vec2) * texcoords.size() + textureTexels.size() +
+           sizeof(glm::ivec4) * textureTable.size();
 }
 
 size_t PackedScene::geometryBytes() const {
@@ -131,8 +132,8 @@ PackedScene packScene(const Scene& scene, const Bvh& bvh) {
     bool textured = false;
     for (const Material& m : scene.materials) {
         if (m.diffuseTexture >= int32_t(scene.textures.size()))
-            throw Error("internal: material '" + m.name + "' names texture " + std::to_string(m.diffuseTexture) +
-                        " of " + std::to_string(scene.textures.size()));
+            throw Error("internal: material '" + m.name + "' names texture " +
+                        std::to_string(m.diffuseTexture) + " of " + std::to_string(scene.textures.size()));
         textured = textured || m.diffuseTexture >= 0;
         out.materials.emplace_back(m.diffuse, float(m.type));
         out.materials.emplace_back(m.emission, m.roughness);

@@ -26,8 +26,12 @@ SceneTextures::SceneTextures(const PackedScene& s, size_t maxTexels) {
     auto spec = [](const char* name, const auto& v, GLenum format, int unit, size_t texelBytes = 0) {
         using T = typename std::decay_t<decltype(v)>::value_type;
         if (texelBytes == 0) texelBytes = sizeof(T);
-        return BufferSpec{name, v.empty() ? static_cast<const void*>(&kUnused) : v.data(),
-                          v.empty() ? 1 : v.size() * sizeof(T) / texelBytes, texelBytes, format, unit};
+        return BufferSpec{name,
+                          v.empty() ? static_cast<const void*>(&kUnused) : v.data(),
+                          v.empty() ? 1 : v.size() * sizeof(T) / texelBytes,
+                          texelBytes,
+                          format,
+                          unit};
     };
     std::vector<BufferSpec> specs = {
         spec("triangles", s.triangles, GL_RGBA32F, layout::kTrianglesUnit),

@@ -19,7 +19,8 @@ bool unitVector(const glm::dvec3& v, glm::vec3* out) {
 
 // Whether every corner of the face gives a texture coordinate (the face's are then in *uv); a face with
 // a NaN or infinite one is counted as a repair and gets none.
-bool faceTexcoords(const ObjMesh& mesh, const ObjFace& face, MeshRepairs* repairs, std::vector<glm::vec2>* uv) {
+bool faceTexcoords(const ObjMesh& mesh, const ObjFace& face, MeshRepairs* repairs,
+                   std::vector<glm::vec2>* uv) {
     const ObjCorner* corners = &mesh.corners[face.firstCorner];
     uv->clear();
     for (uint32_t i = 0; i < face.cornerCount; ++i) {
@@ -37,7 +38,8 @@ bool faceTexcoords(const ObjMesh& mesh, const ObjFace& face, MeshRepairs* repair
 
 }  // namespace
 
-std::vector<Triangle> buildTriangles(const ObjMesh& mesh, MeshRepairs* repairs, std::vector<int>* noTexcoordLine) {
+std::vector<Triangle> buildTriangles(const ObjMesh& mesh, MeshRepairs* repairs,
+                                     std::vector<int>* noTexcoordLine) {
     // Positions as the renderer will store them (float), so that the degeneracy test judges exactly the
     // triangles downstream stages see.
     std::vector<glm::dvec3> stored(mesh.positions.size());

@@ -106,6 +106,7 @@ struct MtlTexture {
 // typed by materialFromMtl). Never throws for bad content: problems in a library only cost materials,
 // with warnings. Material::diffuseTexture indexes `*textures` (one entry per map_Kd used, appended);
 // the caller loads the files.
-std::vector<Material> parseMtl(std::string_view text, const std::string& name, std::vector<MtlTexture>* textures);
+std::vector<Material> parseMtl(std::string_view text, const std::string& name,
+                               std::vector<MtlTexture>* textures);
 
 }  // namespace fp

@@ -17,7 +17,8 @@ glm::vec3 color(const tinyobj::real_t c[3]) {
 
 }  // namespace
 
-std::vector<Material> parseMtl(std::string_view text, const std::string& name, std::vector<MtlTexture>* textures) {
+std::vector<Material> parseMtl(std::string_view text, const std::string& name,
+                               std::vector<MtlTexture>* textures) {
     std::vector<MtlGiven> given;
     std::istringstream stream(sanitizeMtl(text, name, &given));
     std::map<std::string, int> index;

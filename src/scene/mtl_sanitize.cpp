@@ -76,9 +76,9 @@ bool isScalarStatement(std::string_view key) {
 // takes; -o, -s and -t take one to three numbers. None is supported: all are reported as ignored.
 int mapOptionValues(std::string_view option, bool* variable) {
     static const std::pair<std::string_view, int> kOptions[] = {
-        {"-blendu", 1}, {"-blendv", 1}, {"-bm", 1},    {"-boost", 1},  {"-cc", 1},  {"-clamp", 1},
-        {"-imfchan", 1}, {"-mm", 2},    {"-texres", 1}, {"-type", 1},  {"-o", 3},   {"-s", 3},
-        {"-t", 3}};
+        {"-blendu", 1}, {"-blendv", 1},  {"-bm", 1}, {"-boost", 1},  {"-cc", 1},
+        {"-clamp", 1},  {"-imfchan", 1}, {"-mm", 2}, {"-texres", 1}, {"-type", 1},
+        {"-o", 3},      {"-s", 3},       {"-t", 3}};
     *variable = option == "-o" || option == "-s" || option == "-t";
     for (const auto& [name, count] : kOptions)
         if (name == option) return count;
@@ -228,8 +228,8 @@ std::string sanitizeMtl(std::string_view text, const std::string& name, std::vec
         } else if (isScalarStatement(words[0])) {
             out += scalarStatement(words, lines.number(), &repairs, current);
         } else {
-            if (words[0] == "map_Kd" && !mapStatement(line.substr(0, line.find('#')), words, lines.number(),
-                                                      &repairs, current))
+            if (words[0] == "map_Kd" &&
+                !mapStatement(line.substr(0, line.find('#')), words, lines.number(), &repairs, current))
                 repairs.malformed.add(words[0], lines.number());
             if (!isKnownStatement(words[0])) {
                 auto seen = std::find_if(repairs.unknown.begin(), repairs.unknown.end(),

@@ -16,7 +16,7 @@ namespace fp {
 struct ObjCorner {
     uint32_t vertex;  // 0-based
     int32_t normal;   // 0-based, -1 if the face gives none
-    int32_t texcoord; // 0-based, -1 if the face gives none
+    int32_t texcoord;  // 0-based, -1 if the face gives none
 };
 
 struct ObjFace {
@@ -54,6 +54,7 @@ struct MeshRepairs {
 // the face's vt where every corner gives one (a face with some corners but not all is invalid OBJ and
 // counts as having none). `noTexcoordLine` gets, per triangle, 0 if it has texture coordinates, else
 // the line of its face.
-std::vector<Triangle> buildTriangles(const ObjMesh& mesh, MeshRepairs* repairs, std::vector<int>* noTexcoordLine);
+std::vector<Triangle> buildTriangles(const ObjMesh& mesh, MeshRepairs* repairs,
+                                     std::vector<int>* noTexcoordLine);
 
 }  // namespace fp

@@ -139,8 +139,9 @@ void loadTextures(const std::vector<TextureRef>& refs, const MtlLookup& lookup, 
         }
         const TextureRef& ref = refs[static_cast<size_t>(index)];
         fs::path file(ref.texture.file);
-        std::string path =
-            (file.is_absolute() ? file : fs::path(ref.libraryFile).parent_path() / file).lexically_normal().string();
+        std::string path = (file.is_absolute() ? file : fs::path(ref.libraryFile).parent_path() / file)
+                               .lexically_normal()
+                               .string();
         auto [it, added] = loaded.emplace(path, static_cast<int32_t>(scene->textures.size()));
         index = it->second;
         if (!added) continue;
@@ -162,7 +163,8 @@ void loadTextures(const std::vector<TextureRef>& refs, const MtlLookup& lookup, 
 // Triangles without texture coordinates cannot look a texture up: they get a copy of their material
 // without it, whose Kd is multiplied by the texture's mean linear colour (so the surface keeps the
 // texture's average albedo). One warning counts them.
-void untextureFacesWithoutTexcoords(const std::vector<int>& noTexcoordLine, const std::string& name, Scene* scene) {
+void untextureFacesWithoutTexcoords(const std::vector<int>& noTexcoordLine, const std::string& name,
+                                    Scene* scene) {
     std::map<uint32_t, uint32_t> copyOf;
     RepairTally faces;
     int lastLine = 0;
@@ -232,8 +234,7 @@ Scene parseObj(std::string_view bytes, const std::string& name, const MtlLookup&
     repairs.degenerate.report(name, "dropped", "degenerate (zero-area) triangle");
     repairs.badNormals.report(name, "used the geometric normal on", "face",
                               "with zero or NaN vertex normals");
-    repairs.badTexcoords.report(name, "used no texture coordinates on", "face",
-                                "with NaN or infinite ones");
+    repairs.badTexcoords.report(name, "used no texture coordinates on", "face", "with NaN or infinite ones");
     return scene;
 }
 

@@ -155,9 +155,11 @@ class Scanner {
             }
             long long vertexIndex = resolve(v, word, "vertex", vertices_);
             canonical += ' ' + std::to_string(vertexIndex);
-            if (!vt.empty()) canonical += '/' + std::to_string(resolve(vt, word, "texture coordinate", texcoords_));
+            if (!vt.empty())
+                canonical += '/' + std::to_string(resolve(vt, word, "texture coordinate", texcoords_));
             if (!vn.empty())
-                canonical += (vt.empty() ? "//" : "/") + std::to_string(resolve(vn, word, "normal", normals_));
+                canonical +=
+                    (vt.empty() ? "//" : "/") + std::to_string(resolve(vn, word, "normal", normals_));
         }
         if (corners < 3) {
             out_.shortFaces.add(line_);

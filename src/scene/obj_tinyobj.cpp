@@ -39,9 +39,8 @@ struct Reader {
             {line, static_cast<uint32_t>(r.mesh.corners.size()), static_cast<uint32_t>(count), r.slot});
         // The scan made every index absolute and 1-based; 0 means "not given".
         for (int i = 0; i < count; ++i)
-            r.mesh.corners.push_back(
-                {static_cast<uint32_t>(indices[i].vertex_index - 1), indices[i].normal_index - 1,
-                 indices[i].texcoord_index - 1});
+            r.mesh.corners.push_back({static_cast<uint32_t>(indices[i].vertex_index - 1),
+                                      indices[i].normal_index - 1, indices[i].texcoord_index - 1});
     }
     static void material(void* user, const char* name, int) {
         // Names, not tinyobjloader's ids: the MTL libraries are read separately, after the geometry.

@@ -161,7 +161,8 @@ TEST(PackScene, TexcoordsInLeafOrderAndTheTextureTable) {
     ASSERT_EQ(p.texcoords.size(), 200u * layout::kTexcoordTexels);
     for (size_t i = 0; i < 200; ++i)
         for (int k = 0; k < 3; ++k)
-            ASSERT_EQ(p.texcoords[i * layout::kTexcoordTexels + size_t(k)], glm::vec2(float(bvh.primIndex[i]), float(k)));
+            ASSERT_EQ(p.texcoords[i * layout::kTexcoordTexels + size_t(k)],
+                      glm::vec2(float(bvh.primIndex[i]), float(k)));
     // The table: (first texel, width, height, 0), textures back to back.
     ASSERT_EQ(p.textureTable.size(), 2u);
     EXPECT_EQ(p.textureTable[0], glm::ivec4(0, 3, 2, 0));
@@ -169,7 +170,8 @@ TEST(PackScene, TexcoordsInLeafOrderAndTheTextureTable) {
     ASSERT_EQ(p.textureTexels.size(), 4u * (6 + 8));
     for (int t = 0; t < 2; ++t)
         for (size_t i = 0; i < s.textures[size_t(t)].image.texels.size(); ++i)
-            EXPECT_EQ(p.textureTexels[4 * size_t(p.textureTable[size_t(t)].x) + i], s.textures[size_t(t)].image.texels[i]);
+            EXPECT_EQ(p.textureTexels[4 * size_t(p.textureTable[size_t(t)].x) + i],
+                      s.textures[size_t(t)].image.texels[i]);
     // Each material's fifth texel names its texture.
     for (size_t m = 0; m < 3; ++m)
         EXPECT_EQ(p.materials[m * layout::kMaterialTexels + 4].x, float(s.materials[m].diffuseTexture)) << m;

@@ -140,7 +140,8 @@ class BsdfProbe {
     void setMaterial(const Material& m) {
         const glm::vec4 texels[layout::kMaterialTexels] = {
             glm::vec4(m.diffuse, float(m.type)), glm::vec4(m.emission, m.roughness),
-            glm::vec4(m.specular, m.ior), glm::vec4(m.transmission, 0.0f), glm::vec4(-1.0f, 0.0f, 0.0f, 0.0f)};
+            glm::vec4(m.specular, m.ior), glm::vec4(m.transmission, 0.0f),
+            glm::vec4(-1.0f, 0.0f, 0.0f, 0.0f)};
         glBindBuffer(GL_TEXTURE_BUFFER, materialBuffer_);
         glBufferSubData(GL_TEXTURE_BUFFER, 0, sizeof(texels), texels);
     }

@@ -22,7 +22,8 @@ std::vector<uint8_t> gradientTexels() {
     std::vector<uint8_t> rgba;
     for (int y = 0; y < kTexSize; ++y)
         for (int x = 0; x < kTexSize; ++x)
-            rgba.insert(rgba.end(), {uint8_t(20 + 70 * x), uint8_t(30 + 60 * y), uint8_t(200 - 12 * (x + 3 * y)), 255});
+            rgba.insert(rgba.end(),
+                        {uint8_t(20 + 70 * x), uint8_t(30 + 60 * y), uint8_t(200 - 12 * (x + 3 * y)), 255});
     return rgba;
 }
 
@@ -38,21 +39,25 @@ glm::vec3 bilinear(const std::vector<uint8_t>& rgba, glm::vec2 uv) {
     int x0 = int(std::floor(x)), y0 = int(std::floor(y));
     float fx = x - float(x0), fy = y - float(y0);
     auto at = [&](int i, int j) {
-        return decodedTexel(rgba, ((i % kTexSize) + kTexSize) % kTexSize, ((j % kTexSize) + kTexSize) % kTexSize);
+        return decodedTexel(rgba, ((i % kTexSize) + kTexSize) % kTexSize,
+                            ((j % kTexSize) + kTexSize) % kTexSize);
     };
-    return (1 - fy) * ((1 - fx) * at(x0, y0) + fx * at(x0 + 1, y0)) + fy * ((1 - fx) * at(x0, y0 + 1) + fx * at(x0 + 1, y0 + 1));
+    return (1 - fy) * ((1 - fx) * at(x0, y0) + fx * at(x0 + 1, y0)) +
+           fy * ((1 - fx) * at(x0, y0 + 1) + fx * at(x0 + 1, y0 + 1));
 }
 
 // The square [-1, 1]^2 in z = 0, facing +z, with vt (x + 1) / 2, (y + 1) / 2 (or none), textured
 // with `rgba` through an MTL library in a subdirectory.
-Scene texturedQuad(const std::vector<uint8_t>& rgba, bool withTexcoords, const std::string& material = "Kd 1\n") {
+Scene texturedQuad(const std::vector<uint8_t>& rgba, bool withTexcoords,
+                   const std::string& material = "Kd 1\n") {
     TempDir dir;
     dir.write("lib/quad.mtl", "newmtl tex\n" + material + "map_Kd checker.png\n");
     dir.write("lib/checker.png", pngBytes(kTexSize, kTexSize, rgba));
     std::string faces = withTexcoords ? "f 1/1 2/2 3/3 4/4\n" : "f 1 2 3 4\n";
     return loadObj(dir.write("quad.obj",
                              "mtllib lib/quad.mtl\nv -1 -1 0\nv 1 -1 0\nv 1 1 0\nv -1 1 0\n"
-                             "vt 0 0\nvt 1 0\nvt 1 1\nvt 0 1\nusemtl tex\n" + faces));
+                             "vt 0 0\nvt 1 0\nvt 1 1\nvt 0 1\nusemtl tex\n" +
+                                 faces));
 }
 
 // At distance 1 with a 90 degree field of view the quad fills the image exactly: the pixel centre
@@ -87,7 +92,8 @@ TEST(Textures, AlbedoViewReproducesTheTexture) {
     for (int y = 0; y < kTexSize; ++y)
         for (int x = 0; x < kTexSize; ++x)
             for (int c = 0; c < 3; ++c)
-                EXPECT_NEAR(exact.at(x, y)[c], decodedTexel(rgba, x, y)[c], 1e-4f) << x << "," << y << " channel " << c;
+                EXPECT_NEAR(exact.at(x, y)[c], decodedTexel(rgba, x, y)[c], 1e-4f)
+                    << x << "," << y << " channel " << c;
     // Four pixels per texel in each direction: the filter blends neighbours, across the wrap at the edges.
     const int size = 4 * kTexSize;
     Image filtered = albedoView(renderer, size);
@@ -102,10 +108,11 @@ TEST(Textures, AlbedoViewReproducesTheTexture) {
 TEST(Textures, KdMultipliesTheTextureAndPlasticBasesAreTextured) {
     ensureGlContext();
     std::vector<uint8_t> rgba = gradientTexels();
-    for (const std::string& material : {std::string("Kd 0.5 0.25 1\n"), std::string("Kd 0.5 0.25 1\nKs 0.04\n")}) {
+    for (const std::string& material :
+         {std::string("Kd 0.5 0.25 1\n"), std::string("Kd 0.5 0.25 1\nKs 0.04\n")}) {
         Scene scene = texturedQuad(rgba, true, material);
-        ASSERT_EQ(scene.materials[0].type, material.find("Ks") != std::string::npos ? MaterialType::Plastic
-                                                                                     : MaterialType::Diffuse);
+        ASSERT_EQ(scene.materials[0].type,
+                  material.find("Ks") != std::string::npos ? MaterialType::Plastic : MaterialType::Diffuse);
         Renderer renderer(scene);
         Image image = albedoView(renderer, kTexSize);
         for (int y = 0; y < kTexSize; ++y)
@@ -135,7 +142,8 @@ TEST(Textures, EveryIntegratorSeesTheTexturedAlbedoUnderAUniformSky) {
             for (int c = 0; c < 3; ++c) {
                 EXPECT_NEAR(e.mean[c], mean[c], 5.0f * e.standardError[c] + 1e-5f)
                     << integratorName(integrator) << " depth " << depth << " channel " << c;
-                EXPECT_LT(5.0f * e.standardError[c], 0.1f * mean[c]) << "too noisy to tell Kd 1 from the texture";
+                EXPECT_LT(5.0f * e.standardError[c], 0.1f * mean[c])
+                    << "too noisy to tell Kd 1 from the texture";
             }
             EXPECT_EQ(acc.droppedSamples(), 0u);
         }
@@ -150,7 +158,8 @@ TEST(Textures, BdptJoinsSeeTheSameTexturedKdAsNee) {
         glm::vec3 n = glm::abs(t.geometricNormal());
         int axis = n.x > n.y && n.x > n.z ? 0 : n.y > n.z ? 1 : 2;
         for (int k = 0; k < 3; ++k)
-            t.uv[size_t(k)] = 0.5f * (glm::vec2(t.p[size_t(k)][(axis + 1) % 3], t.p[size_t(k)][(axis + 2) % 3]) + 1.0f);
+            t.uv[size_t(k)] =
+                0.5f * (glm::vec2(t.p[size_t(k)][(axis + 1) % 3], t.p[size_t(k)][(axis + 2) % 3]) + 1.0f);
     }
     scene.textures.push_back({"gradient", Rgba8Image{kTexSize, kTexSize, gradientTexels()}});
     scene.materials[0].diffuseTexture = 0;

@@ -347,8 +347,9 @@ TEST(MtlTypes, HarmlessStatementsAcceptedSilently) {
 }
 
 TEST(MtlTypes, DiffuseTextureNamesItsFileAndLineAndMultipliesKd) {
-    Parsed p = parse("newmtl a\nKd 0.2 0.3 0.4\nmap_Kd a.png\nnewmtl b\nmap_Kd my b.png # comment\n"
-                     "newmtl c\nKe 1\nnewmtl d\nKd 0.5\nmap_Kd tex\\wood.png\n");
+    Parsed p = parse(
+        "newmtl a\nKd 0.2 0.3 0.4\nmap_Kd a.png\nnewmtl b\nmap_Kd my b.png # comment\n"
+        "newmtl c\nKe 1\nnewmtl d\nKd 0.5\nmap_Kd tex\\wood.png\n");
     EXPECT_TRUE(p.warnings.empty()) << joined(p.warnings);
     ASSERT_EQ(p.materials.size(), 4u);
     ASSERT_EQ(p.textures.size(), 3u);
@@ -370,12 +371,14 @@ TEST(MtlTypes, DiffuseTextureNamesItsFileAndLineAndMultipliesKd) {
 }
 
 TEST(MtlTypes, TextureOptionsAreWarnedAboutOncePerFile) {
-    Parsed p = parse("newmtl a\nmap_Kd -s 2 2 1 -clamp on a.png\nnewmtl b\nmap_Kd -o 0.5 -s 3 b.png\n"
-                     "newmtl c\nmap_Kd -mm 0 1 -blendu off -s 1 2 c d.png\n");
+    Parsed p = parse(
+        "newmtl a\nmap_Kd -s 2 2 1 -clamp on a.png\nnewmtl b\nmap_Kd -o 0.5 -s 3 b.png\n"
+        "newmtl c\nmap_Kd -mm 0 1 -blendu off -s 1 2 c d.png\n");
     ASSERT_EQ(p.warnings.size(), 1u) << joined(p.warnings);
-    EXPECT_EQ(p.warnings[0],
-              "t.mtl: ignored 7 map_Kd -s/-clamp/-o/-mm/-blendu options (textures repeat, unscaled and unshifted) "
-              "(first at line 2)");
+    EXPECT_EQ(
+        p.warnings[0],
+        "t.mtl: ignored 7 map_Kd -s/-clamp/-o/-mm/-blendu options (textures repeat, unscaled and unshifted) "
+        "(first at line 2)");
     ASSERT_EQ(p.textures.size(), 3u);
     EXPECT_EQ(p.textures[0].file, "a.png");
     EXPECT_EQ(p.textures[1].file, "b.png");
@@ -389,12 +392,14 @@ TEST(MtlTypes, TextureWithoutFileIsMalformed) {
 }
 
 TEST(MtlTypes, TextureOnMetalOrGlassIsIgnoredWithAWarning) {
-    Parsed p = parse("newmtl gold\nKd 1 0.8 0.3\nPm 1\nmap_Kd g.png\nnewmtl glass\nillum 7\nmap_Kd x.png\n"
-                     "newmtl plastic\nKd 0.5\nKs 0.04\nmap_Kd p.png\n");
+    Parsed p = parse(
+        "newmtl gold\nKd 1 0.8 0.3\nPm 1\nmap_Kd g.png\nnewmtl glass\nillum 7\nmap_Kd x.png\n"
+        "newmtl plastic\nKd 0.5\nKs 0.04\nmap_Kd p.png\n");
     ASSERT_EQ(p.warnings.size(), 1u) << joined(p.warnings);
-    EXPECT_EQ(p.warnings[0],
-              "t.mtl: ignored map_Kd of 2 metal or glass materials (only Lambertian and plastic materials have a "
-              "diffuse colour) (first at line 4)");
+    EXPECT_EQ(
+        p.warnings[0],
+        "t.mtl: ignored map_Kd of 2 metal or glass materials (only Lambertian and plastic materials have a "
+        "diffuse colour) (first at line 4)");
     ASSERT_EQ(p.materials.size(), 3u);
     EXPECT_EQ(p.materials[0].diffuseTexture, -1);
     EXPECT_EQ(p.materials[1].diffuseTexture, -1);

@@ -64,11 +64,13 @@ TEST(ObjTexture, TexcoordIndexOutOfRangeIsRejected) {
 TEST(ObjTexture, FacesWithoutTexcoordsGetTheTexturesMeanColour) {
     WarningCapture capture;
     // Line 11: no vt; line 12: vt on two corners only (invalid OBJ, taken as none); line 13: fine.
-    Scene scene = loadTextured("f 1 2 3\nf 1/1 3/3 4\nf 1/1 3/3 4/4\n", "newmtl tex\nKd 0.5\nmap_Kd tex.png\n");
+    Scene scene =
+        loadTextured("f 1 2 3\nf 1/1 3/3 4\nf 1/1 3/3 4/4\n", "newmtl tex\nKd 0.5\nmap_Kd tex.png\n");
     ASSERT_EQ(capture.messages().size(), 1u) << test::joined(capture);
     EXPECT_EQ(capture.messages()[0],
-              scene.source + ": gave 2 faces of textured materials without texture coordinates (vt) Kd times the "
-                             "texture's mean colour (first at line 11)");
+              scene.source +
+                  ": gave 2 faces of textured materials without texture coordinates (vt) Kd times the "
+                  "texture's mean colour (first at line 11)");
     ASSERT_EQ(scene.triangles.size(), 3u);
     float red = srgbDecode(1.0f);
     glm::vec3 mean = 0.5f * glm::vec3(red, 0.0f, red);  // half the texels red, half blue
