@@ -57,7 +57,6 @@ struct PathVertex {
     vec3 wo;        // unit direction toward the previous vertex of the same subpath (unused at y0, z0)
     vec3 beta;      // subpath throughput up to and including this vertex
     int material;
-    vec3 diffuse;   // the material's Kd here, textured (surface.glsl): fetchMaterial alone would miss it
     float eta;      // n on the far side / n on the arrival side (dielectrics)
     float pdfFwd;   // area density of this vertex when sampled from its predecessor in its subpath
     float pdfRev;   // area density of this vertex when sampled from the other direction
@@ -72,12 +71,25 @@ vec3 gSpectralWeight = vec3(1.0);
 void storeCameraVertex(int i, PathVertex v) { gCamera[i] = v; }
 void storeLightVertex(int i, PathVertex v) { gLight[i] = v; }
 
-// The material at a stored vertex, with the Kd its Surface had (without textures the two are equal,
-// and reading the stored one only would cost untextured scenes the stores).
-MaterialData vertexMaterial(PathVertex v) {
-    MaterialData m = fetchMaterial(v.material);
+// The textured Kd of each stored surface vertex (surface.glsl), which fetchMaterial alone would miss;
+// kept beside PathVertex so that scenes without textures store nothing more.
 #ifdef SURFACE_TEXTURES
-    m.diffuse = v.diffuse;
+vec3 gCameraDiffuse[BDPT_CAMERA_VERTICES];
+vec3 gLightDiffuse[BDPT_MAX_LIGHT_VERTICES];
+#endif
+
+void keepDiffuse(bool camera, int i, Surface s) {
+#ifdef SURFACE_TEXTURES
+    if (camera) gCameraDiffuse[i] = s.material.diffuse;
+    else gLightDiffuse[i] = s.material.diffuse;
+#endif
+}
+
+// The material at stored vertex i of the camera or light subpath, with its Surface's Kd.
+MaterialData vertexMaterial(bool camera, int i) {
+    MaterialData m = fetchMaterial(camera ? gCamera[i].material : gLight[i].material);
+#ifdef SURFACE_TEXTURES
+    m.diffuse = camera ? gCameraDiffuse[i] : gLightDiffuse[i];
 #endif
     return m;
 }
@@ -210,7 +222,7 @@ int traceLightSubpath(int maxDepth) {
     float pdfPosition = light.z / light.w;  // pmf / area
     vec3 Le = materialEmission(tri.material);
     PathVertex y0 = PathVertex(tri.v0 + b.x * tri.e1 + b.y * tri.e2, normal, normal, normal, Le / pdfPosition,
-                               tri.material, vec3(0.0), 1.0, pdfPosition, 0.0, false, false);
+                               tri.material, 1.0, pdfPosition, 0.0, false, false);
     storeLightVertex(0, y0);
     if (n == 1) return 1;
 
@@ -228,9 +240,10 @@ int traceLightSubpath(int maxDepth) {
         Surface s = surfaceAt(ray, hit);
         dispersive = meetDispersion(s) || dispersive;
         PathVertex y = PathVertex(s.position, s.geometricNormal, s.shadingNormal, -ray.dir, beta,
-                                  s.materialIndex, s.material.diffuse, s.eta, 0.0, 0.0, false, dispersive);
+                                  s.materialIndex, s.eta, 0.0, 0.0, false, dispersive);
         y.pdfFwd = toArea(pdfDir, gLight[count - 1].p, y);
         storeLightVertex(count, y);
+        keepDiffuse(false, count, s);
         ++count;
         if (count == n) break;
 
@@ -268,14 +281,14 @@ vec3 connectToLight(int t) {
     vec2 b = sampleTriangle(rand2());
     vec3 normal = normalize(cross(tri.e1, tri.e2));
     PathVertex y = PathVertex(tri.v0 + b.x * tri.e1 + b.y * tri.e2, normal, normal, normal, vec3(0.0),
-                              tri.material, vec3(0.0), 1.0, light.z / light.w, 0.0, false, false);
+                              tri.material, 1.0, light.z / light.w, 0.0, false, false);
     vec3 d = y.p - c.p;
     float dist2 = dot(d, d);
     if (dist2 == 0.0) return vec3(0.0);
     d *= inversesqrt(dist2);
     float cosLight = -dot(normal, d);
     if (cosLight <= 0.0) return vec3(0.0);  // one-sided emitter seen from behind
-    MaterialData mc = vertexMaterial(c);
+    MaterialData mc = vertexMaterial(true, t - 1);
     vec3 f = vertexBsdf(c, mc, c.wo, d, false);
     if (f == vec3(0.0)) return vec3(0.0);
     float zRevLast = toArea(cosLight / PI, y.p, c);
@@ -292,13 +305,13 @@ vec3 connectToLight(int t) {
 // (see vertexBsdf), so G = V / r^2.
 vec3 connectSubpaths(int s, int t) {
     PathVertex c = gCamera[t - 1], l = gLight[s - 1];
-    MaterialData ml = vertexMaterial(l);
+    MaterialData ml = vertexMaterial(false, s - 1);
     if (isDeltaOnly(ml)) return vec3(0.0);
     vec3 d = l.p - c.p;
     float dist2 = dot(d, d);
     if (dist2 == 0.0) return vec3(0.0);
     d *= inversesqrt(dist2);
-    MaterialData mc = vertexMaterial(c);
+    MaterialData mc = vertexMaterial(true, t - 1);
     vec3 fc = vertexBsdf(c, mc, c.wo, d, false);
     if (fc == vec3(0.0)) return vec3(0.0);
     vec3 fl = vertexBsdf(l, ml, l.wo, -d, true);
@@ -319,7 +332,7 @@ vec3 radiance(Ray ray) {
     gSpectralWeight = vec3(1.0);
     int lightVertices = traceLightSubpath(maxDepth);
 
-    storeCameraVertex(0, PathVertex(ray.origin, ray.dir, ray.dir, ray.dir, vec3(1.0), 0, vec3(0.0), 1.0, 1.0, 0.0, false, false));
+    storeCameraVertex(0, PathVertex(ray.origin, ray.dir, ray.dir, ray.dir, vec3(1.0), 0, 1.0, 1.0, 0.0, false, false));
     vec3 L = vec3(0.0), beta = vec3(1.0);
     float pdfDir = 1.0;  // solid-angle density of the direction that led here (the camera's is not needed)
     bool dispersive = false;
@@ -334,9 +347,10 @@ vec3 radiance(Ray ray) {
         Surface s = surfaceAt(ray, hit);
         dispersive = meetDispersion(s) || dispersive;
         PathVertex z = PathVertex(s.position, s.geometricNormal, s.shadingNormal, -ray.dir, beta, s.materialIndex,
-                                  s.material.diffuse, s.eta, 1.0, 0.0, false, dispersive);
+                                  s.eta, 1.0, 0.0, false, dispersive);
         if (t >= 3) z.pdfFwd = toArea(pdfDir, gCamera[t - 2].p, z);
         storeCameraVertex(t - 1, z);
+        keepDiffuse(true, t - 1, s);
 
         // s = 0: the camera subpath hit an emitter.
         vec3 Le = emittedRadiance(s);
