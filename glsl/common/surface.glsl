@@ -24,6 +24,10 @@ Surface surfaceAt(Ray ray, Hit hit) {
     orthonormalBasis(s.shadingNormal, s.tangent, s.bitangent);
     s.materialIndex = tri.material;
     s.material = fetchMaterial(s.materialIndex);
+#ifdef SURFACE_TEXTURES
+    // The one place a texture meets a material: every integrator and view reads Kd from here.
+    s.material.diffuse = texturedDiffuse(s.materialIndex, s.material.diffuse, hit.triangle, hit.uv);
+#endif
     // Front faces face out of a closed glass object: a ray hitting one enters it.
     s.eta = s.frontFace ? s.material.ior : 1.0 / s.material.ior;
     return s;

@@ -71,6 +71,29 @@ vec3 gSpectralWeight = vec3(1.0);
 void storeCameraVertex(int i, PathVertex v) { gCamera[i] = v; }
 void storeLightVertex(int i, PathVertex v) { gLight[i] = v; }
 
+// The textured Kd of each stored surface vertex (surface.glsl), which fetchMaterial alone would miss;
+// kept beside PathVertex so that scenes without textures store nothing more.
+#ifdef SURFACE_TEXTURES
+vec3 gCameraDiffuse[BDPT_CAMERA_VERTICES];
+vec3 gLightDiffuse[BDPT_MAX_LIGHT_VERTICES];
+#endif
+
+void keepDiffuse(bool camera, int i, Surface s) {
+#ifdef SURFACE_TEXTURES
+    if (camera) gCameraDiffuse[i] = s.material.diffuse;
+    else gLightDiffuse[i] = s.material.diffuse;
+#endif
+}
+
+// The material at stored vertex i of the camera or light subpath, with its Surface's Kd.
+MaterialData vertexMaterial(bool camera, int i) {
+    MaterialData m = fetchMaterial(camera ? gCamera[i].material : gLight[i].material);
+#ifdef SURFACE_TEXTURES
+    m.diffuse = camera ? gCameraDiffuse[i] : gLightDiffuse[i];
+#endif
+    return m;
+}
+
 vec3 spectralFactor(bool dispersive) { return dispersive ? gSpectralWeight : vec3(1.0); }
 
 // The convention for delta densities in the weight ratios (pbrt-v3 16.3.4): a delta density is
@@ -220,6 +243,7 @@ int traceLightSubpath(int maxDepth) {
                                   s.materialIndex, s.eta, 0.0, 0.0, false, dispersive);
         y.pdfFwd = toArea(pdfDir, gLight[count - 1].p, y);
         storeLightVertex(count, y);
+        keepDiffuse(false, count, s);
         ++count;
         if (count == n) break;
 
@@ -264,7 +288,7 @@ vec3 connectToLight(int t) {
     d *= inversesqrt(dist2);
     float cosLight = -dot(normal, d);
     if (cosLight <= 0.0) return vec3(0.0);  // one-sided emitter seen from behind
-    MaterialData mc = fetchMaterial(c.material);
+    MaterialData mc = vertexMaterial(true, t - 1);
     vec3 f = vertexBsdf(c, mc, c.wo, d, false);
     if (f == vec3(0.0)) return vec3(0.0);
     float zRevLast = toArea(cosLight / PI, y.p, c);
@@ -281,13 +305,13 @@ vec3 connectToLight(int t) {
 // (see vertexBsdf), so G = V / r^2.
 vec3 connectSubpaths(int s, int t) {
     PathVertex c = gCamera[t - 1], l = gLight[s - 1];
-    MaterialData ml = fetchMaterial(l.material);
+    MaterialData ml = vertexMaterial(false, s - 1);
     if (isDeltaOnly(ml)) return vec3(0.0);
     vec3 d = l.p - c.p;
     float dist2 = dot(d, d);
     if (dist2 == 0.0) return vec3(0.0);
     d *= inversesqrt(dist2);
-    MaterialData mc = fetchMaterial(c.material);
+    MaterialData mc = vertexMaterial(true, t - 1);
     vec3 fc = vertexBsdf(c, mc, c.wo, d, false);
     if (fc == vec3(0.0)) return vec3(0.0);
     vec3 fl = vertexBsdf(l, ml, l.wo, -d, true);
@@ -326,6 +350,7 @@ vec3 radiance(Ray ray) {
                                   s.eta, 1.0, 0.0, false, dispersive);
         if (t >= 3) z.pdfFwd = toArea(pdfDir, gCamera[t - 2].p, z);
         storeCameraVertex(t - 1, z);
+        keepDiffuse(true, t - 1, s);
 
         // s = 0: the camera subpath hit an emitter.
         vec3 Le = emittedRadiance(s);

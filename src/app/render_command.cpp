@@ -213,8 +213,11 @@ int renderCommand(const std::vector<std::string>& argv) {
         std::printf("bvh build        %.3f s, %.3f CPU-s, threads %d (%.3g triangles/s)\n",
                     s.bvhBuildSeconds, s.bvhBuildCpuSeconds, s.bvhBuildThreads,
                     s.bvhBuildSeconds > 0 ? s.triangles / s.bvhBuildSeconds : 0.0);
-        std::printf("gpu memory       %zu bytes (%.1f per triangle; positions + BVH %.1f per triangle)\n",
-                    s.gpuBytes, double(s.gpuBytes) / s.triangles, double(s.gpuGeometryBytes) / s.triangles);
+        std::printf(
+            "gpu memory       %zu bytes (%.1f per triangle; positions + BVH %.1f per triangle; "
+            "textures %zu bytes)\n",
+            s.gpuBytes, double(s.gpuBytes) / s.triangles, double(s.gpuGeometryBytes) / s.triangles,
+            s.gpuTextureBytes);
         std::printf("first frame      %.3f s after start (load, build, upload, shader compile, first pass)\n",
                     firstFrameSeconds);
         std::printf("samples          %d per pixel, %.0f paths, %.0f rays (%.2f rays per path)\n", done,

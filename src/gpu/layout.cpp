@@ -18,6 +18,7 @@ ShaderDefines layoutDefines() {
             {"NODE_LINKS_UNIT", s(kNodeLinksUnit)},
             {"MATERIALS_UNIT", s(kMaterialsUnit)},
             {"LIGHTS_UNIT", s(kLightsUnit)},
+            {"TEXCOORD_TEXELS", s(kTexcoordTexels)},
             {"LEAF_BIT", std::to_string(kLeafBit) + "u"},
             {"LEAF_COUNT_SHIFT", s(kLeafCountShift)},
             {"LEAF_FIRST_MASK", std::to_string(kMaxLeafFirst) + "u"}};

@@ -25,11 +25,22 @@
 //                                            about 4 triangles and there is about one node per 4 to 5
 //                                            triangles, so positions + BVH come to about 48 + 12 = 60
 //                                            bytes per triangle (57-60 on the suite; BENCHMARKS.md).
-//  materials     RGBA32F    4 per material   (Kd.rgb, type) (Ke.rgb, roughness) (Ks.rgb, ior) (Tf.rgb, B)
+//  materials     RGBA32F    5 per material   (Kd.rgb, type) (Ke.rgb, roughness) (Ks.rgb, ior) (Tf.rgb, B)
+//                                            (diffuse texture, 0, 0, 0)
 //                                            B: Cauchy coefficient in nm^2 of a dispersive glass, else 0
 //                                            (ior is then the index at 587.6 nm; scene/spectrum.h)
 //                                            type: fp::MaterialType as an exact float
+//                                            diffuse texture: index into textureTable, -1 for none; read
+//                                            only when the shader is compiled with SURFACE_TEXTURES
 //  lights        RGBA32F    1 per emitter    (triangle index, cdf up to and including it, pmf, area)
+//
+// Only when some material has a texture (the renderer then defines SURFACE_TEXTURES; without it the
+// shader has no texture code at all and the three buffers are not allocated):
+//  texcoords     RG32F      3 per triangle   (uv0) (uv1) (uv2): OBJ vt, v = 0 at the image's bottom row
+//  textureTexels RGBA8      1 per texel      every texture's texels, concatenated; each texture row-major
+//                                            with its top row first; sRGB-encoded codes (alpha unused),
+//                                            read as code / 255 and decoded in the shader
+//  textureTable  RGBA32I    1 per texture    (first texel in textureTexels, width, height, 0)
 //
 // An environment map (only when the scene has one) is a 2D RGBA32F texture of W x H radiance texels,
 // texel (x, y) covering u in [x, x+1)/W, v in [y, y+1)/H (v = 0 is straight up), and an R32F buffer
@@ -62,8 +73,9 @@ struct ChildLink {
 // Throws fp::Error when the leaf cannot be encoded (first > kMaxLeafFirst, count > kMaxLeafCount).
 uint32_t encodeChild(const ChildLink& child);
 ChildLink decodeChild(uint32_t link);
-constexpr int kMaterialTexels = 4;
+constexpr int kMaterialTexels = 5;
 constexpr int kLightTexels = 1;
+constexpr int kTexcoordTexels = 3;
 constexpr uint32_t kMaxFloatIndex = 1u << 24;
 
 // Texture units the scene buffers are bound to while tracing.
@@ -74,6 +86,9 @@ enum Unit : int {
     kNodeLinksUnit,
     kMaterialsUnit,
     kLightsUnit,
+    kTexcoordsUnit,
+    kTextureTexelsUnit,
+    kTextureTableUnit,
     kEnvironmentMapUnit,
     kEnvironmentCdfUnit,
     kFirstFreeUnit

@@ -16,7 +16,12 @@ float luminance(const glm::vec3& rgb) {
 size_t PackedScene::bytes() const {
     return sizeof(glm::vec4) *
                (triangles.size() + normals.size() + nodeBounds.size() + materials.size() + lights.size()) +
-           sizeof(glm::uvec2) * nodeLinks.size();
+           sizeof(glm::uvec2) * nodeLinks.size() + textureBytes();
+}
+
+size_t PackedScene::textureBytes() const {
+    return sizeof(glm::vec2) * texcoords.size() + textureTexels.size() +
+           sizeof(glm::ivec4) * textureTable.size();
 }
 
 size_t PackedScene::geometryBytes() const {
@@ -63,6 +68,26 @@ struct NodePacker {
     }
 };
 
+// Texture coordinates in leaf order, and every texture's texels with its table entry (gpu/layout.h).
+void packTextures(const Scene& scene, const Bvh& bvh, PackedScene* out) {
+    out->texcoords.reserve(bvh.primIndex.size() * layout::kTexcoordTexels);
+    for (uint32_t prim : bvh.primIndex)
+        for (const glm::vec2& uv : scene.triangles[prim].uv) out->texcoords.push_back(uv);
+    size_t texels = 0;
+    for (const Texture& t : scene.textures) texels += size_t(t.image.width) * size_t(t.image.height);
+    // The table holds offsets as signed 32-bit integers.
+    if (texels >= (size_t(1) << 31))
+        throw Error(scene.source + ": the textures have " + std::to_string(texels) +
+                    " texels in all; the GPU layout addresses at most 2^31 - 1");
+    out->textureTexels.reserve(texels * 4);
+    for (const Texture& t : scene.textures) {
+        if (t.image.texels.size() != size_t(t.image.width) * size_t(t.image.height) * 4 || t.image.width <= 0)
+            throw Error("internal: texture '" + t.name + "' has the wrong number of texels");
+        out->textureTable.emplace_back(int(out->textureTexels.size() / 4), t.image.width, t.image.height, 0);
+        out->textureTexels.insert(out->textureTexels.end(), t.image.texels.begin(), t.image.texels.end());
+    }
+}
+
 }  // namespace
 
 PackedScene packScene(const Scene& scene, const Bvh& bvh) {
@@ -105,12 +130,19 @@ PackedScene packScene(const Scene& scene, const Bvh& bvh) {
     if (!out.lights.empty()) out.lights.back().y = 1.0f;
     out.lightCount = uint32_t(out.lights.size());
 
+    bool textured = false;
     for (const Material& m : scene.materials) {
+        if (m.diffuseTexture >= int32_t(scene.textures.size()))
+            throw Error("internal: material '" + m.name + "' names texture " +
+                        std::to_string(m.diffuseTexture) + " of " + std::to_string(scene.textures.size()));
+        textured = textured || m.diffuseTexture >= 0;
         out.materials.emplace_back(m.diffuse, float(m.type));
         out.materials.emplace_back(m.emission, m.roughness);
         out.materials.emplace_back(m.specular, m.ior);
         out.materials.emplace_back(m.transmission, spectrum::cauchyFromAbbe(m.ior, m.abbeNumber).y);
+        out.materials.emplace_back(float(std::max(m.diffuseTexture, -1)), 0.0f, 0.0f, 0.0f);
     }
+    if (textured) packTextures(scene, bvh, &out);
 
     NodePacker packer{bvh, out};
     const BvhNode& root = bvh.nodes[0];

@@ -14,15 +14,22 @@ namespace fp {
 struct PackedScene {
     std::vector<glm::vec4> triangles, normals, nodeBounds, materials, lights;
     std::vector<glm::uvec2> nodeLinks;
+    // Empty unless some material has a texture (hasTextures()).
+    std::vector<glm::vec2> texcoords;
+    std::vector<uint8_t> textureTexels;  // 4 bytes per texel
+    std::vector<glm::ivec4> textureTable;
     uint32_t triangleCount = 0, nodeCount = 0, lightCount = 0;
     uint32_t bvhDepth = 0;         // deepest interior node (root = 0): the traversal stack must hold it
     float totalLightPower = 0.0f;  // sum over emitters of luminance(Ke) * area
 
+    bool hasTextures() const { return !textureTable.empty(); }
     size_t bytes() const;
     size_t geometryBytes() const;  // positions + BVH only
+    size_t textureBytes() const;   // texture coordinates, texels and table
 };
 
-// Throws fp::Error if the scene cannot be addressed by the layout (over 2^24 triangles or materials).
+// Throws fp::Error if the scene cannot be addressed by the layout (over 2^24 triangles or materials,
+// or 2^31 texture texels).
 PackedScene packScene(const Scene& scene, const Bvh& bvh);
 
 float luminance(const glm::vec3& rgb);

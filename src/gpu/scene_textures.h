@@ -1,6 +1,6 @@
 #pragma once
 // The packed scene uploaded into buffer textures (layout in gpu/layout.h), bound to fixed units.
-#include <array>
+#include <vector>
 
 #include "gl/gl.h"
 #include "gpu/pack.h"
@@ -16,12 +16,12 @@ class SceneTextures {
     SceneTextures(const SceneTextures&) = delete;
     SceneTextures& operator=(const SceneTextures&) = delete;
 
-    // Binds every buffer texture to its unit (layout::Unit).
+    // Binds every buffer texture to its unit (layout::Unit); the texture buffers only if the scene has any.
     void bind() const;
 
   private:
-    static constexpr int kCount = 6;
-    std::array<GLuint, kCount> buffers_{}, textures_{};
+    std::vector<int> units_;  // per buffer: the layout::Unit it is bound to
+    std::vector<GLuint> buffers_, textures_;
 };
 
 }  // namespace fp

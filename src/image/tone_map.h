@@ -62,6 +62,13 @@ inline float srgbEncode(float linear) {
     return 1.055f * std::pow(linear, 1.0f / 2.4f) - 0.055f;
 }
 
+// Its inverse (IEC 61966-2-1:1999 section 5.2, encoded [0,1] -> linear [0,1]): what 8-bit colour
+// textures store. glsl/common/textures.glsl mirrors it.
+inline float srgbDecode(float encoded) {
+    if (encoded <= 0.04045f) return encoded / 12.92f;
+    return std::pow((encoded + 0.055f) / 1.055f, 2.4f);
+}
+
 // Encoded [0,1] -> 8-bit code, rounding to nearest. Out-of-range input is clamped first.
 inline std::uint8_t quantize8(float encoded) {
     float v = std::min(std::max(encoded, 0.0f), 1.0f);

@@ -46,6 +46,8 @@ Renderer::Renderer(const Scene& scene, ShaderLibrary shaders, const BvhBuildOpti
     stats_.emitters = packed.lightCount;
     stats_.gpuBytes = packed.bytes();
     stats_.gpuGeometryBytes = packed.geometryBytes();
+    stats_.gpuTextureBytes = packed.textureBytes();
+    surfaceTextures_ = packed.hasTextures();
     // The traversal stack holds at most one entry per level below the root.
     stats_.stackSize = std::max<uint32_t>(32, packed.bvhDepth + 2);
     lightCount_ = packed.lightCount;
@@ -77,6 +79,8 @@ std::unique_ptr<Program> Renderer::compile(Integrator integrator) const {
     defines.emplace_back("DEBUG_VIEW", std::to_string(int(settings_.view)));
     defines.emplace_back("MATERIAL_TYPES", std::to_string(materialTypes_));
     defines.emplace_back("ENVIRONMENT_MAP", environmentTextures_ ? "1" : "0");
+    // Only textured scenes pay for texture lookups (glsl/common/textures.glsl).
+    if (surfaceTextures_) defines.emplace_back("SURFACE_TEXTURES", "1");
     auto vec3Literal = [](const glm::vec3& v) {
         char text[96];
         std::snprintf(text, sizeof text, "vec3(%.9g, %.9g, %.9g)", v.x, v.y, v.z);
@@ -147,6 +151,11 @@ void Renderer::draw(Program& p, int maxDepth, const PixelRegion& region, int sam
     p.set("uMaterials", int(layout::kMaterialsUnit));
     p.set("uLights", int(layout::kLightsUnit));
     p.set("uLightCount", int(lightCount_));
+    if (surfaceTextures_) {
+        p.set("uTexcoords", int(layout::kTexcoordsUnit));
+        p.set("uTextureTexels", int(layout::kTextureTexelsUnit));
+        p.set("uTextureTable", int(layout::kTextureTableUnit));
+    }
     p.set("uEnvironment", environmentColor_);
     if (environmentTextures_) {
         p.set("uEnvironmentMap", int(layout::kEnvironmentMapUnit));

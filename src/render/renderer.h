@@ -24,6 +24,7 @@ struct SceneStats {
     double bvhBuildCpuSeconds = 0.0;  // process CPU time of the build, all its threads together
     int bvhBuildThreads = 0;
     size_t gpuBytes = 0, gpuGeometryBytes = 0;  // all buffers; positions + BVH only
+    size_t gpuTextureBytes = 0;                 // of gpuBytes: texture coordinates and texels (map_Kd)
     uint32_t stackSize = 0;                     // traversal stack entries the shader was compiled with
 };
 
@@ -69,6 +70,7 @@ class Renderer {
     float environmentRotation_ = 0.0f;
     uint32_t materialTypes_ = 0;  // bit mask of the MaterialTypes in the scene
     uint32_t lightCount_ = 0;
+    bool surfaceTextures_ = false;  // some material has a texture: compile the lookups in
     std::unique_ptr<SceneTextures> textures_;
     std::unique_ptr<EnvironmentTextures> environmentTextures_;  // only for an environment map
     std::unique_ptr<RenderTargets> targets_;

@@ -17,9 +17,29 @@ bool unitVector(const glm::dvec3& v, glm::vec3* out) {
     return true;
 }
 
+// Whether every corner of the face gives a texture coordinate (the face's are then in *uv); a face with
+// a NaN or infinite one is counted as a repair and gets none.
+bool faceTexcoords(const ObjMesh& mesh, const ObjFace& face, MeshRepairs* repairs,
+                   std::vector<glm::vec2>* uv) {
+    const ObjCorner* corners = &mesh.corners[face.firstCorner];
+    uv->clear();
+    for (uint32_t i = 0; i < face.cornerCount; ++i) {
+        if (corners[i].texcoord < 0) return false;
+        size_t t = static_cast<size_t>(corners[i].texcoord);
+        glm::vec2 stored(mesh.texcoords[t]);
+        if (!mesh.texcoordFinite[t] || !std::isfinite(stored.x) || !std::isfinite(stored.y)) {
+            repairs->badTexcoords.add(face.line);
+            return false;
+        }
+        uv->push_back(stored);
+    }
+    return true;
+}
+
 }  // namespace
 
-std::vector<Triangle> buildTriangles(const ObjMesh& mesh, MeshRepairs* repairs) {
+std::vector<Triangle> buildTriangles(const ObjMesh& mesh, MeshRepairs* repairs,
+                                     std::vector<int>* noTexcoordLine) {
     // Positions as the renderer will store them (float), so that the degeneracy test judges exactly the
     // triangles downstream stages see.
     std::vector<glm::dvec3> stored(mesh.positions.size());
@@ -33,6 +53,7 @@ std::vector<Triangle> buildTriangles(const ObjMesh& mesh, MeshRepairs* repairs) 
     std::vector<Triangle> triangles;
     triangles.reserve(mesh.corners.size());
     std::vector<glm::dvec3> polygon;
+    std::vector<glm::vec2> uv;
     for (const ObjFace& face : mesh.faces) {
         const ObjCorner* corners = &mesh.corners[face.firstCorner];
         size_t expected = face.cornerCount - 2;  // triangles a polygon of this size yields
@@ -48,6 +69,7 @@ std::vector<Triangle> buildTriangles(const ObjMesh& mesh, MeshRepairs* repairs) 
             continue;
         }
 
+        bool textured = faceTexcoords(mesh, face, repairs, &uv);
         std::vector<std::array<uint32_t, 3>> pieces = triangulate(polygon);
         if (pieces.empty()) repairs->degenerate.add(face.line, expected);
         bool badNormal = false;
@@ -70,8 +92,11 @@ std::vector<Triangle> buildTriangles(const ObjMesh& mesh, MeshRepairs* repairs) 
                     badNormal = true;
                 }
             }
+            if (textured)
+                for (int k = 0; k < 3; ++k) t.uv[k] = uv[piece[k]];
             t.material = static_cast<uint32_t>(face.materialSlot + 1);
             triangles.push_back(t);
+            noTexcoordLine->push_back(textured ? 0 : face.line);
         }
         if (badNormal) repairs->badNormals.add(face.line);
     }

@@ -47,12 +47,15 @@ namespace fp {
 //   Pr, Pm clamped to [0, 1]; Ni clamped to [1, 4]; Ns < 0 set to 0; NaN or infinite Ni, Ns, Pr, Pm
 //     and malformed scalar statements (or `illum` values that are not integers) ignored, so the
 //     defaults above apply.
-//   map_Kd: "map_Kd textures are not supported yet; using Kd" once per file; a material with map_Kd
-//     but no Kd gets grey 0.6 as a stand-in for its texture (tinyobjloader's choice, made reliable),
-//     one with neither keeps Kd 0 (pure emitters are often written that way). Other texture maps and the
-//     statements we do not model (Ka, d, Tr, sharpness, Ps, Pc, Pcr, aniso, anisor, norm, bump, disp, decal,
-//     refl, map_*) are accepted silently; any other statement gets "unknown MTL statement 'xyz' ignored
-//     (first at line L)" once per statement name and file.
+//   map_Kd [options] file: a colour texture that multiplies Kd (the MTL spec's rule); a material with
+//     map_Kd but no Kd takes Kd 1 (the texture alone), one with neither keeps Kd 0 (pure emitters are
+//     often written that way). The file is relative to the MTL file. Its options (-s, -o, -clamp, ...)
+//     are not supported: "ignored N map_Kd -s/-clamp options" once per file; textures always repeat.
+//     A map_Kd without a file name is a malformed statement. Only Lambertian and plastic materials have
+//     a diffuse colour: on metals and glass map_Kd is ignored with one warning per file. Other texture
+//     maps and the statements we do not model (Ka, d, Tr, sharpness, Ps, Pc, Pcr, aniso, anisor, norm,
+//     bump, disp, decal, refl, map_*) are accepted silently; any other statement gets "unknown MTL
+//     statement 'xyz' ignored (first at line L)" once per statement name and file.
 
 // The perceptual roughness (GGX alpha = roughness^2) equivalent to a Blinn-Phong exponent Ns: Walter
 // et al. 2007, "Microfacet Models for Refraction through Rough Surfaces", eq. 33, relates the Phong
@@ -79,7 +82,9 @@ struct MtlGiven {
     bool illum = false, ni = false, ns = false, pr = false, pm = false, vd = false;
     // tinyobjloader gives a material with map_Kd but no Kd the grey 0.6, but only until some earlier
     // material of the file had a Kd (it never resets its flag at newmtl); we decide from these instead.
-    bool kd = false, diffuseMap = false;
+    bool kd = false;
+    std::string diffuseMap;  // map_Kd's file as written (options removed), empty if none
+    int diffuseMapLine = 0;
 };
 
 // tinyobjloader's MTL reader takes `Kd 0.14` as (0.14, 0, 0) where the MTL spec means grey, reads "nan"
@@ -91,9 +96,17 @@ struct MtlGiven {
 std::string sanitizeMtl(std::string_view text, const std::string& name,
                         std::vector<MtlGiven>* given = nullptr);
 
+// A texture an MTL library names: the file as written (relative to the library) and the statement's line.
+struct MtlTexture {
+    std::string file;
+    int line = 0;
+};
+
 // The materials of one MTL library, in file order (sanitized as above, read by tinyobjloader, then
 // typed by materialFromMtl). Never throws for bad content: problems in a library only cost materials,
-// with warnings.
-std::vector<Material> parseMtl(std::string_view text, const std::string& name);
+// with warnings. Material::diffuseTexture indexes `*textures` (one entry per map_Kd used, appended);
+// the caller loads the files.
+std::vector<Material> parseMtl(std::string_view text, const std::string& name,
+                               std::vector<MtlTexture>* textures);
 
 }  // namespace fp

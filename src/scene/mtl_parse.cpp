@@ -5,6 +5,7 @@
 
 #include "core/log.h"
 #include "scene/mtl.h"
+#include "scene/repair_tally.h"
 
 namespace fp {
 
@@ -16,7 +17,8 @@ glm::vec3 color(const tinyobj::real_t c[3]) {
 
 }  // namespace
 
-std::vector<Material> parseMtl(std::string_view text, const std::string& name) {
+std::vector<Material> parseMtl(std::string_view text, const std::string& name,
+                               std::vector<MtlTexture>* textures) {
     std::vector<MtlGiven> given;
     std::istringstream stream(sanitizeMtl(text, name, &given));
     std::map<std::string, int> index;
@@ -26,6 +28,7 @@ std::vector<Material> parseMtl(std::string_view text, const std::string& name) {
 
     std::vector<Material> materials;
     materials.reserve(parsed.size());
+    RepairTally unusedMaps;
     size_t named = 0;
     for (const tinyobj::material_t& m : parsed) {
         // tinyobjloader always flushes its last material, even when no newmtl ever named one.
@@ -36,9 +39,8 @@ std::vector<Material> parseMtl(std::string_view text, const std::string& name) {
         ++named;
         MtlMaterial mtl;
         mtl.name = m.name;
-        // Without Kd: 0 (a pure emitter is often written that way), or with map_Kd a grey 0.6 standing in
-        // for the texture we cannot show yet.
-        mtl.kd = has.kd ? color(m.diffuse) : glm::vec3(has.diffuseMap ? 0.6f : 0.0f);
+        // Without Kd: 0 (a pure emitter is often written that way), or with map_Kd 1 (the texture alone).
+        mtl.kd = has.kd ? color(m.diffuse) : glm::vec3(has.diffuseMap.empty() ? 0.0f : 1.0f);
         mtl.ke = color(m.emission);
         mtl.ks = color(m.specular);
         mtl.tf = color(m.transmittance);  // Tf or Kt
@@ -52,8 +54,19 @@ std::vector<Material> parseMtl(std::string_view text, const std::string& name) {
             auto it = m.unknown_parameter.find("Vd");
             if (it != m.unknown_parameter.end()) mtl.vd = std::stof(it->second);
         }
-        materials.push_back(materialFromMtl(mtl));
+        Material material = materialFromMtl(mtl);
+        if (!has.diffuseMap.empty()) {
+            if (material.type == MaterialType::Diffuse || material.type == MaterialType::Plastic) {
+                material.diffuseTexture = static_cast<int32_t>(textures->size());
+                textures->push_back({has.diffuseMap, has.diffuseMapLine});
+            } else {
+                unusedMaps.add(has.diffuseMapLine);
+            }
+        }
+        materials.push_back(material);
     }
+    unusedMaps.report(name, "ignored map_Kd of", "metal or glass material",
+                      "(only Lambertian and plastic materials have a diffuse colour)");
     if (materials.empty()) warn(name + ": defines no materials (no newmtl statement)");
     return materials;
 }

@@ -35,8 +35,8 @@ class KeyedTally {
 };
 
 struct MtlRepairs {
-    KeyedTally clamped, negative, nonFinite, malformed, unsupported, nonFiniteScalar;
-    RepairTally iorClamped, diffuseMap;
+    KeyedTally clamped, negative, nonFinite, malformed, unsupported, nonFiniteScalar, mapOptions;
+    RepairTally iorClamped;
     std::vector<std::pair<std::string, int>> unknown;  // statement name and first line, in file order
 
     void report(const std::string& name) const {
@@ -47,9 +47,7 @@ struct MtlRepairs {
         unsupported.report(name, "ignored", "spectral or CIE XYZ", "statement", "(only RGB is supported)");
         nonFiniteScalar.report(name, "ignored", "", "statement", "with a NaN or infinite value");
         iorClamped.report(name, "clamped", "Ni value", "to [1, 4]");
-        if (diffuseMap.count() > 0)
-            warn(name + ": map_Kd textures are not supported yet; using Kd (first at line " +
-                 std::to_string(diffuseMap.firstLine()) + ")");
+        mapOptions.report(name, "ignored", "map_Kd", "option", "(textures repeat, unscaled and unshifted)");
         for (const auto& [key, line] : unknown)
             warn(name + ": unknown MTL statement '" + key + "' ignored (first at line " +
                  std::to_string(line) + ")");
@@ -72,6 +70,41 @@ bool isColorStatement(std::string_view key) {
 
 bool isScalarStatement(std::string_view key) {
     return key == "Ni" || key == "Ns" || key == "Pr" || key == "Pm" || key == "Vd" || key == "illum";
+}
+
+// The options of a texture map statement (MTL spec, "Texture map statements") and how many values each
+// takes; -o, -s and -t take one to three numbers. None is supported: all are reported as ignored.
+int mapOptionValues(std::string_view option, bool* variable) {
+    static const std::pair<std::string_view, int> kOptions[] = {
+        {"-blendu", 1}, {"-blendv", 1},  {"-bm", 1}, {"-boost", 1},  {"-cc", 1},
+        {"-clamp", 1},  {"-imfchan", 1}, {"-mm", 2}, {"-texres", 1}, {"-type", 1},
+        {"-o", 3},      {"-s", 3},       {"-t", 3}};
+    *variable = option == "-o" || option == "-s" || option == "-t";
+    for (const auto& [name, count] : kOptions)
+        if (name == option) return count;
+    return 0;  // unknown: the option alone
+}
+
+// "map_Kd [options] file": records the file (the rest of the line after the options, so that names
+// with blanks work; backslash separators, as some Windows exporters write them, become '/') in `given`,
+// reports the options as ignored, and returns false if no file name is left.
+bool mapStatement(std::string_view code, const std::vector<std::string_view>& words, int line,
+                  MtlRepairs* repairs, MtlGiven* given) {
+    size_t i = 1;
+    while (i < words.size() && words[i].size() > 1 && words[i][0] == '-') {
+        bool variable = false;
+        int values = mapOptionValues(words[i], &variable);
+        repairs->mapOptions.add(words[i], line);
+        ++i;
+        for (int v = 0; v < values && i < words.size(); ++v, ++i)
+            if (variable && v > 0 && !parseReal(words[i])) break;
+    }
+    if (i >= words.size()) return false;
+    std::string file(trimBlanks(code.substr(size_t(words[i].data() - code.data()))));
+    std::replace(file.begin(), file.end(), '\\', '/');
+    given->diffuseMap = file;
+    given->diffuseMapLine = line;
+    return true;
 }
 
 // One colour statement, re-spelled with three checked values; empty if it has to be dropped. Ke is a
@@ -195,10 +228,9 @@ std::string sanitizeMtl(std::string_view text, const std::string& name, std::vec
         } else if (isScalarStatement(words[0])) {
             out += scalarStatement(words, lines.number(), &repairs, current);
         } else {
-            if (words[0] == "map_Kd") {
-                repairs.diffuseMap.add(lines.number());
-                current->diffuseMap = true;
-            }
+            if (words[0] == "map_Kd" &&
+                !mapStatement(line.substr(0, line.find('#')), words, lines.number(), &repairs, current))
+                repairs.malformed.add(words[0], lines.number());
             if (!isKnownStatement(words[0])) {
                 auto seen = std::find_if(repairs.unknown.begin(), repairs.unknown.end(),
                                          [&](const auto& u) { return u.first == words[0]; });

@@ -12,7 +12,7 @@ namespace fs = std::filesystem;
 Scene loadObj(const std::string& path) {
     std::string bytes = readFileBytes(path);
     fs::path directory = fs::path(path).parent_path();
-    // MTL libraries live next to the OBJ (or where an absolute mtllib path says).
+    // MTL libraries and their textures, relative to the OBJ's directory (or absolute).
     MtlLookup lookup = [&directory](const std::string& file) -> std::optional<LibraryFile> {
         fs::path library = fs::path(file).is_absolute() ? fs::path(file) : directory / file;
         std::error_code ec;

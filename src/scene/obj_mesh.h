@@ -16,6 +16,7 @@ namespace fp {
 struct ObjCorner {
     uint32_t vertex;  // 0-based
     int32_t normal;   // 0-based, -1 if the face gives none
+    int32_t texcoord;  // 0-based, -1 if the face gives none
 };
 
 struct ObjFace {
@@ -30,6 +31,8 @@ struct ObjMesh {
     std::vector<bool> positionFinite;  // from the scan: tinyobjloader reads nan/inf as 0
     std::vector<glm::dvec3> normals;
     std::vector<bool> normalFinite;
+    std::vector<glm::dvec2> texcoords;
+    std::vector<bool> texcoordFinite;
     std::vector<ObjCorner> corners;
     std::vector<ObjFace> faces;
     std::vector<std::string> materialNames;  // distinct usemtl names, in order of first use
@@ -43,10 +46,15 @@ struct MeshRepairs {
     RepairTally nonFinite;   // triangles dropped for NaN/infinite vertices
     RepairTally degenerate;  // zero-area triangles dropped
     RepairTally badNormals;  // faces whose zero/NaN vertex normals were replaced by the geometric normal
+    RepairTally badTexcoords;  // faces with NaN/infinite texture coordinates, taken as having none
 };
 
 // Triangles of every face, polygons triangulated with their winding. Triangle::material holds the face's
-// materialSlot + 1 (0 for none), for the caller to map once the materials are known.
-std::vector<Triangle> buildTriangles(const ObjMesh& mesh, MeshRepairs* repairs);
+// materialSlot + 1 (0 for none), for the caller to map once the materials are known. Triangle::uv holds
+// the face's vt where every corner gives one (a face with some corners but not all is invalid OBJ and
+// counts as having none). `noTexcoordLine` gets, per triangle, 0 if it has texture coordinates, else
+// the line of its face.
+std::vector<Triangle> buildTriangles(const ObjMesh& mesh, MeshRepairs* repairs,
+                                     std::vector<int>* noTexcoordLine);
 
 }  // namespace fp

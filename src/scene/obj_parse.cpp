@@ -1,10 +1,12 @@
 #include "scene/obj_parse.h"
 
+#include <filesystem>
 #include <map>
 #include <set>
 
 #include "core/error.h"
 #include "core/log.h"
+#include "image/rgba8_image.h"
 #include "scene/mtl.h"
 #include "scene/obj_mesh.h"
 #include "scene/obj_scan.h"
@@ -15,15 +17,26 @@ namespace fp {
 
 namespace {
 
+namespace fs = std::filesystem;
+
 std::string quotedList(const std::vector<std::string>& names) {
     std::string out;
     for (const std::string& n : names) out += (out.empty() ? "'" : ", '") + n + "'";
     return out;
 }
 
-// Every material of every library the file names, in order. Missing or unreadable libraries are
-// warned about (and their materials will be undefined, so faces using them fall back to the default).
-std::vector<Material> loadLibraries(const ObjScan& scan, const std::string& name, const MtlLookup& lookup) {
+// A map_Kd statement of a library, with what is needed to find its file and to name it in messages.
+struct TextureRef {
+    std::string libraryFile;  // as the mtllib statement gave it (relative to the OBJ)
+    std::string libraryName;  // as the lookup named it (for messages)
+    MtlTexture texture;
+};
+
+// Every material of every library the file names, in order; their diffuseTexture indexes `textures`.
+// Missing or unreadable libraries are warned about (and their materials will be undefined, so faces
+// using them fall back to the default).
+std::vector<Material> loadLibraries(const ObjScan& scan, const std::string& name, const MtlLookup& lookup,
+                                    std::vector<TextureRef>* textures) {
     std::vector<Material> materials;
     std::set<std::string> seen;
     std::vector<std::string> missing;
@@ -51,7 +64,11 @@ std::vector<Material> loadLibraries(const ObjScan& scan, const std::string& name
                 warn(library->name + ": " + reason + "; ignoring this material library");
                 continue;
             }
-            std::vector<Material> more = parseMtl(library->bytes, library->name);
+            std::vector<MtlTexture> maps;
+            std::vector<Material> more = parseMtl(library->bytes, library->name, &maps);
+            for (Material& m : more)
+                if (m.diffuseTexture >= 0) m.diffuseTexture += static_cast<int32_t>(textures->size());
+            for (const MtlTexture& map : maps) textures->push_back({file, library->name, map});
             materials.insert(materials.end(), more.begin(), more.end());
         }
     }
@@ -100,6 +117,80 @@ std::vector<uint32_t> resolveMaterials(const ObjMesh& mesh, const std::string& n
     return bySlot;
 }
 
+std::vector<bool> usedMaterials(const Scene& scene) {
+    std::vector<bool> used(scene.materials.size(), false);
+    for (const Triangle& t : scene.triangles) used[t.material] = true;
+    return used;
+}
+
+// Loads the textures of the materials some triangle uses (each file once) into scene->textures and
+// points the materials at them; unused materials lose theirs, so that an unused broken map costs nothing.
+// A texture file is relative to its MTL library. Throws fp::Error naming the library, line and file if a
+// texture is missing or not an image.
+void loadTextures(const std::vector<TextureRef>& refs, const MtlLookup& lookup, Scene* scene) {
+    std::vector<bool> used = usedMaterials(*scene);
+    std::map<std::string, int32_t> loaded;  // by path relative to the OBJ
+    for (size_t m = 0; m < scene->materials.size(); ++m) {
+        int32_t& index = scene->materials[m].diffuseTexture;
+        if (index < 0) continue;
+        if (!used[m]) {
+            index = -1;
+            continue;
+        }
+        const TextureRef& ref = refs[static_cast<size_t>(index)];
+        fs::path file(ref.texture.file);
+        std::string path = (file.is_absolute() ? file : fs::path(ref.libraryFile).parent_path() / file)
+                               .lexically_normal()
+                               .string();
+        auto [it, added] = loaded.emplace(path, static_cast<int32_t>(scene->textures.size()));
+        index = it->second;
+        if (!added) continue;
+        std::string where = ref.libraryName + ":" + std::to_string(ref.texture.line) + ": map_Kd ";
+        std::optional<LibraryFile> bytes = lookup(path);
+        if (!bytes) {
+            fs::path lookedFor = file.is_absolute() ? file : fs::path(ref.libraryName).parent_path() / file;
+            throw Error(where + "texture '" + ref.texture.file + "' not found or unreadable (looked for " +
+                        lookedFor.string() + ")");
+        }
+        try {
+            scene->textures.push_back({bytes->name, decodeRgba8(bytes->bytes, bytes->name)});
+        } catch (const Error& e) {
+            throw Error(where + e.what());
+        }
+    }
+}
+
+// Triangles without texture coordinates cannot look a texture up: they get a copy of their material
+// without it, whose Kd is multiplied by the texture's mean linear colour (so the surface keeps the
+// texture's average albedo). One warning counts them.
+void untextureFacesWithoutTexcoords(const std::vector<int>& noTexcoordLine, const std::string& name,
+                                    Scene* scene) {
+    std::map<uint32_t, uint32_t> copyOf;
+    RepairTally faces;
+    int lastLine = 0;
+    for (size_t i = 0; i < scene->triangles.size(); ++i) {
+        Triangle& t = scene->triangles[i];
+        int line = noTexcoordLine[i];
+        if (line == 0 || scene->materials[t.material].diffuseTexture < 0) continue;
+        auto [it, added] = copyOf.emplace(t.material, static_cast<uint32_t>(scene->materials.size()));
+        if (added) {
+            Material copy = scene->materials[t.material];
+            copy.diffuse *= meanLinearColor(scene->textures[static_cast<size_t>(copy.diffuseTexture)].image);
+            copy.diffuseTexture = -1;
+            scene->materials.push_back(copy);
+        }
+        t.material = it->second;
+        if (line != lastLine) faces.add(line);  // a polygon's triangles count once
+        lastLine = line;
+    }
+    // A material left to no triangle needs no texture (the renderer then compiles no lookups).
+    std::vector<bool> used = usedMaterials(*scene);
+    for (size_t m = 0; m < used.size(); ++m)
+        if (!used[m]) scene->materials[m].diffuseTexture = -1;
+    faces.report(name, "gave", "face",
+                 "of textured materials without texture coordinates (vt) Kd times the texture's mean colour");
+}
+
 // Why no triangle is left, for the error message.
 std::string droppedSummary(const ObjScan& scan, const MeshRepairs& repairs) {
     std::vector<std::string> parts;
@@ -125,20 +216,25 @@ Scene parseObj(std::string_view bytes, const std::string& name, const MtlLookup&
     MeshRepairs repairs;
     Scene scene;
     scene.source = name;
-    scene.triangles = buildTriangles(mesh, &repairs);
+    std::vector<int> noTexcoordLine;
+    scene.triangles = buildTriangles(mesh, &repairs, &noTexcoordLine);
     if (scene.triangles.empty())
         throw Error(name + ": no valid triangle left (" + droppedSummary(scan, repairs) + ")");
 
     // Materials only now: a file rejected for its geometry should not first warn about its materials.
-    scene.materials = loadLibraries(scan, name, lookup);
+    std::vector<TextureRef> textures;
+    scene.materials = loadLibraries(scan, name, lookup, &textures);
     std::vector<uint32_t> bySlot = resolveMaterials(mesh, name, &scene.materials);
     for (Triangle& t : scene.triangles) t.material = bySlot[t.material];
+    loadTextures(textures, lookup, &scene);
+    untextureFacesWithoutTexcoords(noTexcoordLine, name, &scene);
 
     scan.shortFaces.report(name, "skipped", "face", "with fewer than 3 vertices");
     repairs.nonFinite.report(name, "dropped", "triangle", "with NaN or infinite vertex coordinates");
     repairs.degenerate.report(name, "dropped", "degenerate (zero-area) triangle");
     repairs.badNormals.report(name, "used the geometric normal on", "face",
                               "with zero or NaN vertex normals");
+    repairs.badTexcoords.report(name, "used no texture coordinates on", "face", "with NaN or infinite ones");
     return scene;
 }
 

@@ -15,7 +15,9 @@ struct LibraryFile {
     std::string bytes;  // unchecked
 };
 
-// Finds the MTL library a `mtllib` statement names (relative to the OBJ); nullopt if there is none.
+// Finds a file the OBJ refers to, by its path relative to the OBJ (or absolute): an MTL library a
+// `mtllib` statement names, or a texture a library's map_Kd names (the parser makes its path relative
+// to the OBJ). nullopt if there is none.
 using MtlLookup = std::function<std::optional<LibraryFile>(const std::string& fileName)>;
 
 // Parses OBJ `bytes`, naming the file `name` in errors and warnings. Throws fp::Error on input it must

@@ -111,8 +111,15 @@ class Scanner {
     }
 
     void texcoord() {
+        // u, optionally v and w (a depth for 3D textures, unused); v defaults to 0 as in the OBJ spec.
         reals("texture coordinate (vt)", 1, 3);
+        values_.resize(2, 0.0);
+        out_.texcoordFinite.push_back(std::isfinite(static_cast<float>(values_[0])) &&
+                                      std::isfinite(static_cast<float>(values_[1])));
         ++texcoords_;
+        out_.text += "vt ";
+        out_.text += words_[1];
+        out_.text += words_.size() > 2 ? " " + std::string(words_[2]) : std::string(" 0");
     }
 
     // Re-spells the statement from its checked words, so tinyobjloader reads exactly them.
@@ -147,9 +154,12 @@ class Scanner {
                 }
             }
             long long vertexIndex = resolve(v, word, "vertex", vertices_);
-            if (!vt.empty()) resolve(vt, word, "texture coordinate", texcoords_);
             canonical += ' ' + std::to_string(vertexIndex);
-            if (!vn.empty()) canonical += "//" + std::to_string(resolve(vn, word, "normal", normals_));
+            if (!vt.empty())
+                canonical += '/' + std::to_string(resolve(vt, word, "texture coordinate", texcoords_));
+            if (!vn.empty())
+                canonical +=
+                    (vt.empty() ? "//" : "/") + std::to_string(resolve(vn, word, "normal", normals_));
         }
         if (corners < 3) {
             out_.shortFaces.add(line_);

@@ -19,14 +19,15 @@ struct MtlLibraryRef {
 };
 
 struct ObjScan {
-    // For tinyobjloader: one statement per '\n'-terminated line, only v, vn, f and usemtl statements
+    // For tinyobjloader: one statement per '\n'-terminated line, only v, vn, vt, f and usemtl statements
     // (everything else blanked so line numbers stay aligned), spelled canonically with single spaces,
-    // face indices made absolute (1-based) and reduced to vertex//normal.
+    // vt as "vt u v", face indices made absolute (1-based) as v, v/vt, v//vn or v/vt/vn.
     std::string text;
     // Per `v` and `vn` statement: whether x, y and z are finite as floats (tinyobjloader reads nan and
     // inf as 0, which would turn "vn nan 0 1" into a plausible normal).
     std::vector<bool> vertexFinite;
     std::vector<bool> normalFinite;
+    std::vector<bool> texcoordFinite;  // per `vt`: whether u and v are finite as floats
     // Source line of every face with at least 3 vertices, in file order (tinyobjloader reports faces in
     // this order, so the k-th face it reports came from faceLines[k]).
     std::vector<int> faceLines;

@@ -27,6 +27,9 @@ struct Reader {
     static void normal(void* user, tinyobj::real_t x, tinyobj::real_t y, tinyobj::real_t z) {
         of(user).mesh.normals.emplace_back(x, y, z);
     }
+    static void texcoord(void* user, tinyobj::real_t u, tinyobj::real_t v, tinyobj::real_t) {
+        of(user).mesh.texcoords.emplace_back(u, v);
+    }
     static void face(void* user, tinyobj::index_t* indices, int count) {
         Reader& r = of(user);
         size_t f = r.mesh.faces.size();
@@ -36,8 +39,8 @@ struct Reader {
             {line, static_cast<uint32_t>(r.mesh.corners.size()), static_cast<uint32_t>(count), r.slot});
         // The scan made every index absolute and 1-based; 0 means "not given".
         for (int i = 0; i < count; ++i)
-            r.mesh.corners.push_back(
-                {static_cast<uint32_t>(indices[i].vertex_index - 1), indices[i].normal_index - 1});
+            r.mesh.corners.push_back({static_cast<uint32_t>(indices[i].vertex_index - 1),
+                                      indices[i].normal_index - 1, indices[i].texcoord_index - 1});
     }
     static void material(void* user, const char* name, int) {
         // Names, not tinyobjloader's ids: the MTL libraries are read separately, after the geometry.
@@ -55,6 +58,7 @@ ObjMesh readObjMesh(const ObjScan& scan, const std::string& name) {
     tinyobj::callback_t callbacks;
     callbacks.vertex_cb = &Reader::vertex;
     callbacks.normal_cb = &Reader::normal;
+    callbacks.texcoord_cb = &Reader::texcoord;
     callbacks.index_cb = &Reader::face;
     callbacks.usemtl_cb = &Reader::material;
     std::istringstream stream(scan.text);
@@ -64,15 +68,18 @@ ObjMesh readObjMesh(const ObjScan& scan, const std::string& name) {
     ObjMesh& mesh = reader.mesh;
     bool agree = ok && mesh.positions.size() == scan.vertexFinite.size() &&
                  mesh.normals.size() == scan.normalFinite.size() &&
+                 mesh.texcoords.size() == scan.texcoordFinite.size() &&
                  mesh.faces.size() == scan.faceLines.size();
     for (const ObjCorner& c : mesh.corners)
         agree = agree && c.vertex < mesh.positions.size() &&
-                (c.normal < 0 || static_cast<size_t>(c.normal) < mesh.normals.size());
+                (c.normal < 0 || static_cast<size_t>(c.normal) < mesh.normals.size()) &&
+                (c.texcoord < 0 || static_cast<size_t>(c.texcoord) < mesh.texcoords.size());
     if (!agree)
         throw Error(name + ": internal error: tinyobjloader read the checked file differently (" + errors +
                     ")");
     mesh.positionFinite = scan.vertexFinite;
     mesh.normalFinite = scan.normalFinite;
+    mesh.texcoordFinite = scan.texcoordFinite;
     return std::move(reader.mesh);
 }
 

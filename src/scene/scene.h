@@ -11,6 +11,7 @@
 
 #include "core/aabb.h"
 #include "image/image.h"
+#include "image/rgba8_image.h"
 
 namespace fp {
 
@@ -34,6 +35,9 @@ struct Material {
     // MTL Vd (our extension): the Abbe number of a dispersive glass, 0 for none. Ni is then the index at
     // the Fraunhofer d line (587.6 nm) and the index follows Cauchy's equation n = A + B / lambda^2.
     float abbeNumber = 0.0f;
+    // MTL map_Kd: index into Scene::textures, or -1. The texture's linear colour at the hit point
+    // multiplies `diffuse` wherever a model uses it (Lambertian reflectance, the plastic's base).
+    int32_t diffuseTexture = -1;
     bool isEmissive() const { return emission.x > 0.0f || emission.y > 0.0f || emission.z > 0.0f; }
 };
 
@@ -42,6 +46,9 @@ struct Triangle {
     std::array<glm::vec3, 3> p;
     // Unit shading normals per vertex; equal to the geometric normal when the file gives none.
     std::array<glm::vec3, 3> n;
+    // Texture coordinates per vertex (OBJ vt; v = 0 is the bottom row of an image); (0, 0) when the
+    // face has none, in which case its material has no texture (see loadObj).
+    std::array<glm::vec2, 3> uv{};
     uint32_t material = 0;  // index into Scene::materials
 
     glm::vec3 geometricNormal() const { return glm::cross(p[1] - p[0], p[2] - p[0]); }
@@ -79,9 +86,18 @@ struct Environment {
     bool isBlack() const { return !hasMap() && color == glm::vec3(0.0f); }
 };
 
+// A colour texture (MTL map_Kd). Texels are kept as the file stores them, 8-bit sRGB-encoded (what
+// colour maps hold); the renderer decodes them with the exact sRGB curve before filtering, so nothing is
+// lost to an early conversion and the GPU copy is a quarter of a float one.
+struct Texture {
+    std::string name;  // the file it came from, for messages
+    Rgba8Image image;
+};
+
 struct Scene {
     std::vector<Triangle> triangles;
     std::vector<Material> materials;  // never empty once loaded
+    std::vector<Texture> textures;    // what Material::diffuseTexture indexes
     std::optional<Camera> camera;     // from a scene file; absent for a bare OBJ
     RenderDefaults defaults;
     Environment environment;

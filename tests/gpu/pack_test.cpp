@@ -152,6 +152,62 @@ TEST(PackScene, ChildLinksRoundTripAndRefuseWhatTheyCannotHold) {
     EXPECT_THROW(packScene(s, buildBinnedSah(bounds, wide)), Error);
 }
 
+// Two textures of different sizes on two of the three materials; every triangle's uv encodes its
+// index, so the packed order can be checked against the BVH's.
+Scene texturedScene(int triangles) {
+    Scene s = randomScene(triangles, 5);
+    for (int t = 0; t < 2; ++t) {
+        Texture texture;
+        texture.name = "t" + std::to_string(t);
+        texture.image.width = 3 + t;
+        texture.image.height = 2;
+        for (int i = 0; i < texture.image.width * texture.image.height * 4; ++i)
+            texture.image.texels.push_back(uint8_t(10 * t + i));
+        s.textures.push_back(texture);
+    }
+    s.materials[0].diffuseTexture = 1;
+    s.materials[2].diffuseTexture = 0;
+    for (size_t i = 0; i < s.triangles.size(); ++i)
+        for (int k = 0; k < 3; ++k) s.triangles[i].uv[size_t(k)] = glm::vec2(float(i), float(k));
+    return s;
+}
+
+TEST(PackScene, TexcoordsInLeafOrderAndTheTextureTable) {
+    Scene s = texturedScene(200);
+    Bvh bvh = buildFor(s);
+    PackedScene p = packScene(s, bvh);
+    ASSERT_TRUE(p.hasTextures());
+    ASSERT_EQ(p.texcoords.size(), 200u * layout::kTexcoordTexels);
+    for (size_t i = 0; i < 200; ++i)
+        for (int k = 0; k < 3; ++k)
+            ASSERT_EQ(p.texcoords[i * layout::kTexcoordTexels + size_t(k)],
+                      glm::vec2(float(bvh.primIndex[i]), float(k)));
+    // The table: (first texel, width, height, 0), textures back to back.
+    ASSERT_EQ(p.textureTable.size(), 2u);
+    EXPECT_EQ(p.textureTable[0], glm::ivec4(0, 3, 2, 0));
+    EXPECT_EQ(p.textureTable[1], glm::ivec4(6, 4, 2, 0));
+    ASSERT_EQ(p.textureTexels.size(), 4u * (6 + 8));
+    for (int t = 0; t < 2; ++t)
+        for (size_t i = 0; i < s.textures[size_t(t)].image.texels.size(); ++i)
+            EXPECT_EQ(p.textureTexels[4 * size_t(p.textureTable[size_t(t)].x) + i],
+                      s.textures[size_t(t)].image.texels[i]);
+    // Each material's fifth texel names its texture.
+    for (size_t m = 0; m < 3; ++m)
+        EXPECT_EQ(p.materials[m * layout::kMaterialTexels + 4].x, float(s.materials[m].diffuseTexture)) << m;
+    EXPECT_EQ(p.textureBytes(), 8 * p.texcoords.size() + p.textureTexels.size() + 16 * 2);
+    EXPECT_EQ(p.bytes(), packScene(randomScene(200, 5), bvh).bytes() + p.textureBytes());
+}
+
+TEST(PackScene, UntexturedScenesAllocateNoTextureData) {
+    Scene s = texturedScene(20);
+    for (Material& m : s.materials) m.diffuseTexture = -1;  // textures loaded but used by nobody
+    PackedScene p = packScene(s, buildFor(s));
+    EXPECT_FALSE(p.hasTextures());
+    EXPECT_TRUE(p.texcoords.empty());
+    EXPECT_TRUE(p.textureTexels.empty());
+    EXPECT_EQ(p.textureBytes(), 0u);
+}
+
 TEST(PackScene, MismatchedBvhIsRejected) {
     Scene s = randomScene(10, 1);
     Scene other = randomScene(11, 1);

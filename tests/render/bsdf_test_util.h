@@ -135,11 +135,13 @@ class BsdfProbe {
     BsdfProbe& operator=(const BsdfProbe&) = delete;
 
     // The material under test, packed as src/gpu/layout.h describes (and src/gpu/pack.cpp writes); the
-    // last texel's w, the Cauchy coefficient of a dispersive glass, is 0: one index for all wavelengths.
+    // fourth texel's w, the Cauchy coefficient of a dispersive glass, is 0: one index for all wavelengths;
+    // the fifth says "no texture".
     void setMaterial(const Material& m) {
         const glm::vec4 texels[layout::kMaterialTexels] = {
             glm::vec4(m.diffuse, float(m.type)), glm::vec4(m.emission, m.roughness),
-            glm::vec4(m.specular, m.ior), glm::vec4(m.transmission, 0.0f)};
+            glm::vec4(m.specular, m.ior), glm::vec4(m.transmission, 0.0f),
+            glm::vec4(-1.0f, 0.0f, 0.0f, 0.0f)};
         glBindBuffer(GL_TEXTURE_BUFFER, materialBuffer_);
         glBufferSubData(GL_TEXTURE_BUFFER, 0, sizeof(texels), texels);
     }

@@ -99,6 +99,17 @@ inline std::vector<float> blockZScores(const Accumulation& a, const Accumulation
     return blockZScores(a, b, block, PixelRect{0, 0, a.width, a.height});
 }
 
+// What independent estimates of the same image give: roughly standard normal z-scores, none beyond 5
+// and a mean square near 1 (below 2 allows for the variance estimates' own noise).
+inline void expectZScoresOfNoise(const std::vector<float>& z) {
+    double meanSquare = 0.0;
+    for (float v : z) {
+        EXPECT_LT(std::abs(v), 5.0f);
+        meanSquare += double(v) * v / double(z.size());
+    }
+    EXPECT_LT(meanSquare, 2.0) << "differences larger than the noise explains";
+}
+
 // A test suite sharing one renderer of the built-in Cornell box (BVH build and shader compile once).
 class CornellBoxSuite : public ::testing::Test {
   protected:

@@ -26,11 +26,12 @@ std::string joined(const std::vector<std::string>& lines) {
 struct Parsed {
     std::vector<Material> materials;
     std::vector<std::string> warnings;
+    std::vector<MtlTexture> textures;
 };
 Parsed parse(const std::string& mtl) {
     WarningCapture capture;
     Parsed out;
-    out.materials = parseMtl(mtl, "t.mtl");
+    out.materials = parseMtl(mtl, "t.mtl", &out.textures);
     out.warnings = capture.messages();
     return out;
 }
@@ -345,18 +346,67 @@ TEST(MtlTypes, HarmlessStatementsAcceptedSilently) {
     EXPECT_EQ(m.type, MaterialType::Diffuse);
 }
 
-TEST(MtlTypes, DiffuseTextureWarnedOnce) {
-    Parsed p =
-        parse("newmtl a\nKd 0.2 0.3 0.4\nmap_Kd a.png\nnewmtl b\nmap_Kd -s 2 2 1 b.png\nnewmtl c\nKe 1\n");
-    ASSERT_EQ(p.warnings.size(), 1u);
-    EXPECT_EQ(p.warnings[0], "t.mtl: map_Kd textures are not supported yet; using Kd (first at line 3)");
-    ASSERT_EQ(p.materials.size(), 3u);
+TEST(MtlTypes, DiffuseTextureNamesItsFileAndLineAndMultipliesKd) {
+    Parsed p = parse(
+        "newmtl a\nKd 0.2 0.3 0.4\nmap_Kd a.png\nnewmtl b\nmap_Kd my b.png # comment\n"
+        "newmtl c\nKe 1\nnewmtl d\nKd 0.5\nmap_Kd tex\\wood.png\n");
+    EXPECT_TRUE(p.warnings.empty()) << joined(p.warnings);
+    ASSERT_EQ(p.materials.size(), 4u);
+    ASSERT_EQ(p.textures.size(), 3u);
+    EXPECT_EQ(p.materials[0].diffuseTexture, 0);
+    EXPECT_EQ(p.textures[0].file, "a.png");
+    EXPECT_EQ(p.textures[0].line, 3);
     EXPECT_VEC3_NEAR(p.materials[0].diffuse, glm::vec3(0.2f, 0.3f, 0.4f));
-    // A texture without Kd stands for grey 0.6, also after a material with Kd (where tinyobjloader alone
-    // gives 0); a material with neither keeps 0.
-    EXPECT_VEC3_NEAR(p.materials[1].diffuse, glm::vec3(0.6f));
+    // A texture without Kd is the colour alone (Kd 1), also after a material with Kd (where
+    // tinyobjloader alone gives 0.6 or 0); names may contain blanks.
+    EXPECT_EQ(p.materials[1].diffuseTexture, 1);
+    EXPECT_EQ(p.textures[1].file, "my b.png");
+    EXPECT_VEC3_NEAR(p.materials[1].diffuse, glm::vec3(1.0f));
+    // Neither: Kd 0, no texture.
+    EXPECT_EQ(p.materials[2].diffuseTexture, -1);
     EXPECT_EQ(p.materials[2].diffuse, glm::vec3(0.0f));
-    EXPECT_VEC3_NEAR(warned("map_Kd x.png\nKd 0.1\n", "map_Kd textures").diffuse, glm::vec3(0.1f));
+    // Windows separators become '/'.
+    EXPECT_EQ(p.materials[3].diffuseTexture, 2);
+    EXPECT_EQ(p.textures[2].file, "tex/wood.png");
+}
+
+TEST(MtlTypes, TextureOptionsAreWarnedAboutOncePerFile) {
+    Parsed p = parse(
+        "newmtl a\nmap_Kd -s 2 2 1 -clamp on a.png\nnewmtl b\nmap_Kd -o 0.5 -s 3 b.png\n"
+        "newmtl c\nmap_Kd -mm 0 1 -blendu off -s 1 2 c d.png\n");
+    ASSERT_EQ(p.warnings.size(), 1u) << joined(p.warnings);
+    EXPECT_EQ(
+        p.warnings[0],
+        "t.mtl: ignored 7 map_Kd -s/-clamp/-o/-mm/-blendu options (textures repeat, unscaled and unshifted) "
+        "(first at line 2)");
+    ASSERT_EQ(p.textures.size(), 3u);
+    EXPECT_EQ(p.textures[0].file, "a.png");
+    EXPECT_EQ(p.textures[1].file, "b.png");
+    EXPECT_EQ(p.textures[2].file, "c d.png");  // -s took 1 and 2; "c" is no number
+}
+
+TEST(MtlTypes, TextureWithoutFileIsMalformed) {
+    Material m = warned("Kd 0.3\nmap_Kd\n", "ignored 1 malformed map_Kd statement");
+    EXPECT_EQ(m.diffuseTexture, -1);
+    EXPECT_VEC3_NEAR(m.diffuse, glm::vec3(0.3f));
+}
+
+TEST(MtlTypes, TextureOnMetalOrGlassIsIgnoredWithAWarning) {
+    Parsed p = parse(
+        "newmtl gold\nKd 1 0.8 0.3\nPm 1\nmap_Kd g.png\nnewmtl glass\nillum 7\nmap_Kd x.png\n"
+        "newmtl plastic\nKd 0.5\nKs 0.04\nmap_Kd p.png\n");
+    ASSERT_EQ(p.warnings.size(), 1u) << joined(p.warnings);
+    EXPECT_EQ(
+        p.warnings[0],
+        "t.mtl: ignored map_Kd of 2 metal or glass materials (only Lambertian and plastic materials have a "
+        "diffuse colour) (first at line 4)");
+    ASSERT_EQ(p.materials.size(), 3u);
+    EXPECT_EQ(p.materials[0].diffuseTexture, -1);
+    EXPECT_EQ(p.materials[1].diffuseTexture, -1);
+    EXPECT_EQ(p.materials[2].type, MaterialType::Plastic);
+    EXPECT_EQ(p.materials[2].diffuseTexture, 0);
+    ASSERT_EQ(p.textures.size(), 1u);
+    EXPECT_EQ(p.textures[0].file, "p.png");
 }
 
 }  // namespace

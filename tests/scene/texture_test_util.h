@@ -1,0 +1,36 @@
+#pragma once
+// Small PNG textures written by the tests themselves (through stb_image_write, as the renderer's PNG
+// writer does), so that every texture test states its texels.
+#include <stb_image_write.h>
+
+#include <array>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace fp::test {
+
+// A PNG of `width` x `height` RGBA texels (4 bytes each, top row first), as file bytes.
+inline std::string pngBytes(int width, int height, const std::vector<uint8_t>& rgba) {
+    std::string out;
+    auto append = [](void* context, void* data, int size) {
+        static_cast<std::string*>(context)->append(static_cast<const char*>(data), size_t(size));
+    };
+    if (!stbi_write_png_to_func(append, &out, width, height, 4, rgba.data(), width * 4)) return "";
+    return out;
+}
+
+// A checker of two colours: texel (x, y) is `a` where x + y is even, else `b` (alpha 255).
+using Rgb8 = std::array<uint8_t, 3>;
+
+inline std::vector<uint8_t> checkerTexels(int width, int height, Rgb8 a, Rgb8 b) {
+    std::vector<uint8_t> rgba;
+    for (int y = 0; y < height; ++y)
+        for (int x = 0; x < width; ++x) {
+            const Rgb8& c = (x + y) % 2 == 0 ? a : b;
+            rgba.insert(rgba.end(), {c[0], c[1], c[2], 255});
+        }
+    return rgba;
+}
+
+}  // namespace fp::test
