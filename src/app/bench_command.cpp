@@ -13,6 +13,7 @@
 #include "app/args.h"
 #include "app/bench_measure.h"
 #include "app/bench_suite.h"
+#include "app/caustic_study.h"
 #include "app/commands.h"
 #include "core/error.h"
 #include "gl/context.h"
@@ -26,6 +27,7 @@ namespace {
 const char* kBenchUsage =
     "usage: fragpath bench [SCENE] [options]\n"
     "       fragpath bench --suite [options]\n"
+    "       fragpath bench --study caustic [--budget SECONDS] [--reference-spp N]\n"
     "\n"
     "Measures the offscreen renderer on SCENE (an .obj with its .mtl, or a .json scene file; default: the\n"
     "built-in Cornell box): time to first frame, then one untimed warm-up run and R timed runs of the\n"
@@ -53,6 +55,11 @@ const char* kBenchUsage =
     "                        soup-100k, sphere-1m), in the suite's order\n"
     "  --with-bunny          with --suite: add the Stanford bunny (needs npm and the network)\n"
     "  -h, --help            this text\n"
+    "\n"
+    "--study caustic compares bdpt with nee at equal process CPU time (--budget, default 40 s each) on a\n"
+    "small light over a smooth, then a rough glass sphere over a diffuse floor (24x24, depth 5): RMSE\n"
+    "against a bdpt reference of --reference-spp samples (default 16384) over the image and under the\n"
+    "sphere, where the caustic falls (BENCHMARKS.md).\n"
     "\n"
     "The suite's defaults keep it to a few minutes on a 2-core software renderer; sphere-1m and\n"
     "soup-100k take most of it. For comparable figures on Mesa's llvmpipe, set LP_NUM_THREADS explicitly\n"
@@ -113,14 +120,23 @@ int benchCommand(const std::vector<std::string>& argv) {
     // Time to first frame counts from here: argument parsing is negligible, and everything a user waits
     // for before the first pixel (context, load, BVH, upload, compile, JIT, first pass) comes after.
     auto start = bench::Clock::now();
-    Args args(
-        argv,
-        {"--size", "--spp", "--runs", "--max-depth", "--integrator", "--json", "--max-triangles", "--scenes"},
-        {"-h", "--help", "--suite", "--with-bunny"});
+    Args args(argv,
+              {"--size", "--spp", "--runs", "--max-depth", "--integrator", "--json", "--max-triangles",
+               "--scenes", "--study", "--budget", "--reference-spp"},
+              {"-h", "--help", "--suite", "--with-bunny"});
     if (args.has("-h") || args.has("--help")) {
         std::fputs(kBenchUsage, stdout);
         return 0;
     }
+    if (auto study = args.text("--study")) {
+        if (*study != "caustic") throw Error("--study: the only study is 'caustic', not '" + *study + "'");
+        bench::CausticStudyOptions options;
+        if (auto budget = args.integer("--budget", 1, 100000)) options.budgetSeconds = *budget;
+        if (auto spp = args.integer("--reference-spp", 16, 1 << 24)) options.referenceSpp = *spp;
+        return bench::runCausticStudy(options);
+    }
+    for (const char* flag : {"--budget", "--reference-spp"})
+        if (args.has(flag)) throw Error(std::string(flag) + " only goes with --study");
     bool suite = args.has("--suite");
     if (!suite)
         for (const char* flag : {"--max-triangles", "--scenes", "--with-bunny"})

@@ -3,10 +3,8 @@
 // on a caustic scene its extra strategies must pay for themselves in variance.
 #include <gtest/gtest.h>
 
-#include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <ctime>
 #include <filesystem>
 #include <fstream>
 
@@ -140,48 +138,7 @@ TEST(Bdpt, ConvergesToNeeWithDeltaSurfaces) {
 
 // ---- a caustic: a small light above a smooth glass sphere above a diffuse floor ----
 
-void addQuad(Scene& scene, glm::vec3 a, glm::vec3 b, glm::vec3 c, glm::vec3 d, uint32_t material) {
-    for (auto tri : {std::array<glm::vec3, 3>{a, b, c}, std::array<glm::vec3, 3>{a, c, d}}) {
-        Triangle t;
-        t.p = tri;
-        glm::vec3 n = glm::normalize(t.geometricNormal());
-        t.n = {n, n, n};
-        t.material = material;
-        scene.triangles.push_back(t);
-    }
-}
-
-Scene causticScene(float roughness = 0.0f) {
-    Scene scene;
-    scene.source = "caustic scene";
-    Material floor;
-    floor.name = "floor";
-    floor.diffuse = glm::vec3(0.6f);
-    Material glass;
-    glass.name = "glass";
-    glass.type = MaterialType::Dielectric;
-    glass.roughness = roughness;
-    glass.ior = 1.5f;
-    Material light;
-    light.name = "light";
-    light.diffuse = glm::vec3(0.0f);
-    light.emission = glm::vec3(100.0f);
-    scene.materials = {floor, glass, light};
-    // Counter-clockwise seen from above: facing up.
-    addQuad(scene, {-3, 0, -3}, {-3, 0, 3}, {3, 0, 3}, {3, 0, -3}, 0);
-    appendSphere(scene, {0.0f, 0.9f, 0.0f}, 0.5f, 24, 48, 1, true);
-    // 0.2 x 0.2 at height 3, facing down.
-    addQuad(scene, {-0.1f, 3, -0.1f}, {0.1f, 3, -0.1f}, {0.1f, 3, 0.1f}, {-0.1f, 3, 0.1f}, 2);
-    Camera camera;
-    camera.eye = {0.0f, 1.4f, -3.2f};
-    camera.target = {0.0f, 0.35f, 0.0f};
-    camera.fovY = 35.0f;
-    scene.camera = camera;
-    return scene;
-}
-
-// The floor under the sphere, where the caustic and the sphere's shadow fall (24 x 24 image).
-const PixelRect kUnderSphere{6, 13, 12, 6};
+const PixelRect kUnderSphere = kCausticUnderSphere;
 
 double regionVariance(const Accumulation& acc, const PixelRect& r) {
     Image v = acc.varianceOfMean();
@@ -284,56 +241,6 @@ TEST(Bdpt, RepeatableWithAFixedSeed) {
     EXPECT_EQ(a.splatSum, b.splatSum);
     EXPECT_NE(a.splatSum, c.splatSum);
     EXPECT_EQ(a.droppedSamples(), 0u);
-}
-
-// Not run by ctest: the equal-time comparison of BENCHMARKS.md ("BDPT vs NEE on a caustic scene").
-// Renders a long nee reference, then nee and bdpt for the same wall-clock budget each, and prints the
-// samples reached and the RMSE against the reference over the image and under the sphere.
-TEST(Bdpt, DISABLED_CausticEqualTime) {
-    ensureGlContext();
-    const int kSize = 24, kReferenceSpp = 32768;
-    const double kBudgetSeconds = 40.0;  // CPU seconds (a 24x24 image is one llvmpipe tile: one thread)
-    for (float roughness : {0.0f, 0.3f}) {
-        Scene scene = causticScene(roughness);
-        Renderer renderer(scene);
-        Accumulation reference =
-            renderPasses(renderer, *scene.camera, Integrator::Nee, kSize, kReferenceSpp, 5, 99);
-        Image ref = reference.mean();
-        auto crop = [](const Image& image, const PixelRect& r) {
-            Image out(r.width, r.height);
-            for (int y = 0; y < r.height; ++y)
-                for (int x = 0; x < r.width; ++x) out.at(x, y) = image.at(r.x + x, r.y + y);
-            return out;
-        };
-        std::printf("glass roughness %.1f, %dx%d, depth 5, reference: nee %d spp\n", roughness, kSize, kSize,
-                    kReferenceSpp);
-        for (Integrator integrator : {Integrator::Nee, Integrator::Bdpt}) {
-            RenderSettings s;
-            s.width = s.height = kSize;
-            s.integrator = integrator;
-            s.maxDepth = 5;
-            s.seed = 7;
-            s.samplesPerPass = 16;
-            renderer.configure(s, *scene.camera);
-            // The budget is process CPU time (llvmpipe's threads included), which other processes on a
-            // shared machine disturb much less than wall-clock time.
-            std::clock_t start = std::clock();
-            auto wallStart = std::chrono::steady_clock::now();
-            double seconds = 0.0;
-            while (seconds < kBudgetSeconds) {
-                renderer.render(16);
-                seconds = double(std::clock() - start) / CLOCKS_PER_SEC;
-            }
-            double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - wallStart).count();
-            Accumulation acc = renderer.readback();
-            Image mean = acc.mean();
-            std::printf(
-                "  %-4s %6d spp in %5.1f s CPU (%5.1f s wall): RMSE image %.5f, under the sphere %.5f, "
-                "variance of the mean under the sphere %.4g\n",
-                integratorName(integrator), renderer.samples(), seconds, wall, rmse(mean, ref),
-                rmse(crop(mean, kUnderSphere), crop(ref, kUnderSphere)), regionVariance(acc, kUnderSphere));
-        }
-    }
 }
 
 }  // namespace
