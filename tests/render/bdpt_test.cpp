@@ -229,6 +229,31 @@ TEST(Bdpt, TilesGiveTheWholeFrameImage) {
             ASSERT_NEAR(a.pixels[i][c], b.pixels[i][c], 1e-4f * (1.0f + a.pixels[i][c])) << "pixel " << i;
 }
 
+// A split view with bdpt on its right half: the light paths of the whole image splat into that half
+// only, which then shows what a whole bdpt render shows there; the left half has no light image.
+TEST(Bdpt, SplitViewHalfEqualsAWholeRender) {
+    ensureGlContext();
+    Scene scene = builtinCornellBox();
+    Renderer renderer(scene);
+    Accumulation whole = renderPasses(renderer, *scene.camera, Integrator::Bdpt, 24, 4, 4);
+    RenderSettings s = renderer.settings();
+    s.integrator = Integrator::Nee;
+    s.split = SplitView{Integrator::Bdpt, 4};
+    renderer.configure(s, *scene.camera);
+    renderer.render(4);
+    Accumulation split = renderer.readback();
+    Image a = whole.mean(), b = split.mean();
+    for (int y = 0; y < 24; ++y)
+        for (int x = 0; x < 24; ++x) {
+            if (x < 12) {
+                EXPECT_EQ(split.splatSum[size_t(y * 24 + x)], glm::vec4(0.0f)) << x << "," << y;
+                continue;
+            }
+            for (int c = 0; c < 3; ++c)
+                ASSERT_NEAR(a.at(x, y)[c], b.at(x, y)[c], 1e-5f * (1.0f + a.at(x, y)[c])) << x << "," << y;
+        }
+}
+
 // The same seed gives the same image, the light image included; another seed another one.
 TEST(Bdpt, RepeatableWithAFixedSeed) {
     ensureGlContext();
