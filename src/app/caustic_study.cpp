@@ -26,11 +26,7 @@ Image crop(const Image& image, const PixelRect& r) {
 
 // The per-pixel variance of the mean, summed over the region.
 double regionVariance(const Accumulation& acc, const PixelRect& r) {
-    Image v = acc.varianceOfMean();
-    double sum = 0.0;
-    for (int y = r.y; y < r.y + r.height; ++y)
-        for (int x = r.x; x < r.x + r.width; ++x) sum += double(v.at(x, y).y);
-    return sum;
+    return meanColor(acc.varianceOfMean(), r).y * double(r.width) * double(r.height);
 }
 
 RenderSettings studySettings(Integrator integrator, uint32_t seed) {

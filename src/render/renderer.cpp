@@ -87,8 +87,8 @@ std::unique_ptr<Program> Renderer::compile(Integrator integrator, const char* fr
     return std::make_unique<Program>(shaders_, "passes/fullscreen.vert.glsl", fragmentShader, defines);
 }
 
-// Compiles every program settings_ needs (bdpt's radiance adds the light-tracing pass and the splat
-// pass) and only then replaces the current ones, so that a compile error changes nothing.
+// Compiles every program settings_ needs (bdpt's radiance adds the light-tracing pass) and only then
+// replaces the current ones, so that a compile error changes nothing.
 void Renderer::compilePrograms(const RenderSettings& settings) {
     auto camera = [&](Integrator i) { return compile(i, "passes/trace.frag.glsl"); };
     auto light = [&](Integrator i) -> std::unique_ptr<Program> {
@@ -101,20 +101,30 @@ void Renderer::compilePrograms(const RenderSettings& settings) {
         split = camera(settings.split->integrator);
         splitLight = light(settings.split->integrator);
     }
-    std::unique_ptr<LightSplat> lightSplat;
-    if (lightProgram || splitLight) {
-        glActiveTexture(GLenum(GL_TEXTURE0 + kSpareUnit));  // never rebind a scene texture's unit
-        lightSplat = std::make_unique<LightSplat>(shaders_, settings.width, settings.height);
-    }
     program_ = std::move(program);
     splitProgram_ = std::move(split);
     lightProgram_ = std::move(lightProgram);
     splitLightProgram_ = std::move(splitLight);
+}
+
+// The light image (and its splat program) when a light-tracing program is in use, at the image's size;
+// `rebuild` recompiles the splat program even if the size is unchanged.
+void Renderer::updateLightSplat(bool rebuild) {
+    if (!lightProgram_ && !splitLightProgram_) {
+        lightSplat_.reset();
+        return;
+    }
+    if (lightSplat_ && !rebuild && lightSplat_->width() == settings_.width &&
+        lightSplat_->height() == settings_.height)
+        return;
+    glActiveTexture(GLenum(GL_TEXTURE0 + kSpareUnit));  // never rebind a scene texture's unit
+    auto lightSplat = std::make_unique<LightSplat>(shaders_, settings_.width, settings_.height);
     lightSplat_ = std::move(lightSplat);
 }
 
 void Renderer::reloadShaders() {
     compilePrograms(settings_);
+    updateLightSplat(true);
     samples_ = 0;
     nextTile_ = 0;
     if (targets_) targets_->clear();
@@ -160,12 +170,8 @@ void Renderer::configure(const RenderSettings& settings, const Camera& camera) {
         targets_.reset();
         targets_ = std::make_unique<RenderTargets>(settings.width, settings.height);
     }
-    if (lightSplat_ && (lightSplat_->width() != settings.width || lightSplat_->height() != settings.height)) {
-        glActiveTexture(GLenum(GL_TEXTURE0 + kSpareUnit));
-        lightSplat_.reset();
-        lightSplat_ = std::make_unique<LightSplat>(shaders_, settings.width, settings.height);
-    }
     settings_ = settings;
+    updateLightSplat(false);
     camera_ = camera;
     targets_->clear();
     resetLightImage(0);

@@ -61,6 +61,7 @@ class Renderer {
   private:
     std::unique_ptr<Program> compile(Integrator integrator, const char* fragmentShader) const;
     void compilePrograms(const RenderSettings& settings);
+    void updateLightSplat(bool rebuild);
     void setTraceUniforms(Program& program, int maxDepth);
     void draw(Program& program, int maxDepth, const PixelRegion& region, int samples);
     // One pass of `samples` samples per pixel over `area` (the image or a tile): the camera pass, then

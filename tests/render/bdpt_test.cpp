@@ -141,11 +141,7 @@ TEST(Bdpt, ConvergesToNeeWithDeltaSurfaces) {
 const PixelRect kUnderSphere = kCausticUnderSphere;
 
 double regionVariance(const Accumulation& acc, const PixelRect& r) {
-    Image v = acc.varianceOfMean();
-    double sum = 0.0;
-    for (int y = r.y; y < r.y + r.height; ++y)
-        for (int x = r.x; x < r.x + r.width; ++x) sum += double(v.at(x, y).y);
-    return sum;
+    return meanColor(acc.varianceOfMean(), r).y * double(r.width) * double(r.height);
 }
 
 // The caustic on the floor is seen directly: light -> glass -> glass -> floor -> camera. With smooth
