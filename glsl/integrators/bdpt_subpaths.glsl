@@ -22,7 +22,7 @@ struct PathVertex {
     float eta;      // n on the far side / n on the arrival side (dielectrics)
     float pdfFwd;   // area density of this vertex when sampled from its predecessor in its subpath
     float pdfRev;   // area density of this vertex when sampled from the other direction
-    bool delta;     // the direction sampled here came from a delta lobe
+    bool delta;     // the direction sampled here came from a delta lobe (camera vertices; see gLightDelta)
     bool dispersive;  // the subpath met a dispersive glass at or before this vertex
 };
 
@@ -32,6 +32,10 @@ vec3 gSpectralWeight = vec3(1.0);
 
 void storeCameraVertex(int i, PathVertex v) { gCamera[i] = v; }
 void storeLightVertex(int i, PathVertex v) { gLight[i] = v; }
+// The delta flags of the light vertices, apart from gLight: on llvmpipe (Mesa 22.3.6) `gLight[count -
+// 1].delta = true` in traceLightSubpath read back false afterwards (measured with a debug copy of the
+// light-tracing pass), which made the weights count impossible strategies through smooth glass.
+bool gLightDelta[BDPT_MAX_LIGHT_VERTICES];
 
 vec3 spectralFactor(bool dispersive) { return dispersive ? gSpectralWeight : vec3(1.0); }
 
@@ -134,8 +138,8 @@ float misWeight(int s, int t, float zRevLast, float zRevPrev, float yRevLast, fl
         float rev = i == s - 1 ? yRevLast : (i == s - 2 ? yRevPrev : gLight[i].pdfRev);
         float fwd = s == 1 ? yFwdFresh : gLight[i].pdfFwd;
         r *= remap0(rev) / remap0(fwd);
-        bool deltaHere = i == s - 1 ? false : gLight[i].delta;
-        bool deltaBefore = i > 0 && gLight[i - 1].delta;  // area emitters are never delta
+        bool deltaHere = i == s - 1 ? false : gLightDelta[i];
+        bool deltaBefore = i > 0 && gLightDelta[i - 1];  // area emitters are never delta
         if (!deltaHere && !deltaBefore) sum += r * r;
     }
     return 1.0 / (1.0 + sum);
@@ -158,6 +162,7 @@ bool meetDispersion(inout Surface s) {
 // Returns n.
 int traceLightSubpath(int maxDepth) {
     int n = min(BDPT_MAX_LIGHT_VERTICES, maxDepth + 1);
+    for (int i = 0; i < BDPT_MAX_LIGHT_VERTICES; ++i) gLightDelta[i] = false;
     if (n == 0 || uLightCount == 0) return 0;
     vec4 light = texelFetch(uLights, pickLight(rand()));
     TriangleData tri = fetchTriangle(int(light.x));
@@ -202,7 +207,7 @@ int traceLightSubpath(int maxDepth) {
         float correction = wo.z * abs(dot(next, s.geometricNormal)) / (cosInG * abs(bs.wi.z));
         beta *= bs.weight * (bs.wi.z < 0.0 ? s.eta * s.eta : 1.0) * correction;
         if (bs.delta) {
-            gLight[count - 1].delta = true;
+            gLightDelta[count - 1] = true;
             gLight[count - 2].pdfRev = 0.0;
             pdfDir = 0.0;
         } else {
