@@ -150,6 +150,10 @@ double regionVariance(const Accumulation& acc, const PixelRect& r) {
 ShaderLibrary lightTracingOnlyShaders() {
     namespace fs = std::filesystem;
     fs::path dir = fs::temp_directory_path() / ("fragpath_light_tracing_only_" + std::to_string(::getpid()));
+    static struct RemoveAtExit {
+        fs::path dir;
+        ~RemoveAtExit() { fs::remove_all(dir); }
+    } removeAtExit{dir};
     fs::remove_all(dir);
     fs::copy(fs::path(FP_SOURCE_DIR) / "glsl", dir, fs::copy_options::recursive);
     fs::path file = dir / "integrators" / "bdpt_subpaths.glsl";
