@@ -9,9 +9,19 @@ uint pcgHash(uint v) {
 }
 
 uint rngState;
+uvec2 gRngPixel;  // the pixel and sample index of the last rngInit: the sample being traced
+uint gRngSample;
 
 void rngInit(uint seed, uvec2 pixel, uint sampleIndex) {
+    gRngPixel = pixel;
+    gRngSample = sampleIndex;
     rngState = pcgHash(seed ^ pcgHash(pixel.x ^ pcgHash(pixel.y ^ pcgHash(sampleIndex))));
+}
+
+// A second stream of the same sample, independent of the first (bdpt's light subpath).
+void rngInitSecondStream(uint seed, uvec2 pixel, uint sampleIndex) {
+    rngInit(seed, pixel, sampleIndex);
+    rngState = pcgHash(rngState ^ 0x9e3779b9u);
 }
 
 // Uniform in [0, 1): the PCG-RXS-M-XS step, keeping 24 bits so the float is exact.

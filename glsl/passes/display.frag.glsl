@@ -4,6 +4,8 @@
 #include "common/tone_map.glsl"
 
 uniform sampler2D uSum;  // (radiance sum, samples)
+uniform sampler2D uSplatSum;  // bdpt's light image (render/light_splat.h): (sum of contributions, rays)
+uniform float uLightPaths;    // its light paths per pixel N; 0: no light image
 uniform vec2 uViewport;
 uniform float uExposure;
 uniform int uToneMap;
@@ -17,6 +19,7 @@ void main() {
     ivec2 p = min(ivec2(gl_FragCoord.xy * vec2(size) / uViewport), size - 1);
     vec4 s = texelFetch(uSum, p, 0);
     vec3 mean = s.a > 0.0 ? s.rgb / s.a : vec3(0.0);
+    if (uLightPaths > 0.0) mean += texelFetch(uSplatSum, p, 0).rgb / uLightPaths;
     vec3 c = uHeatMax > 0.0 ? heatMap(mean.r / uHeatMax) : displayEncode(mean, uExposure, uToneMap);
     if (uSplitLine == 1 && abs(gl_FragCoord.x - 0.5 * uViewport.x) < 1.0) c = vec3(1.0);
     color = vec4(c, 1.0);

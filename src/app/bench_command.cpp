@@ -14,6 +14,7 @@
 #include "app/bench_measure.h"
 #include "app/bench_native.h"
 #include "app/bench_suite.h"
+#include "app/caustic_study.h"
 #include "app/commands.h"
 #include "core/error.h"
 #include "gl/context.h"
@@ -27,6 +28,7 @@ namespace {
 const char* kBenchUsage =
     "usage: fragpath bench [SCENE] [options]\n"
     "       fragpath bench --suite [options]\n"
+    "       fragpath bench --study caustic [--budget SECONDS] [--reference-spp N]\n"
     "\n"
     "Measures the offscreen renderer on SCENE (an .obj with its .mtl, or a .json scene file; default: the\n"
     "built-in Cornell box): time to first frame, then one untimed warm-up run and R timed runs of the\n"
@@ -61,6 +63,11 @@ const char* kBenchUsage =
     "spp\n"
     "                        per run, and print GPU paths per CPU-second over the native's\n"
     "  -h, --help            this text\n"
+    "\n"
+    "--study caustic compares bdpt with nee at equal process CPU time (--budget, default 40 s each) on a\n"
+    "small light over a smooth, then a rough glass sphere over a diffuse floor (24x24, depth 5): RMSE\n"
+    "against a bdpt reference of --reference-spp samples (default 16384) over the image and under the\n"
+    "sphere, where the caustic falls (BENCHMARKS.md).\n"
     "\n"
     "The suite's defaults keep it to a few minutes on a 2-core software renderer; sphere-1m and\n"
     "soup-100k take most of it. For comparable figures on Mesa's llvmpipe, set LP_NUM_THREADS explicitly\n"
@@ -128,12 +135,21 @@ int benchCommand(const std::vector<std::string>& argv) {
     auto start = bench::Clock::now();
     Args args(argv,
               {"--size", "--spp", "--runs", "--max-depth", "--integrator", "--json", "--max-triangles",
-               "--scenes", "--bvh-threads", "--samples-per-pass"},
+               "--scenes", "--bvh-threads", "--samples-per-pass", "--study", "--budget", "--reference-spp"},
               {"-h", "--help", "--suite", "--with-bunny", "--native"});
     if (args.has("-h") || args.has("--help")) {
         std::fputs(kBenchUsage, stdout);
         return 0;
     }
+    if (auto study = args.text("--study")) {
+        if (*study != "caustic") throw Error("--study: the only study is 'caustic', not '" + *study + "'");
+        bench::CausticStudyOptions options;
+        if (auto budget = args.integer("--budget", 1, 100000)) options.budgetSeconds = *budget;
+        if (auto spp = args.integer("--reference-spp", 16, 1 << 24)) options.referenceSpp = *spp;
+        return bench::runCausticStudy(options);
+    }
+    for (const char* flag : {"--budget", "--reference-spp"})
+        if (args.has(flag)) throw Error(std::string(flag) + " only goes with --study");
     bool suite = args.has("--suite");
     if (!suite)
         for (const char* flag : {"--max-triangles", "--scenes", "--with-bunny"})

@@ -12,20 +12,28 @@ Display::Display(ShaderLibrary shaders) : shaders_(std::move(shaders)) {
     glGenVertexArrays(1, &vertexArray_);
 }
 
-Display::~Display() { glDeleteVertexArrays(1, &vertexArray_); }
+Display::~Display() {
+    glDeleteVertexArrays(1, &vertexArray_);
+}
 
 void Display::reloadShaders() {
     program_ = std::make_unique<Program>(shaders_, "passes/fullscreen.vert.glsl", "passes/display.frag.glsl");
 }
 
-void Display::draw(GLuint sumTexture, int viewportWidth, int viewportHeight, const DisplayOptions& options) {
-    // A unit the scene textures do not use, so drawing never disturbs the trace pass's bindings.
+void Display::draw(const AccumulationTextures& image, int viewportWidth, int viewportHeight,
+                   const DisplayOptions& options) {
+    // Units the scene textures do not use, so drawing never disturbs the trace pass's bindings.
     const int unit = layout::kFirstFreeUnit + 7;
+    bool splats = image.splatSum != 0 && image.lightPathsPerPixel > 0.0f;
+    glActiveTexture(GLenum(GL_TEXTURE0 + unit + 1));
+    glBindTexture(GL_TEXTURE_2D, splats ? image.splatSum : image.sum);  // unread without splats
     glActiveTexture(GLenum(GL_TEXTURE0 + unit));
-    glBindTexture(GL_TEXTURE_2D, sumTexture);
+    glBindTexture(GL_TEXTURE_2D, image.sum);
     Program& p = *program_;
     p.use();
     p.set("uSum", unit);
+    p.set("uSplatSum", unit + 1);
+    p.set("uLightPaths", splats ? image.lightPathsPerPixel : 0.0f);
     p.set("uViewport", glm::vec2(viewportWidth, viewportHeight));
     p.set("uExposure", options.tone.exposure);
     p.set("uToneMap", int(options.tone.toneMap));

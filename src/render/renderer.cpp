@@ -62,7 +62,8 @@ Renderer::Renderer(const Scene& scene, ShaderLibrary shaders, const BvhBuildOpti
     if (scene.environment.hasMap()) {
         PackedEnvironment environment = packEnvironment(scene.environment);
         // A black map is no light at all: leave it out rather than sample nothing.
-        if (environment.totalWeight > 0.0) environmentTextures_ = std::make_unique<EnvironmentTextures>(environment);
+        if (environment.totalWeight > 0.0)
+            environmentTextures_ = std::make_unique<EnvironmentTextures>(environment);
     }
     for (const Material& m : scene.materials) materialTypes_ |= 1u << uint32_t(m.type);
     glGenVertexArrays(1, &vertexArray_);
@@ -72,10 +73,12 @@ Renderer::~Renderer() {
     glDeleteVertexArrays(1, &vertexArray_);
 }
 
-std::unique_ptr<Program> Renderer::compile(Integrator integrator) const {
+std::unique_ptr<Program> Renderer::compile(Integrator integrator, const char* fragmentShader) const {
     ShaderDefines defines = layout::layoutDefines();
+    for (const auto& d : LightSplat::defines()) defines.push_back(d);
     defines.emplace_back("BVH_STACK_SIZE", std::to_string(stats_.stackSize));
-    defines.emplace_back("INTEGRATOR_FILE", std::string("\"integrators/") + integratorName(integrator) + ".glsl\"");
+    defines.emplace_back("INTEGRATOR_FILE",
+                         std::string("\"integrators/") + integratorName(integrator) + ".glsl\"");
     defines.emplace_back("DEBUG_VIEW", std::to_string(int(settings_.view)));
     defines.emplace_back("MATERIAL_TYPES", std::to_string(materialTypes_));
     defines.emplace_back("ENVIRONMENT_MAP", environmentTextures_ ? "1" : "0");
@@ -91,38 +94,82 @@ std::unique_ptr<Program> Renderer::compile(Integrator integrator) const {
     defines.emplace_back("SPECTRUM_CENTRE_NM", vec3Literal(spectrum::kCentreNm));
     defines.emplace_back("SPECTRUM_WIDTH_NM", vec3Literal(spectrum::kWidthNm));
     defines.emplace_back("SPECTRUM_NORMALISATION", vec3Literal(spectrum::normalisation()));
-    return std::make_unique<Program>(shaders_, "passes/fullscreen.vert.glsl", "passes/trace.frag.glsl", defines);
+    return std::make_unique<Program>(shaders_, "passes/fullscreen.vert.glsl", fragmentShader, defines);
+}
+
+// Compiles every program settings_ needs (bdpt's radiance adds the light-tracing pass) and only then
+// replaces the current ones, so that a compile error changes nothing.
+void Renderer::compilePrograms(const RenderSettings& settings) {
+    auto camera = [&](Integrator i) { return compile(i, "passes/trace.frag.glsl"); };
+    auto light = [&](Integrator i) -> std::unique_ptr<Program> {
+        bool splats = i == Integrator::Bdpt && settings.view == View::Radiance;
+        return splats ? compile(i, "passes/light_trace.frag.glsl") : nullptr;
+    };
+    std::unique_ptr<Program> program = camera(settings.integrator), lightProgram = light(settings.integrator);
+    std::unique_ptr<Program> split, splitLight;
+    if (settings.split) {
+        split = camera(settings.split->integrator);
+        splitLight = light(settings.split->integrator);
+    }
+    program_ = std::move(program);
+    splitProgram_ = std::move(split);
+    lightProgram_ = std::move(lightProgram);
+    splitLightProgram_ = std::move(splitLight);
+}
+
+// The light image (and its splat program) when a light-tracing program is in use, at the image's size;
+// `rebuild` recompiles the splat program even if the size is unchanged.
+void Renderer::updateLightSplat(bool rebuild) {
+    if (!lightProgram_ && !splitLightProgram_) {
+        lightSplat_.reset();
+        return;
+    }
+    if (lightSplat_ && !rebuild && lightSplat_->width() == settings_.width &&
+        lightSplat_->height() == settings_.height)
+        return;
+    glActiveTexture(GLenum(GL_TEXTURE0 + kSpareUnit));  // never rebind a scene texture's unit
+    auto lightSplat = std::make_unique<LightSplat>(shaders_, settings_.width, settings_.height);
+    lightSplat_ = std::move(lightSplat);
 }
 
 void Renderer::reloadShaders() {
-    std::unique_ptr<Program> program = compile(settings_.integrator);
-    std::unique_ptr<Program> split = settings_.split ? compile(settings_.split->integrator) : nullptr;
-    program_ = std::move(program);  // only once both compiled
-    splitProgram_ = std::move(split);
+    compilePrograms(settings_);
+    updateLightSplat(true);
     samples_ = 0;
     nextTile_ = 0;
     if (targets_) targets_->clear();
+    resetLightImage(0);
+}
+
+void Renderer::resetLightImage(int restoredSamples) {
+    if (lightSplat_) lightSplat_->clear();
+    restoredLightPaths_ = restoredSamples;
+    launchedLightPaths_ = 0;
+}
+
+double Renderer::lightPathsPerPixel() const {
+    if (!lightSplat_) return 0.0;
+    return double(restoredLightPaths_) +
+           double(launchedLightPaths_) / (double(settings_.width) * double(settings_.height));
 }
 
 void Renderer::configure(const RenderSettings& settings, const Camera& camera) {
     if (settings.maxDepth < 0 || (settings.split && settings.split->maxDepth < 0))
         throw Error("max depth must be 0 or more");
     if (settings.samplesPerPass < 1 || settings.samplesPerPass > RenderSettings::kMaxSamplesPerPass)
-        throw Error("samples per pass must be between 1 and " + std::to_string(RenderSettings::kMaxSamplesPerPass));
+        throw Error("samples per pass must be between 1 and " +
+                    std::to_string(RenderSettings::kMaxSamplesPerPass));
     bool splitChanged = settings.split.has_value() != settings_.split.has_value() ||
                         (settings.split && settings.split->integrator != settings_.split->integrator);
-    bool recompile = !program_ || settings.integrator != settings_.integrator || settings.view != settings_.view ||
-                     splitChanged;
+    bool recompile = !program_ || settings.integrator != settings_.integrator ||
+                     settings.view != settings_.view || splitChanged;
     if (recompile) {
         // Compile both programs before changing anything, so that a compile error leaves the renderer
         // exactly as it was.
         RenderSettings previous = settings_;
         settings_ = settings;  // compile() reads the view from the settings
         try {
-            std::unique_ptr<Program> program = compile(settings.integrator);
-            std::unique_ptr<Program> split = settings.split ? compile(settings.split->integrator) : nullptr;
-            program_ = std::move(program);
-            splitProgram_ = std::move(split);
+            compilePrograms(settings);
         } catch (...) {
             settings_ = previous;
             throw;
@@ -134,15 +181,17 @@ void Renderer::configure(const RenderSettings& settings, const Camera& camera) {
         targets_ = std::make_unique<RenderTargets>(settings.width, settings.height);
     }
     settings_ = settings;
+    updateLightSplat(false);
     camera_ = camera;
     targets_->clear();
+    resetLightImage(0);
     samples_ = 0;
     nextTile_ = 0;
 }
 
-// Every uniform of the trace pass is set here, and only here.
-void Renderer::draw(Program& p, int maxDepth, const PixelRegion& region, int samples) {
-    if (region.empty()) return;
+// Every uniform of the trace passes (camera and light tracing) that does not depend on the pass is set
+// here, and only here; the scene textures are bound.
+void Renderer::setTraceUniforms(Program& p, int maxDepth) {
     p.use();
     p.set("uTriangles", int(layout::kTrianglesUnit));
     p.set("uNormals", int(layout::kNormalsUnit));
@@ -163,14 +212,9 @@ void Renderer::draw(Program& p, int maxDepth, const PixelRegion& region, int sam
         p.set("uEnvironmentRotation", environmentRotation_);
         environmentTextures_->bind();
     }
-    p.set("uPreviousSum", kSumUnit);
-    p.set("uPreviousSquares", kSumUnit + 1);
-    p.set("uPreviousCounters", kSumUnit + 2);
     p.set("uRayOffset", rayOffset_);
     p.set("uMaxDepth", maxDepth);
     p.set("uSeed", settings_.seed);
-    p.set("uSampleOffset", settings_.sampleOffset);
-    p.set("uSamplesPerPass", samples);
 
     // Camera basis: right and up are scaled so that normalised device coordinates map onto the image plane.
     glm::vec3 forward = glm::normalize(camera_.target - camera_.eye);
@@ -183,8 +227,18 @@ void Renderer::draw(Program& p, int maxDepth, const PixelRegion& region, int sam
     p.set("uCameraRight", right * tanHalf * aspect);
     p.set("uCameraUp", up * tanHalf);
     p.set("uResolution", glm::vec2(settings_.width, settings_.height));
-
     textures_->bind();
+}
+
+// The camera pass: `samples` samples per pixel over `region`, added to the accumulation.
+void Renderer::draw(Program& p, int maxDepth, const PixelRegion& region, int samples) {
+    if (region.empty()) return;
+    setTraceUniforms(p, maxDepth);
+    p.set("uPreviousSum", kSumUnit);
+    p.set("uPreviousSquares", kSumUnit + 1);
+    p.set("uPreviousCounters", kSumUnit + 2);
+    p.set("uSampleOffset", settings_.sampleOffset);
+    p.set("uSamplesPerPass", samples);
     glBindVertexArray(vertexArray_);
     targets_->beginPass(kSumUnit, region);
     glDrawArrays(GL_TRIANGLES, 0, 3);
@@ -199,20 +253,45 @@ static PixelRegion clip(const PixelRegion& a, const PixelRegion& b) {
     return {x0, y0, std::max(0, x1 - x0), std::max(0, y1 - y0)};
 }
 
-void Renderer::render(int samples, const std::function<bool(int)>& progress) {
-    if (!targets_) throw Error("internal: Renderer::render before configure");
+void Renderer::drawPass(const PixelRegion& area, int samples) {
+    struct Part {
+        Program* camera;
+        Program* light;
+        int maxDepth;
+        PixelRegion region;
+    };
     PixelRegion full = targets_->full();
     int half = settings_.width / 2;
+    std::vector<Part> parts;
+    if (splitProgram_) {
+        parts.push_back({program_.get(), lightProgram_.get(), settings_.maxDepth,
+                         clip(full, {0, 0, half, settings_.height})});
+        parts.push_back({splitProgram_.get(), splitLightProgram_.get(), settings_.split->maxDepth,
+                         clip(full, {half, 0, settings_.width, settings_.height})});
+    } else {
+        parts.push_back({program_.get(), lightProgram_.get(), settings_.maxDepth, full});
+    }
+    for (const Part& part : parts) draw(*part.camera, part.maxDepth, clip(area, part.region), samples);
+    if (!lightSplat_) return;
+    // The light paths of these samples, launched from every pixel of `area` (so that each light path
+    // per pixel of N is traced once, whatever the tiling) and splatted anywhere in the part's half.
+    for (const Part& part : parts) {
+        if (!part.light) continue;
+        setTraceUniforms(*part.light, part.maxDepth);
+        for (int i = 0; i < samples; ++i)
+            lightSplat_->trace(*part.light, settings_.sampleOffset + uint32_t(samples_ + i), area,
+                               part.region);
+    }
+    launchedLightPaths_ += uint64_t(area.width) * uint64_t(area.height) * uint64_t(samples);
+    glActiveTexture(GLenum(GL_TEXTURE0 + kSpareUnit));
+}
+
+void Renderer::render(int samples, const std::function<bool(int)>& progress) {
+    if (!targets_) throw Error("internal: Renderer::render before configure");
     int done = 0;
     while (done < samples) {
         int count = std::min(settings_.samplesPerPass, samples - done);
-        if (splitProgram_) {
-            draw(*program_, settings_.maxDepth, clip(full, {0, 0, half, settings_.height}), count);
-            draw(*splitProgram_, settings_.split->maxDepth, clip(full, {half, 0, settings_.width, settings_.height}),
-                 count);
-        } else {
-            draw(*program_, settings_.maxDepth, full, count);
-        }
+        drawPass(targets_->full(), count);
         glFinish();  // so that progress and timing see finished work, not queued commands
         samples_ += count;
         done += count;
@@ -223,16 +302,10 @@ void Renderer::render(int samples, const std::function<bool(int)>& progress) {
 bool Renderer::renderTile(int tileSize) {
     if (!targets_) throw Error("internal: Renderer::renderTile before configure");
     tileSize = std::max(tileSize, 1);
-    int columns = (settings_.width + tileSize - 1) / tileSize, rows = (settings_.height + tileSize - 1) / tileSize;
+    int columns = (settings_.width + tileSize - 1) / tileSize,
+        rows = (settings_.height + tileSize - 1) / tileSize;
     int column = nextTile_ % columns, row = nextTile_ / columns;
-    PixelRegion tile = clip(targets_->full(), {column * tileSize, row * tileSize, tileSize, tileSize});
-    if (splitProgram_) {
-        int half = settings_.width / 2;
-        draw(*program_, settings_.maxDepth, clip(tile, {0, 0, half, settings_.height}), 1);
-        draw(*splitProgram_, settings_.split->maxDepth, clip(tile, {half, 0, settings_.width, settings_.height}), 1);
-    } else {
-        draw(*program_, settings_.maxDepth, tile, 1);
-    }
+    drawPass(clip(targets_->full(), {column * tileSize, row * tileSize, tileSize, tileSize}), 1);
     if (++nextTile_ < columns * rows) return false;
     nextTile_ = 0;
     ++samples_;
@@ -246,13 +319,25 @@ void Renderer::restore(const Image& mean, int samples) {
                     ", not " + std::to_string(settings_.width) + "x" + std::to_string(settings_.height));
     glActiveTexture(GLenum(GL_TEXTURE0 + kSpareUnit));
     targets_->restore(mean, samples);
+    resetLightImage(samples);
     samples_ = samples;
     nextTile_ = 0;
 }
 
 Accumulation Renderer::readback() const {
     if (!targets_) throw Error("internal: Renderer::readback before configure");
-    return targets_->read();
+    Accumulation acc = targets_->read();
+    if (lightSplat_) {
+        lightSplat_->read(acc.splatSum, acc.splatSquares);
+        acc.lightPathsPerPixel = lightPathsPerPixel();
+    }
+    return acc;
+}
+
+AccumulationTextures Renderer::textures() const {
+    if (!targets_) throw Error("internal: Renderer::textures before configure");
+    return {targets_->sumTexture(), lightSplat_ ? lightSplat_->sumTexture() : 0u,
+            float(lightPathsPerPixel())};
 }
 
 }  // namespace fp

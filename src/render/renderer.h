@@ -11,6 +11,7 @@
 #include "gpu/pack.h"
 #include "gpu/scene_textures.h"
 #include "render/accumulation.h"
+#include "render/light_splat.h"
 #include "render/render_targets.h"
 #include "render/settings.h"
 #include "scene/scene.h"
@@ -38,14 +39,17 @@ class Renderer {
     // split changed. Throws fp::Error for settings that cannot be rendered.
     void configure(const RenderSettings& settings, const Camera& camera);
     // Adds `samples` samples per pixel over the whole image; `progress(done)` is called after every
-    // pass and may return false to stop early (an interrupted render keeps what it has).
+    // pass and may return false to stop early (an interrupted render keeps what it has). With bdpt each
+    // pass also traces the light paths of its samples (one per pixel and sample) into the light image.
     void render(int samples, const std::function<bool(int done)>& progress = nullptr);
     // Adds one sample to the next tile of the image (tiles of tileSize x tileSize pixels, bottom row
     // first), so that an interactive front end can bound the work per frame. Returns true when that
-    // completed a sample over the whole image.
+    // completed a sample over the whole image. With bdpt the tile also traces its share of light paths
+    // (one per pixel of the tile), which splat anywhere in the image.
     bool renderTile(int tileSize);
     // Continues a saved render: after configure(), takes `samples` samples of per-pixel mean `mean`
-    // as already done (their indices must be the settings' sampleOffset onwards).
+    // as already done (their indices must be the settings' sampleOffset onwards). A bdpt mean already
+    // holds its light image (divided by its samples), so it counts as that many light paths per pixel.
     void restore(const Image& mean, int samples);
     // Recompiles the shaders from the library (hot reload) and restarts accumulation. Throws fp::Error
     // with the compiler's message, keeping the previous programs.
@@ -54,14 +58,22 @@ class Renderer {
     // Samples completed over the whole image (tiles of an unfinished pass not counted).
     int samples() const { return samples_; }
     Accumulation readback() const;
-    // The accumulation's (radiance sum, sample count) texture, for a display pass.
-    GLuint sumTexture() const { return targets_->sumTexture(); }
+    // The accumulation's textures, for a display pass.
+    AccumulationTextures textures() const;
     const SceneStats& stats() const { return stats_; }
     const RenderSettings& settings() const { return settings_; }
 
   private:
-    std::unique_ptr<Program> compile(Integrator integrator) const;
+    std::unique_ptr<Program> compile(Integrator integrator, const char* fragmentShader) const;
+    void compilePrograms(const RenderSettings& settings);
+    void updateLightSplat(bool rebuild);
+    void setTraceUniforms(Program& program, int maxDepth);
     void draw(Program& program, int maxDepth, const PixelRegion& region, int samples);
+    // One pass of `samples` samples per pixel over `area` (the image or a tile): the camera pass, then
+    // for bdpt the light paths launched from `area`, for each half of a split view.
+    void drawPass(const PixelRegion& area, int samples);
+    void resetLightImage(int restoredSamples);
+    double lightPathsPerPixel() const;
 
     ShaderLibrary shaders_;
     SceneStats stats_;
@@ -75,6 +87,10 @@ class Renderer {
     std::unique_ptr<EnvironmentTextures> environmentTextures_;  // only for an environment map
     std::unique_ptr<RenderTargets> targets_;
     std::unique_ptr<Program> program_, splitProgram_;
+    std::unique_ptr<Program> lightProgram_, splitLightProgram_;  // bdpt's light tracing, else null
+    std::unique_ptr<LightSplat> lightSplat_;                     // when either is set
+    int restoredLightPaths_ = 0;                                 // per pixel, in a resumed mean
+    uint64_t launchedLightPaths_ = 0;  // light paths traced into the light image (over all pixels)
     GLuint vertexArray_ = 0;
     RenderSettings settings_;
     Camera camera_;

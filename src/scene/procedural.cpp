@@ -38,6 +38,43 @@ void appendSphere(Scene& scene, const glm::vec3& center, float radius, int rings
         }
 }
 
+Scene causticScene(float glassRoughness) {
+    Scene scene;
+    scene.source = "caustic scene";
+    Material floor;
+    floor.name = "floor";
+    floor.diffuse = glm::vec3(0.6f);
+    Material glass;
+    glass.name = "glass";
+    glass.type = MaterialType::Dielectric;
+    glass.roughness = glassRoughness;
+    glass.ior = 1.5f;
+    Material light;
+    light.name = "light";
+    light.diffuse = glm::vec3(0.0f);
+    light.emission = glm::vec3(100.0f);
+    scene.materials = {floor, glass, light};
+    auto quad = [&](glm::vec3 a, glm::vec3 b, glm::vec3 c, glm::vec3 d, uint32_t material) {
+        for (auto corners : {std::array<glm::vec3, 3>{a, b, c}, std::array<glm::vec3, 3>{a, c, d}}) {
+            Triangle t;
+            t.p = corners;
+            glm::vec3 n = glm::normalize(t.geometricNormal());
+            t.n = {n, n, n};
+            t.material = material;
+            scene.triangles.push_back(t);
+        }
+    };
+    quad({-3, 0, -3}, {-3, 0, 3}, {3, 0, 3}, {3, 0, -3}, 0);  // counter-clockwise seen from above: facing up
+    appendSphere(scene, {0.0f, 0.9f, 0.0f}, 0.5f, 24, 48, 1, true);
+    quad({-0.1f, 3, -0.1f}, {0.1f, 3, -0.1f}, {0.1f, 3, 0.1f}, {-0.1f, 3, 0.1f}, 2);  // facing down
+    Camera camera;
+    camera.eye = {0.0f, 1.4f, -3.2f};
+    camera.target = {0.0f, 0.35f, 0.0f};
+    camera.fovY = 35.0f;
+    scene.camera = camera;
+    return scene;
+}
+
 namespace {
 
 constexpr float kRoomSize = 2.0f;

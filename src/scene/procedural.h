@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "image/image_stats.h"
 #include "scene/scene.h"
 
 namespace fp {
@@ -14,6 +15,14 @@ namespace fp {
 // outside; `smooth` gives vertex normals (the sphere's own), otherwise the flat facet normals.
 void appendSphere(Scene& scene, const glm::vec3& center, float radius, int rings, int segments,
                   uint32_t material, bool smooth);
+
+// A caustic, for bidirectional path tracing: a 0.2 x 0.2 one-sided emitter (radiance 100) facing down
+// 3 units above a diffuse floor (albedo 0.6, 6 x 6), and a smooth-shaded glass sphere (ior 1.5, GGX
+// roughness `glassRoughness`, radius 0.5, 24 rings x 48 segments) between them, centre 0.9 above the
+// floor; the camera looks down at the floor under the sphere, where its shadow and caustic fall.
+Scene causticScene(float glassRoughness);
+// That floor in a 24 x 24 image of causticScene's camera.
+constexpr PixelRect kCausticUnderSphere{6, 13, 12, 6};
 
 // The benchmark scenes below all stand in one lit room, so that their figures differ only by what is in
 // it: a 2 x 2 x 2 box open towards -z (where the camera looks in from, as for the Cornell box), a

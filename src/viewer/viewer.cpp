@@ -304,7 +304,7 @@ DisplayOptions Session::displayOptions() const {
 void Session::present(glm::ivec2 framebuffer) {
     window_.bindWindowFramebuffer();
     if (framebuffer.x > 0 && framebuffer.y > 0)
-        display_.draw(renderer_.sumTexture(), framebuffer.x, framebuffer.y, displayOptions());
+        display_.draw(renderer_.textures(), framebuffer.x, framebuffer.y, displayOptions());
     if (ui_) ui_->render();
 }
 

@@ -117,9 +117,9 @@ TEST_F(Bench, WarnsWhenTheThreadCountIsLeftToLlvmpipe) {
 TEST_F(Bench, HelpListsTheOptions) {
     CliRun r = fragpath("bench --help");
     EXPECT_EQ(r.exitCode, 0);
-    for (const char* flag :
-         {"--size", "--spp", "--runs", "--max-depth", "--integrator", "--json", "--suite", "--max-triangles",
-          "--scenes", "--with-bunny", "--native", "256x256 with --suite"})
+    for (const char* flag : {"--size", "--spp", "--runs", "--max-depth", "--integrator", "--json", "--suite",
+                             "--max-triangles", "--scenes", "--with-bunny", "--native", "256x256 with --suite",
+                             "--study caustic", "--budget", "--reference-spp"})
         EXPECT_NE(r.output.find(flag), std::string::npos) << flag;
 }
 
@@ -203,7 +203,9 @@ TEST_F(Bench, BadFlagsAreErrors) {
           Case{"--max-triangles 10", "only goes with --suite"},
           Case{"--with-bunny", "only goes with --suite"}, Case{"--suite a.obj", "takes no scene file"},
           Case{"--suite --max-triangles 0", "--max-triangles"},
-          Case{"--suite --scenes cornell,teapot", "no suite scene 'teapot'"}}) {
+          Case{"--suite --scenes cornell,teapot", "no suite scene 'teapot'"},
+          Case{"--study glass", "the only study is 'caustic'"},
+          Case{"--budget 5", "only goes with --study"}}) {
         CliRun r = fragpath(std::string("bench ") + c.args);
         EXPECT_EQ(r.exitCode, 1) << c.args << ": " << r.output;
         EXPECT_NE(r.output.find("fragpath: error: "), std::string::npos) << c.args << ": " << r.output;

@@ -11,7 +11,8 @@ namespace {
 class PartialRenders : public test::TempDirTest {
   protected:
     void render(const std::string& options, const std::string& out) {
-        test::CliRun r = test::runFragpath("render --size 24x16 --max-depth 3 --quiet " + options + " -o " + path(out));
+        test::CliRun r =
+            test::runFragpath("render --size 24x16 --max-depth 3 --quiet " + options + " -o " + path(out));
         ASSERT_EQ(r.exitCode, 0) << r.output;
     }
     void expectClose(const Image& a, const Image& b) {
@@ -20,17 +21,29 @@ class PartialRenders : public test::TempDirTest {
             for (int c = 0; c < 3; ++c)
                 ASSERT_NEAR(a.pixels[i][c], b.pixels[i][c], 1e-5f * (1.0f + b.pixels[i][c])) << "pixel " << i;
     }
+
+    void fourPartsMergedEqualOneRender(const std::string& options);
+    void resumeEqualsOneRender(const std::string& options);
 };
 
+// bdpt's parts carry their light image inside the mean (light image / N, N = the part's samples), so
+// the sample-weighted merge adds the light images and divides them by the total, as one render does.
 TEST_F(PartialRenders, FourPartsMergedEqualOneRender) {
-    render("--spp 10", "whole.exr");
-    render("--spp 3", "a.exr");
-    render("--spp 2 --sample-offset 3", "b.exr");
-    render("--spp 4 --sample-offset 5", "c.exr");
-    render("--spp 1 --sample-offset 9", "d.exr");
+    fourPartsMergedEqualOneRender("");
+}
+TEST_F(PartialRenders, FourBdptPartsMergedEqualOneRender) {
+    fourPartsMergedEqualOneRender("--integrator bdpt ");
+}
+
+void PartialRenders::fourPartsMergedEqualOneRender(const std::string& options) {
+    render(options + "--spp 10", "whole.exr");
+    render(options + "--spp 3", "a.exr");
+    render(options + "--spp 2 --sample-offset 3", "b.exr");
+    render(options + "--spp 4 --sample-offset 5", "c.exr");
+    render(options + "--spp 1 --sample-offset 9", "d.exr");
     // In any order.
-    test::CliRun r = test::runFragpath("merge " + path("c.exr") + " " + path("a.exr") + " " + path("d.exr") + " " +
-                                       path("b.exr") + " -o " + path("merged.exr"));
+    test::CliRun r = test::runFragpath("merge " + path("c.exr") + " " + path("a.exr") + " " + path("d.exr") +
+                                       " " + path("b.exr") + " -o " + path("merged.exr"));
     ASSERT_EQ(r.exitCode, 0) << r.output;
     PartialRender merged = readPartial(path("merged.exr")), whole = readPartial(path("whole.exr"));
     EXPECT_EQ(merged.samples(), 10u);
@@ -44,7 +57,8 @@ TEST_F(PartialRenders, OverlapsAndDifferentSettingsAreRefused) {
     render("--spp 3", "a.exr");
     render("--spp 3 --sample-offset 2", "overlapping.exr");
     render("--spp 3 --sample-offset 3 --seed 7", "other_seed.exr");
-    test::CliRun r = test::runFragpath("merge " + path("a.exr") + " " + path("overlapping.exr") + " -o " + path("m.exr"));
+    test::CliRun r =
+        test::runFragpath("merge " + path("a.exr") + " " + path("overlapping.exr") + " -o " + path("m.exr"));
     EXPECT_EQ(r.exitCode, 1);
     EXPECT_NE(r.output.find("overlap"), std::string::npos) << r.output;
     r = test::runFragpath("merge " + path("a.exr") + " " + path("other_seed.exr") + " -o " + path("m.exr"));
@@ -56,16 +70,25 @@ TEST_F(PartialRenders, OverlapsAndDifferentSettingsAreRefused) {
     EXPECT_FALSE(std::filesystem::exists(path("m.exr")));
 }
 
-TEST_F(PartialRenders, ResumeContinuesWhereTheSavedRenderStopped) {
-    render("--spp 8", "whole.exr");
-    render("--spp 3", "start.exr");
-    render("--spp 8 --resume " + path("start.exr"), "resumed.exr");
+void PartialRenders::resumeEqualsOneRender(const std::string& options) {
+    render(options + "--spp 8", "whole.exr");
+    render(options + "--spp 3", "start.exr");
+    render(options + "--spp 8 --resume " + path("start.exr"), "resumed.exr");
     PartialRender resumed = readPartial(path("resumed.exr"));
     EXPECT_EQ(resumed.samples(), 8u);
     expectClose(resumed.mean, readPartial(path("whole.exr")).mean);
+}
+
+// A resumed bdpt mean counts as that many light paths per pixel (Renderer::restore).
+TEST_F(PartialRenders, BdptResumeEqualsOneRender) {
+    resumeEqualsOneRender("--integrator bdpt ");
+}
+
+TEST_F(PartialRenders, ResumeContinuesWhereTheSavedRenderStopped) {
+    resumeEqualsOneRender("");
     // A saved render of other settings cannot be continued.
-    test::CliRun r = test::runFragpath("render --size 24x16 --max-depth 4 --spp 8 --resume " + path("start.exr") +
-                                       " -o " + path("x.exr"));
+    test::CliRun r = test::runFragpath("render --size 24x16 --max-depth 4 --spp 8 --resume " +
+                                       path("start.exr") + " -o " + path("x.exr"));
     EXPECT_EQ(r.exitCode, 1);
     EXPECT_NE(r.output.find("different scene or settings"), std::string::npos) << r.output;
 }
@@ -78,6 +101,15 @@ TEST_F(PartialRenders, TimeBudgetRendersWhatFitsAndRecordsTheCount) {
     test::CliRun r = test::runFragpath("render --time-budget soon -o " + path("x.exr"));
     EXPECT_EQ(r.exitCode, 1);
     EXPECT_NE(r.output.find("duration"), std::string::npos);
+}
+
+// A bdpt render stopped by its budget divides its light image by the samples it did, not those asked.
+TEST_F(PartialRenders, BdptStoppedByItsBudgetEqualsARenderOfItsSamples) {
+    render("--integrator bdpt --spp 1000000 --samples-per-pass 1 --time-budget 1s", "budget.exr");
+    PartialRender p = readPartial(path("budget.exr"));
+    ASSERT_GE(p.samples(), 1u);
+    render("--integrator bdpt --samples-per-pass 1 --spp " + std::to_string(p.samples()), "same.exr");
+    expectClose(p.mean, readPartial(path("same.exr")).mean);
 }
 
 }  // namespace

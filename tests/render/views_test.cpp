@@ -79,7 +79,7 @@ TEST(DisplayPass, MatchesThePngWriter) {
     for (ToneMap toneMap : {ToneMap::Clamp, ToneMap::Reinhard, ToneMap::Aces}) {
         DisplayOptions options;
         options.tone = {0.5f, toneMap};
-        display.draw(texture, w, h, options);
+        display.draw({texture, 0, 0.0f}, w, h, options);
         std::vector<uint8_t> gpu = target.read();
         std::vector<uint8_t> cpu = toDisplay8(linear, options.tone);  // RGB, top row first
         for (int y = 0; y < h; ++y)

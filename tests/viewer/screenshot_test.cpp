@@ -34,7 +34,7 @@ TEST(Screenshot, CountViewPngMatchesTheDisplayPass) {
     {
         test::Rgba8Target target(w, h);
         Display display;
-        display.draw(renderer.sumTexture(), w, h, options);
+        display.draw(renderer.textures(), w, h, options);
         gpu = target.read();
     }
 

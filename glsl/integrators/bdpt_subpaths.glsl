@@ -1,0 +1,257 @@
+// The pieces of bidirectional path tracing that both of its passes use: the path vertex, BSDF and
+// density evaluation at a vertex, the MIS weight over every strategy, and the light subpath. The camera
+// pass (integrators/bdpt.glsl) joins camera vertices to it; the light-tracing pass
+// (passes/light_trace.frag.glsl) joins its vertices to the camera. Both trace the same light subpath for
+// sample k of pixel p (traceLightSubpathFor), so each sample's light subpath serves every strategy, as
+// in pbrt-v3 (section 16.3). See bdpt.glsl for the strategies and the limits below.
+#ifndef BDPT_MAX_LIGHT_VERTICES
+#define BDPT_MAX_LIGHT_VERTICES 4
+#endif
+#ifndef BDPT_MAX_DEPTH
+#define BDPT_MAX_DEPTH 12
+#endif
+#define BDPT_CAMERA_VERTICES (BDPT_MAX_DEPTH + 2)
+
+struct PathVertex {
+    vec3 p;
+    vec3 ng;        // unit geometric normal on the side the subpath arrived from (y0: the emitting side)
+    vec3 ns;        // unit shading normal on the same side (y0: ng)
+    vec3 wo;        // unit direction toward the previous vertex of the same subpath (unused at y0, z0)
+    vec3 beta;      // subpath throughput up to and including this vertex
+    int material;
+    float eta;      // n on the far side / n on the arrival side (dielectrics)
+    float pdfFwd;   // area density of this vertex when sampled from its predecessor in its subpath
+    float pdfRev;   // area density of this vertex when sampled from the other direction
+    bool delta;     // the direction sampled here came from a delta lobe (camera vertices; see gLightDelta)
+    bool dispersive;  // the subpath met a dispersive glass at or before this vertex
+};
+
+PathVertex gCamera[BDPT_CAMERA_VERTICES];   // z0 (the eye) .. z_{D+1}
+PathVertex gLight[BDPT_MAX_LIGHT_VERTICES];  // y0 (on an emitter) ..
+vec3 gSpectralWeight = vec3(1.0);
+
+void storeCameraVertex(int i, PathVertex v) { gCamera[i] = v; }
+void storeLightVertex(int i, PathVertex v) { gLight[i] = v; }
+
+// The textured Kd of each stored surface vertex (surface.glsl), which fetchMaterial alone would miss;
+// kept beside PathVertex so that scenes without textures store nothing more.
+#ifdef SURFACE_TEXTURES
+vec3 gCameraDiffuse[BDPT_CAMERA_VERTICES];
+vec3 gLightDiffuse[BDPT_MAX_LIGHT_VERTICES];
+#endif
+
+void keepDiffuse(bool camera, int i, Surface s) {
+#ifdef SURFACE_TEXTURES
+    if (camera) gCameraDiffuse[i] = s.material.diffuse;
+    else gLightDiffuse[i] = s.material.diffuse;
+#endif
+}
+
+// The material at stored vertex i of the camera or light subpath, with its Surface's Kd.
+MaterialData vertexMaterial(bool camera, int i) {
+    MaterialData m = fetchMaterial(camera ? gCamera[i].material : gLight[i].material);
+#ifdef SURFACE_TEXTURES
+    m.diffuse = camera ? gCameraDiffuse[i] : gLightDiffuse[i];
+#endif
+    return m;
+}
+// The delta flags of the light vertices, apart from gLight: on llvmpipe (Mesa 22.3.6) `gLight[count -
+// 1].delta = true` in traceLightSubpath read back false afterwards (measured with a debug copy of the
+// light-tracing pass), which made the weights count impossible strategies through smooth glass.
+bool gLightDelta[BDPT_MAX_LIGHT_VERTICES];
+
+vec3 spectralFactor(bool dispersive) { return dispersive ? gSpectralWeight : vec3(1.0); }
+
+// The convention for delta densities in the weight ratios (pbrt-v3 16.3.4): a delta density is
+// stored as 0 and counts as 1; the strategies that would need it are skipped by the delta flags.
+float remap0(float pdf) { return pdf != 0.0 ? pdf : 1.0; }
+
+vec3 vertexLocal(PathVertex v, vec3 w) {
+    vec3 t, b;
+    orthonormalBasis(v.ns, t, b);
+    return vec3(dot(w, t), dot(w, b), dot(w, v.ns));
+}
+
+// A direction is usable at v if the shading and geometric normals put it on the same side.
+bool agrees(PathVertex v, vec3 local, vec3 world) {
+    float g = dot(world, v.ng);
+    return local.z != 0.0 && g != 0.0 && (local.z > 0.0) == (g > 0.0);
+}
+
+// f(a -> b) |cos(theta_b)| at a vertex, for world directions a (toward where the transported quantity
+// goes: the "wo" of bsdf.glsl) and b (the direction it arrives from). Radiance transport: bsdf.glsl as
+// it is (the frame flipped when a is below the shading normal, which inverts eta). Importance transport
+// (light subpaths): the adjoint BSDF f*(a, b) = f(b, a), i.e. without the 1/eta^2 radiance scaling, and
+// times the shading-normal correction |a.ns| |b.ng| / (|a.ng| |b.ns|) (Veach 1997, ch. 5; pbrt-v3 16.1).
+vec3 vertexBsdf(PathVertex v, MaterialData m, vec3 a, vec3 b, bool importance) {
+    vec3 la = vertexLocal(v, a), lb = vertexLocal(v, b);
+    if (!agrees(v, la, a) || !agrees(v, lb, b)) return vec3(0.0);
+    float eta = v.eta;
+    float correction = 1.0;
+    if (importance) correction = abs(la.z) * abs(dot(b, v.ng)) / (abs(dot(a, v.ng)) * abs(lb.z));
+    if (la.z < 0.0) {
+        la.z = -la.z;
+        lb.z = -lb.z;
+        eta = 1.0 / eta;
+    }
+    vec3 f = bsdfEval(m, la, lb, eta);
+    if (importance && lb.z < 0.0) f *= eta * eta;
+    return f * correction;
+}
+
+// Solid-angle density with which BSDF sampling at v, arriving from direction a, picks direction b.
+float vertexPdf(PathVertex v, MaterialData m, vec3 a, vec3 b) {
+    vec3 la = vertexLocal(v, a), lb = vertexLocal(v, b);
+    if (!agrees(v, la, a) || !agrees(v, lb, b)) return 0.0;
+    float eta = v.eta;
+    if (la.z < 0.0) {
+        la.z = -la.z;
+        lb.z = -lb.z;
+        eta = 1.0 / eta;
+    }
+    return bsdfPdf(m, la, lb, eta);
+}
+
+// Solid angle to area density at `to`: p_A = p_omega |cos(theta_to)| / r^2 (d omega = cos dA / r^2),
+// with the geometric normal, so that the area measure is the true one for every strategy.
+float toArea(float pdfSolidAngle, vec3 from, PathVertex to) {
+    vec3 d = to.p - from;
+    float d2 = dot(d, d);
+    if (d2 == 0.0) return 0.0;
+    return pdfSolidAngle * abs(dot(to.ng, d)) / (d2 * sqrt(d2));
+}
+
+// Visibility V(a <-> b) of the two vertices, each end nudged off its surface toward the other.
+bool unoccluded(PathVertex a, PathVertex b) {
+    vec3 d = b.p - a.p;
+    vec3 from = a.p + (dot(d, a.ng) >= 0.0 ? 1.0 : -1.0) * uRayOffset * a.ng;
+    vec3 to = b.p + (dot(d, b.ng) <= 0.0 ? 1.0 : -1.0) * uRayOffset * b.ng;
+    vec3 e = to - from;
+    float len = length(e);
+    if (len == 0.0) return false;
+    return !occluded(Ray(from, e / len), len * (1.0 - 1e-4));
+}
+
+// The power-heuristic weight (beta = 2) of strategy (s, t) for the path it sampled: w_s =
+// p_s^2 / sum_i p_i^2 = 1 / sum_i (p_i / p_s)^2 over the strategies i in use (Veach 1997, section 10.2),
+// the ratios built one vertex at a time: moving the join by one vertex multiplies p by pdfRev / pdfFwd
+// of the vertex that changes subpath (pbrt-v3 16.3.4).
+// The densities at the joined vertices and their neighbours depend on the join, so they are passed in:
+// zRevLast, zRevPrev for z_{t-1}, z_{t-2}; yRevLast, yRevPrev for y_{s-1}, y_{s-2}; yFwdFresh is the
+// area density of the emitter point of an s = 1 join (sampled afresh, not taken from gLight).
+float misWeight(int s, int t, float zRevLast, float zRevPrev, float yRevLast, float yRevPrev, float yFwdFresh) {
+#ifdef BDPT_LIGHT_TRACING_ONLY
+    return t == 1 ? 1.0 : 0.0;  // a test isolates strategy t = 1 (tests/render/bdpt_test.cpp)
+#endif
+    float sum = 0.0;
+    // Fewer camera vertices: strategy (s + t - i, i) makes z_i a light vertex; i = 1 is light tracing
+    // (z_1 joined to the pinhole z_0, which is never delta: its direction is sampled over the film).
+    float r = 1.0;
+    for (int i = t - 1; i >= 1; --i) {
+        if (s + t - i > BDPT_MAX_LIGHT_VERTICES) break;
+        float rev = i == t - 1 ? zRevLast : (i == t - 2 ? zRevPrev : gCamera[i].pdfRev);
+        r *= remap0(rev) / remap0(gCamera[i].pdfFwd);
+        bool deltaHere = i == t - 1 ? false : gCamera[i].delta;
+        if (!deltaHere && !gCamera[i - 1].delta) sum += r * r;
+    }
+    // Fewer light vertices: strategy (i, s + t - i) makes y_i a camera vertex (i = 0: the camera subpath
+    // hits the emitter).
+    r = 1.0;
+    for (int i = s - 1; i >= 0; --i) {
+        float rev = i == s - 1 ? yRevLast : (i == s - 2 ? yRevPrev : gLight[i].pdfRev);
+        float fwd = s == 1 ? yFwdFresh : gLight[i].pdfFwd;
+        r *= remap0(rev) / remap0(fwd);
+        bool deltaHere = i == s - 1 ? false : gLightDelta[i];
+        bool deltaBefore = i > 0 && gLightDelta[i - 1];  // area emitters are never delta
+        if (!deltaHere && !deltaBefore) sum += r * r;
+    }
+    return 1.0 / (1.0 + sum);
+}
+
+// A dispersive glass fixes the path's wavelength (surface.glsl); its spectral weight is kept apart in
+// gSpectralWeight rather than folded into beta. Returns whether this vertex is dispersive.
+bool meetDispersion(inout Surface s) {
+    if (s.material.cauchyB <= 0.0) return false;
+    bool first = gWavelength == 0.0;
+    vec3 w = vec3(1.0);
+    applyDispersion(s, w);
+    if (first) gSpectralWeight = w;
+    return true;
+}
+
+// Traces the light subpath y0 .. y_{n-1}, n <= min(BDPT_MAX_LIGHT_VERTICES, maxDepth + 1) (strategy
+// (s, t) has s + t - 2 bounces, so s <= maxDepth + 1, reached by t = 1). beta of y_i is the light
+// subpath weight Le(y0 -> y1) G f ... G / p(y0 ... y_i), Veach's alpha^L_i (Veach 1997, section 10.2).
+// Returns n.
+int traceLightSubpath(int maxDepth) {
+    int n = min(BDPT_MAX_LIGHT_VERTICES, maxDepth + 1);
+    for (int i = 0; i < BDPT_MAX_LIGHT_VERTICES; ++i) gLightDelta[i] = false;
+    if (n == 0 || uLightCount == 0) return 0;
+    vec4 light = texelFetch(uLights, pickLight(rand()));
+    TriangleData tri = fetchTriangle(int(light.x));
+    vec2 b = sampleTriangle(rand2());
+    vec3 normal = normalize(cross(tri.e1, tri.e2));
+    float pdfPosition = light.z / light.w;  // pmf / area
+    vec3 Le = materialEmission(tri.material);
+    PathVertex y0 = PathVertex(tri.v0 + b.x * tri.e1 + b.y * tri.e2, normal, normal, normal, Le / pdfPosition,
+                               tri.material, 1.0, pdfPosition, 0.0, false, false);
+    storeLightVertex(0, y0);
+    if (n == 1) return 1;
+
+    // Cosine-weighted emission: Le cos / (p_A * cos / pi) = Le pi / p_A.
+    vec3 dir = toWorld(sampleCosineLocal(rand2()), normal);
+    float pdfDir = dot(normal, dir) / PI;
+    if (pdfDir <= 0.0) return 1;
+    vec3 beta = Le * PI / pdfPosition;
+    Ray ray = Ray(y0.p + uRayOffset * normal, dir);
+    bool dispersive = false;
+    int count = 1;
+    while (count < n) {
+        Hit hit;
+        if (!traceClosest(ray, hit)) break;
+        Surface s = surfaceAt(ray, hit);
+        dispersive = meetDispersion(s) || dispersive;
+        PathVertex y = PathVertex(s.position, s.geometricNormal, s.shadingNormal, -ray.dir, beta,
+                                  s.materialIndex, s.eta, 0.0, 0.0, false, dispersive);
+        y.pdfFwd = toArea(pdfDir, gLight[count - 1].p, y);
+        storeLightVertex(count, y);
+        keepDiffuse(false, count, s);
+        ++count;
+        if (count == n) break;
+
+        vec3 wo = toLocal(s, -ray.dir);
+        if (wo.z <= 0.0) break;  // -ray.dir disagrees with the shading normal: f = 0
+        BsdfSample bs;
+        if (!bsdfSample(s.material, wo, vec3(rand2(), rand()), s.eta, bs)) break;
+        vec3 next = toWorld(s, bs.wi);
+        if (!sameSide(s, bs.wi, next)) break;
+        // Adjoint BSDF (see vertexBsdf): undo the radiance scaling and correct for the shading normal.
+        float cosInG = abs(dot(ray.dir, s.geometricNormal));
+        if (cosInG == 0.0 || bs.wi.z == 0.0) break;
+        float correction = wo.z * abs(dot(next, s.geometricNormal)) / (cosInG * abs(bs.wi.z));
+        beta *= bs.weight * (bs.wi.z < 0.0 ? s.eta * s.eta : 1.0) * correction;
+        if (bs.delta) {
+            gLightDelta[count - 1] = true;
+            gLight[count - 2].pdfRev = 0.0;
+            pdfDir = 0.0;
+        } else {
+            gLight[count - 2].pdfRev = toArea(vertexPdf(y, s.material, next, -ray.dir), y.p, gLight[count - 2]);
+            pdfDir = bs.pdf;
+        }
+        if (beta == vec3(0.0)) break;
+        ray = spawnRay(s, next);
+    }
+    return count;
+}
+
+// The light subpath of sample `sampleIndex` of pixel `pixel`, from a random stream of its own (a function
+// of the seed, the pixel and the sample index alone), so that the camera pass and the light-tracing pass
+// trace the same subpath and partial renders of disjoint sample ranges use disjoint light subpaths. The
+// caller's stream continues where it was.
+int traceLightSubpathFor(uvec2 pixel, uint sampleIndex, int maxDepth) {
+    uint callerState = rngState;
+    rngInitSecondStream(uSeed, pixel, sampleIndex);
+    int n = traceLightSubpath(maxDepth);
+    rngState = callerState;
+    return n;
+}

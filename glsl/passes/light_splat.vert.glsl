@@ -1,0 +1,33 @@
+// The splat pass: one point per light-tracing record (light_trace.frag.glsl), drawn with additive
+// blending into the light image at the pixel the record names. Vertex k of path j reads record k of the
+// j-th pixel of the launch region; the last record of each path (its statistics) goes to the path's own
+// pixel. A record that lands nowhere is put outside the clip volume, so it makes no fragment.
+uniform sampler2DArray uRecords;  // one layer per record
+uniform ivec2 uLaunchOrigin;      // the launch region's lower-left pixel
+uniform int uLaunchWidth;
+
+flat out vec4 vSum;      // (contribution, rays traced)
+flat out vec4 vSquares;  // (squared contribution, contributions dropped)
+
+void main() {
+    int k = gl_VertexID % (BDPT_MAX_LIGHT_VERTICES + 1), path = gl_VertexID / (BDPT_MAX_LIGHT_VERTICES + 1);
+    ivec2 source = uLaunchOrigin + ivec2(path % uLaunchWidth, path / uLaunchWidth);
+    ivec2 size = textureSize(uRecords, 0).xy;
+    vec4 r = texelFetch(uRecords, ivec3(source, k), 0);
+    int target;
+    if (k < BDPT_MAX_LIGHT_VERTICES) {
+        target = int(r.a);
+        vSum = vec4(r.rgb, 0.0);
+        vSquares = vec4(r.rgb * r.rgb, 0.0);
+    } else {
+        target = r.x != 0.0 || r.y != 0.0 ? source.y * size.x + source.x : -1;
+        vSum = vec4(0.0, 0.0, 0.0, r.x);
+        vSquares = vec4(0.0, 0.0, 0.0, r.y);
+    }
+    if (target < 0) {
+        gl_Position = vec4(2.0, 2.0, 2.0, 1.0);
+        return;
+    }
+    vec2 pixel = vec2(target % size.x, target / size.x) + 0.5;
+    gl_Position = vec4(pixel / vec2(size) * 2.0 - 1.0, 0.0, 1.0);
+}

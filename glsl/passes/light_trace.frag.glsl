@@ -1,0 +1,84 @@
+// Light tracing, bdpt's strategies t = 1 (see integrators/bdpt.glsl): each fragment traces the light
+// subpath of sample uLightSample of its pixel (the same subpath the camera pass joins to), joins each of
+// its vertices y_{s-1} to the pinhole by a shadow ray, and writes one record per vertex: the weighted
+// contribution and the pixel it lands on. The splat pass (light_splat.*.glsl) then adds the records
+// into the light image.
+#include "common/rng.glsl"
+#include "common/sampling.glsl"
+#include "common/scene_data.glsl"
+#include "common/intersect.glsl"
+#include "common/bsdf.glsl"
+#include "common/surface.glsl"
+#include "common/lights.glsl"
+#include "common/camera.glsl"
+
+uniform int uMaxDepth;
+uniform uint uSeed;
+uniform uint uLightSample;  // the sample index (sample offset included) whose light subpaths are traced
+
+#include "integrators/bdpt_subpaths.glsl"
+
+// Record s - 1: (weighted contribution of strategy (s, 1), index of the pixel it lands on; -1: none).
+layout(location = 0) out vec4 outRecords[BDPT_MAX_LIGHT_VERTICES];
+// (rays traced, non-finite contributions dropped, 0, 0), added at this fragment's own pixel.
+layout(location = BDPT_MAX_LIGHT_VERTICES) out vec4 outStats;
+
+// Strategy (s, 1): y = y_{s-1} joined to the eye z0. The unweighted contribution is
+// alpha^L_s f(y_{s-2} -> y -> z0) G(y <-> z0) We(z0 -> y) (Veach 1997, eq. 10.8 with t = 1; pbrt-v3
+// 16.3.2, "t = 1"), the pinhole's alpha^E_1 being 1 (a delta position sampled with density 1): with
+// G = |cos theta_y| cos theta_camera / r^2 and the cosine at y inside f (vertexBsdf). At y0 on an emitter,
+// "f" is the emitter's directional distribution: 1 in front, 0 behind, Le being in alpha^L_1 = Le / p_A.
+vec3 lightToCamera(int s, out vec2 pixel) {
+    PathVertex y = gLight[s - 1];
+    if (!projectToPixel(y.p, pixel)) return vec3(0.0);
+    vec3 d = uCameraEye - y.p;  // toward the camera
+    float dist2 = dot(d, d);
+    if (dist2 == 0.0) return vec3(0.0);
+    d *= inversesqrt(dist2);
+    vec3 f;
+    float yRevPrev = 0.0;
+    MaterialData m = vertexMaterial(false, s - 1);
+    if (s == 1) {
+        float cosLight = dot(y.ng, d);
+        if (cosLight <= 0.0) return vec3(0.0);  // one-sided emitter seen from behind
+        f = vec3(cosLight);
+    } else {
+        if (isDeltaOnly(m)) return vec3(0.0);
+        f = vertexBsdf(y, m, y.wo, d, true);
+        if (f == vec3(0.0)) return vec3(0.0);
+        yRevPrev = toArea(vertexPdf(y, m, d, y.wo), y.p, gLight[s - 2]);
+    }
+    // The density with which the camera would have sampled y (through its pixel), for the weights.
+    float yRevLast = toArea(cameraDirectionPdf(-d), uCameraEye, y);
+    float w = misWeight(s, 1, 0.0, 0.0, yRevLast, yRevPrev, s == 1 ? y.pdfFwd : 0.0);
+    PathVertex eye = PathVertex(uCameraEye, uCameraForward, uCameraForward, uCameraForward, vec3(1.0), 0, 1.0,
+                                1.0, 0.0, false, false);
+    if (!unoccluded(y, eye)) return vec3(0.0);
+    float cosCamera = dot(-d, uCameraForward);
+    return y.beta * f * (cameraImportance(-d) * cosCamera / dist2) * w * spectralFactor(y.dispersive);
+}
+
+void main() {
+    ivec2 pixel = ivec2(gl_FragCoord.xy);
+    gRayCount = 0.0;
+    gWavelength = 0.0;
+    gSpectralWeight = vec3(1.0);
+    int n = traceLightSubpathFor(uvec2(pixel), uLightSample, min(uMaxDepth, BDPT_MAX_DEPTH));
+    float dropped = 0.0;
+    for (int s = 1; s <= BDPT_MAX_LIGHT_VERTICES; ++s) {
+        vec4 record = vec4(0.0, 0.0, 0.0, -1.0);
+        if (s <= n) {
+            vec2 target;
+            vec3 c = lightToCamera(s, target);
+            // A NaN or Inf would poison a pixel of the light image forever: count it and drop it.
+            if (any(isnan(c)) || any(isinf(c))) {
+                dropped += 1.0;
+            } else if (c != vec3(0.0)) {
+                ivec2 t = ivec2(target);
+                record = vec4(c, float(t.y * int(uResolution.x) + t.x));
+            }
+        }
+        outRecords[s - 1] = record;
+    }
+    outStats = vec4(gRayCount, dropped, 0.0, 0.0);
+}

@@ -1,0 +1,57 @@
+#pragma once
+// bdpt's light-tracing pass (strategies t = 1, glsl/integrators/bdpt.glsl): light paths traced in a
+// fragment pass (glsl/passes/light_trace.frag.glsl, one path per launched pixel) write one record per
+// light vertex (its weighted contribution and the pixel it lands on); a point pass
+// (light_splat.*.glsl) adds the records with additive blending into the light image, two RGBA32F
+// attachments: (sum of contributions, rays traced by the paths launched at the pixel) and (sum of
+// squared contributions, non-finite contributions dropped).
+//
+// Why a fragment pass plus a point pass rather than tracing in a vertex or geometry shader: llvmpipe
+// shades fragments on all its threads but runs vertex and geometry shaders in the calling thread, so
+// tracing belongs in the fragment stage; the point pass only moves records.
+#include <memory>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "gl/program.h"
+#include "render/render_targets.h"
+
+namespace fp {
+
+class LightSplat {
+  public:
+    // Light vertices per path, one record each: the shaders' BDPT_MAX_LIGHT_VERTICES (the renderer
+    // passes it to every program, so the two cannot differ).
+    static constexpr int kLightVertices = 4;
+
+    // Throws fp::Error if the splat program does not compile or the targets are incomplete.
+    LightSplat(const ShaderLibrary& shaders, int width, int height);
+    ~LightSplat();
+    LightSplat(const LightSplat&) = delete;
+    LightSplat& operator=(const LightSplat&) = delete;
+
+    static ShaderDefines defines();
+    int width() const { return width_; }
+    int height() const { return height_; }
+    void clear();
+    // Traces one light path from each pixel of `launch` with `tracer` (light_trace.frag.glsl, bound and
+    // with every uniform set but uLightSample) for sample index `sampleIndex`, and adds the records that
+    // land inside `splatRegion` to the light image.
+    void trace(Program& tracer, uint32_t sampleIndex, const PixelRegion& launch,
+               const PixelRegion& splatRegion);
+    // The light image, rows top to bottom.
+    void read(std::vector<glm::vec4>& sum, std::vector<glm::vec4>& squares) const;
+    GLuint sumTexture() const { return image_[0]; }
+
+  private:
+    static constexpr int kRecords = kLightVertices + 1;  // the vertices' records, then the statistics
+    int width_, height_;
+    std::unique_ptr<Program> splat_;
+    GLuint recordTexture_ = 0, recordFramebuffer_ = 0;
+    GLuint image_[2] = {0, 0};
+    GLuint imageFramebuffer_ = 0;
+    GLuint vertexArray_ = 0;
+};
+
+}  // namespace fp
