@@ -12,8 +12,10 @@ namespace fp {
 struct Accumulation {
     int width = 0, height = 0;
     // Per pixel, rows top to bottom: (sum of radiance, samples), (sum of squares, dropped samples) and
-    // (rays traced, 0, 0, 0).
-    std::vector<glm::vec4> sum, squares, counters;
+    // (rays traced, samples whose camera ray hit an emitter first, 0, 0); then the first-hit guides of
+    // the denoisers, summed over the samples: (shading normal, distance) and (albedo, guide samples).
+    // A miss adds zeros (and 1 guide sample).
+    std::vector<glm::vec4> sum, squares, counters, normalDepth, albedo;
 
     // The Monte Carlo estimate: sum / samples per pixel.
     Image mean() const;

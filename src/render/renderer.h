@@ -29,7 +29,7 @@ class Renderer {
     Renderer(const Scene& scene, ShaderLibrary shaders = ShaderLibrary(), const BvhBuildOptions& bvh = {});
     ~Renderer();
 
-    // Sets what to render; restarts accumulation, recompiling shaders only when the integrator, view or
+    // Sets what to render; restarts accumulation, recompiling shaders only when the integrator, view, guides or
     // split changed. Throws fp::Error for settings that cannot be rendered.
     void configure(const RenderSettings& settings, const Camera& camera);
     // Adds `samples` samples per pixel over the whole image; `progress(done)` is called after every
@@ -51,6 +51,9 @@ class Renderer {
     Accumulation readback() const;
     // The accumulation's (radiance sum, sample count) texture, for a display pass.
     GLuint sumTexture() const { return targets_->sumTexture(); }
+    // Any attachment of the accumulation (src/render/render_targets.h), for the denoisers. Only valid
+    // after configure().
+    GLuint accumulationTexture(Attachment a) const { return targets_->texture(a); }
     const SceneStats& stats() const { return stats_; }
     const RenderSettings& settings() const { return settings_; }
 

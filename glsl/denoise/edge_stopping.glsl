@@ -1,0 +1,54 @@
+// What the denoising filters share: the prepared guides and the edge-stopping weights of the spatial
+// filter of SVGF (Schied et al. 2017, "Spatiotemporal Variance-Guided Filtering: Real-Time
+// Reconstruction for Path-Traced Global Illumination", HPG), section 4.4, eqs. 3-5.
+#include "common/luminance.glsl"
+
+uniform sampler2D uGuide;   // (unit first-hit normal, 0 if every sample missed; mean first-hit distance)
+uniform sampler2D uAlbedo;  // (albedo divided out, 1 if the pixel has samples else 0)
+
+const float kSigmaDepth = 1.0;      // sigma_z of eq. 3 (SVGF's value)
+const float kSigmaNormal = 128.0;   // sigma_n of eq. 4 (SVGF's value)
+const float kSigmaLuminance = 4.0;  // sigma_l of eq. 5 (SVGF's value)
+
+bool inImage(ivec2 q) { return all(greaterThanEqual(q, ivec2(0))) && all(lessThan(q, textureSize(uGuide, 0))); }
+
+bool hasSamples(ivec2 q) { return texelFetch(uAlbedo, q, 0).a > 0.0; }
+
+// The screen-space depth gradient at p (SVGF takes it from the rasteriser; here the guides are an
+// image): per axis the one-sided difference of smaller magnitude, so that a neighbour across a depth
+// edge does not count.
+vec2 depthGradient(ivec2 p, float z) {
+    vec2 gradient;
+    for (int axis = 0; axis < 2; ++axis) {
+        ivec2 step = axis == 0 ? ivec2(1, 0) : ivec2(0, 1);
+        float best = 1e30;
+        for (int side = -1; side <= 1; side += 2) {
+            ivec2 q = p + side * step;
+            if (!inImage(q)) continue;
+            float d = texelFetch(uGuide, q, 0).w - z;
+            if (abs(d) < abs(best)) best = d;
+        }
+        gradient[axis] = best == 1e30 ? 0.0 : abs(best);
+    }
+    return gradient;
+}
+
+// Eq. 3: the depth difference against what the local gradient predicts over the offset. The small
+// term relative to the depth keeps a fronto-parallel plane (zero gradient) from splitting on rounding.
+float depthWeight(float zp, float zq, vec2 gradient, vec2 offset) {
+    float predicted = kSigmaDepth * abs(dot(gradient, offset)) + 1e-3 * zp + 1e-20;
+    return exp(-abs(zp - zq) / predicted);
+}
+
+// Eq. 4. A pixel whose samples all missed has no normal: it joins only others like it.
+float normalWeight(vec3 np, vec3 nq) {
+    bool missP = np == vec3(0.0), missQ = nq == vec3(0.0);
+    if (missP || missQ) return missP == missQ ? 1.0 : 0.0;
+    return pow(max(0.0, dot(np, nq)), kSigmaNormal);
+}
+
+// Eq. 5: the luminance difference against the noise expected at p, sqrt of its (prefiltered)
+// variance; the epsilon keeps a noise-free pixel from dividing by zero.
+float luminanceWeight(float lp, float lq, float varianceP) {
+    return exp(-abs(lp - lq) / (kSigmaLuminance * sqrt(max(varianceP, 0.0)) + 1e-10));
+}
