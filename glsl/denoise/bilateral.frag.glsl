@@ -19,6 +19,10 @@ vec3 compressed(vec3 c) { return c / (1.0 + luminance(c)); }
 void main() {
     const int radius = int(2.0 * kSigmaSpatial);
     ivec2 p = ivec2(gl_FragCoord.xy);
+    if (pixelClass(p) == kEmitter) {
+        outColor = texelFetch(uColor, p, 0);
+        return;
+    }
     vec4 guide = texelFetch(uGuide, p, 0);
     vec3 tp = compressed(texelFetch(uColor, p, 0).rgb);
     vec2 gradient = depthGradient(p, guide.w);
@@ -27,7 +31,7 @@ void main() {
     for (int dy = -radius; dy <= radius; ++dy)
         for (int dx = -radius; dx <= radius; ++dx) {
             ivec2 q = p + ivec2(dx, dy);
-            if (!inImage(q) || !hasSamples(q)) continue;
+            if (!isNeighbour(q)) continue;
             vec3 c = texelFetch(uColor, q, 0).rgb;
             vec4 g = texelFetch(uGuide, q, 0);
             vec3 dt = tp - compressed(c);

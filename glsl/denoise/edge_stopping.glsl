@@ -2,9 +2,10 @@
 // filter of SVGF (Schied et al. 2017, "Spatiotemporal Variance-Guided Filtering: Real-Time
 // Reconstruction for Path-Traced Global Illumination", HPG), section 4.4, eqs. 3-5.
 #include "common/luminance.glsl"
+#include "denoise/pixel_class.glsl"
 
 uniform sampler2D uGuide;   // (unit first-hit normal, 0 if every sample missed; mean first-hit distance)
-uniform sampler2D uAlbedo;  // (albedo divided out, 1 if the pixel has samples else 0)
+uniform sampler2D uAlbedo;  // (albedo divided out, pixel class: kUnrendered, kSurface or kEmitter)
 
 const float kSigmaDepth = 1.0;      // sigma_z of eq. 3 (SVGF's value)
 const float kSigmaNormal = 128.0;   // sigma_n of eq. 4 (SVGF's value)
@@ -12,7 +13,10 @@ const float kSigmaLuminance = 4.0;  // sigma_l of eq. 5 (SVGF's value)
 
 bool inImage(ivec2 q) { return all(greaterThanEqual(q, ivec2(0))) && all(lessThan(q, textureSize(uGuide, 0))); }
 
-bool hasSamples(ivec2 q) { return texelFetch(uAlbedo, q, 0).a > 0.0; }
+float pixelClass(ivec2 q) { return texelFetch(uAlbedo, q, 0).a; }
+
+// Whether q may contribute to a filtered pixel: inside the image, rendered, and not an emitter.
+bool isNeighbour(ivec2 q) { return inImage(q) && pixelClass(q) == kSurface; }
 
 // The screen-space depth gradient at p (SVGF takes it from the rasteriser; here the guides are an
 // image): per axis the one-sided difference of smaller magnitude, so that a neighbour across a depth

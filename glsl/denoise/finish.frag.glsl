@@ -1,7 +1,7 @@
 // The last denoising pass: multiplies back the albedo that prepare.frag.glsl divided out, and writes
 // (radiance, 1), which the display pass shows like an accumulation of one sample.
 uniform sampler2D uColor;   // the filtered colour
-uniform sampler2D uAlbedo;  // (albedo divided out, has samples)
+uniform sampler2D uAlbedo;  // (albedo divided out, pixel class)
 
 out vec4 outResult;
 

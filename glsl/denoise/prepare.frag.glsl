@@ -4,6 +4,7 @@
 // finish.frag.glsl multiplies the albedo back), the variance of that mean's luminance, the guides, and
 // the albedo to multiply back.
 #include "common/luminance.glsl"
+#include "denoise/pixel_class.glsl"
 
 uniform sampler2D uSum;          // (sum of radiance, samples)
 uniform sampler2D uSquares;      // (sum of squared radiance, dropped samples)
@@ -20,7 +21,7 @@ const float kMinSamplesForVariance = 4.0;
 
 layout(location = 0) out vec4 outColor;   // (colour, luminance variance of its mean; -1: estimate it)
 layout(location = 1) out vec4 outGuide;   // (unit normal or 0, mean distance)
-layout(location = 2) out vec4 outAlbedo;  // (albedo to multiply back, 1 if the pixel has samples else 0)
+layout(location = 2) out vec4 outAlbedo;  // (albedo to multiply back, pixel class)
 
 void main() {
     ivec2 p = ivec2(gl_FragCoord.xy);
@@ -29,22 +30,22 @@ void main() {
     if (n == 0.0) {  // not rendered yet (a tile of an unfinished pass): its neighbours fill it in
         outColor = vec4(0.0);
         outGuide = vec4(0.0);
-        outAlbedo = vec4(1.0, 1.0, 1.0, 0.0);
+        outAlbedo = vec4(1.0, 1.0, 1.0, kUnrendered);
         return;
     }
     vec3 mean = sum.rgb / n;
     vec4 normalDepth = texelFetch(uNormalDepth, p, 0), albedoSum = texelFetch(uAlbedoSum, p, 0);
     float guideSamples = albedoSum.a;  // fewer than n after a resumed render (guides are not saved)
     vec3 normal = vec3(0.0), albedo = vec3(1.0);
-    float depth = 0.0;
+    float depth = 0.0, pixel = kSurface;
     if (guideSamples > 0.0) {
         vec3 meanNormal = normalDepth.xyz / guideSamples;
         normal = dot(meanNormal, meanNormal) > 1e-12 ? normalize(meanNormal) : vec3(0.0);
         depth = normalDepth.w / guideSamples;
         // An emitter's radiance is not albedo times light, and a pixel that saw only background has no
         // albedo: neither is demodulated.
-        bool emitter = texelFetch(uCounters, p, 0).y > 0.0;
-        if (uDemodulate == 1 && !emitter && depth > 0.0) albedo = max(albedoSum.rgb / guideSamples, kMinAlbedo);
+        if (texelFetch(uCounters, p, 0).y > 0.0) pixel = kEmitter;
+        else if (uDemodulate == 1 && depth > 0.0) albedo = max(albedoSum.rgb / guideSamples, kMinAlbedo);
     }
     float variance = -1.0;
     if (n >= kMinSamplesForVariance) {
@@ -58,5 +59,5 @@ void main() {
     }
     outColor = vec4(mean / albedo, variance);
     outGuide = vec4(normal, depth);
-    outAlbedo = vec4(albedo, 1.0);
+    outAlbedo = vec4(albedo, pixel);
 }

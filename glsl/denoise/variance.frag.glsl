@@ -12,7 +12,7 @@ out vec4 outColor;
 void main() {
     ivec2 p = ivec2(gl_FragCoord.xy);
     vec4 c = texelFetch(uColor, p, 0);
-    if (c.a >= 0.0 || !hasSamples(p)) {
+    if (c.a >= 0.0 || pixelClass(p) != kSurface) {
         outColor = vec4(c.rgb, max(c.a, 0.0));
         return;
     }
@@ -22,7 +22,7 @@ void main() {
     for (int dy = -3; dy <= 3; ++dy)
         for (int dx = -3; dx <= 3; ++dx) {
             ivec2 q = p + ivec2(dx, dy);
-            if (!inImage(q) || !hasSamples(q)) continue;
+            if (!isNeighbour(q)) continue;
             vec4 g = texelFetch(uGuide, q, 0);
             float w = normalWeight(guide.xyz, g.xyz) * depthWeight(guide.w, g.w, gradient, vec2(dx, dy));
             float l = luminance(texelFetch(uColor, q, 0).rgb);
