@@ -21,7 +21,7 @@ float prefilteredVariance(ivec2 p) {
     for (int dy = -1; dy <= 1; ++dy)
         for (int dx = -1; dx <= 1; ++dx) {
             ivec2 q = p + ivec2(dx, dy);
-            if (!isNeighbour(q)) continue;
+            if (!inImage(q) || !isNeighbour(texelFetch(uGuide, q, 0))) continue;
             float w = k[dx + 1] * k[dy + 1];
             sum += w * texelFetch(uColor, q, 0).a;
             weights += w;
@@ -32,11 +32,11 @@ float prefilteredVariance(ivec2 p) {
 void main() {
     const float h[5] = float[5](1.0 / 16.0, 1.0 / 4.0, 3.0 / 8.0, 1.0 / 4.0, 1.0 / 16.0);  // B3 spline
     ivec2 p = ivec2(gl_FragCoord.xy);
-    if (pixelClass(p) == kEmitter) {
+    vec4 guide = texelFetch(uGuide, p, 0);
+    if (guide.w == kEmitter) {
         outColor = texelFetch(uColor, p, 0);
         return;
     }
-    vec4 guide = texelFetch(uGuide, p, 0);
     float lp = luminance(texelFetch(uColor, p, 0).rgb);
     float varianceP = prefilteredVariance(p);
     vec2 gradient = depthGradient(p, guide.w);
@@ -46,11 +46,11 @@ void main() {
         for (int dx = -2; dx <= 2; ++dx) {
             ivec2 offset = ivec2(dx, dy) * uStep;
             ivec2 q = p + offset;
-            if (!isNeighbour(q)) continue;
-            vec4 c = texelFetch(uColor, q, 0);
+            if (!inImage(q)) continue;
             vec4 g = texelFetch(uGuide, q, 0);
-            float w = h[dx + 2] * h[dy + 2] * normalWeight(guide.xyz, g.xyz) *
-                      depthWeight(guide.w, g.w, gradient, vec2(offset)) *
+            if (!isNeighbour(g)) continue;
+            vec4 c = texelFetch(uColor, q, 0);
+            float w = h[dx + 2] * h[dy + 2] * geometryWeight(guide, g, gradient, vec2(offset)) *
                       luminanceWeight(lp, luminance(c.rgb), varianceP);
             color += w * c.rgb;
             variance += w * w * c.a;

@@ -19,11 +19,11 @@ vec3 compressed(vec3 c) { return c / (1.0 + luminance(c)); }
 void main() {
     const int radius = int(2.0 * kSigmaSpatial);
     ivec2 p = ivec2(gl_FragCoord.xy);
-    if (pixelClass(p) == kEmitter) {
+    vec4 guide = texelFetch(uGuide, p, 0);
+    if (guide.w == kEmitter) {
         outColor = texelFetch(uColor, p, 0);
         return;
     }
-    vec4 guide = texelFetch(uGuide, p, 0);
     vec3 tp = compressed(texelFetch(uColor, p, 0).rgb);
     vec2 gradient = depthGradient(p, guide.w);
     vec3 color = vec3(0.0);
@@ -31,13 +31,13 @@ void main() {
     for (int dy = -radius; dy <= radius; ++dy)
         for (int dx = -radius; dx <= radius; ++dx) {
             ivec2 q = p + ivec2(dx, dy);
-            if (!isNeighbour(q)) continue;
-            vec3 c = texelFetch(uColor, q, 0).rgb;
+            if (!inImage(q)) continue;
             vec4 g = texelFetch(uGuide, q, 0);
+            if (!isNeighbour(g)) continue;
+            vec3 c = texelFetch(uColor, q, 0).rgb;
             vec3 dt = tp - compressed(c);
             float w = exp(-float(dx * dx + dy * dy) / (2.0 * kSigmaSpatial * kSigmaSpatial)) *
-                      exp(-dot(dt, dt) / (2.0 * kSigmaRange * kSigmaRange)) * normalWeight(guide.xyz, g.xyz) *
-                      depthWeight(guide.w, g.w, gradient, vec2(dx, dy));
+                      exp(-dot(dt, dt) / (2.0 * kSigmaRange * kSigmaRange)) * geometryWeight(guide, g, gradient, vec2(dx, dy));
             color += w * c;
             weights += w;
         }

@@ -4,8 +4,8 @@
 #include "common/luminance.glsl"
 #include "denoise/pixel_class.glsl"
 
-uniform sampler2D uGuide;   // (unit first-hit normal, 0 if every sample missed; mean first-hit distance)
-uniform sampler2D uAlbedo;  // (albedo divided out, pixel class: kUnrendered, kSurface or kEmitter)
+// (unit first-hit normal, 0 if every sample missed; mean first-hit distance, or a pixel class)
+uniform sampler2D uGuide;
 
 const float kSigmaDepth = 1.0;      // sigma_z of eq. 3 (SVGF's value)
 const float kSigmaNormal = 128.0;   // sigma_n of eq. 4 (SVGF's value)
@@ -13,10 +13,8 @@ const float kSigmaLuminance = 4.0;  // sigma_l of eq. 5 (SVGF's value)
 
 bool inImage(ivec2 q) { return all(greaterThanEqual(q, ivec2(0))) && all(lessThan(q, textureSize(uGuide, 0))); }
 
-float pixelClass(ivec2 q) { return texelFetch(uAlbedo, q, 0).a; }
-
-// Whether q may contribute to a filtered pixel: inside the image, rendered, and not an emitter.
-bool isNeighbour(ivec2 q) { return inImage(q) && pixelClass(q) == kSurface; }
+// Whether a pixel with this guide may contribute to a filtered pixel: rendered, and not an emitter.
+bool isNeighbour(vec4 guide) { return guide.w >= 0.0; }
 
 // The screen-space depth gradient at p (SVGF takes it from the rasteriser; here the guides are an
 // image): per axis the one-sided difference of smaller magnitude, so that a neighbour across a depth
@@ -29,7 +27,9 @@ vec2 depthGradient(ivec2 p, float z) {
         for (int side = -1; side <= 1; side += 2) {
             ivec2 q = p + side * step;
             if (!inImage(q)) continue;
-            float d = texelFetch(uGuide, q, 0).w - z;
+            float zq = texelFetch(uGuide, q, 0).w;
+            if (zq < 0.0) continue;
+            float d = zq - z;
             if (abs(d) < abs(best)) best = d;
         }
         gradient[axis] = best == 1e30 ? 0.0 : abs(best);
@@ -48,7 +48,16 @@ float depthWeight(float zp, float zq, vec2 gradient, vec2 offset) {
 float normalWeight(vec3 np, vec3 nq) {
     bool missP = np == vec3(0.0), missQ = nq == vec3(0.0);
     if (missP || missQ) return missP == missQ ? 1.0 : 0.0;
-    return pow(max(0.0, dot(np, nq)), kSigmaNormal);
+    float w = max(0.0, dot(np, nq));
+    for (int i = 0; i < 7; ++i) w *= w;  // ^128 = ^kSigmaNormal, by squaring (cheaper than pow)
+    return w;
+}
+
+// w_n w_z of pixel q for the filtered pixel p. A pixel without samples (kUnrendered) has no geometry
+// to compare: only the other weights apply.
+float geometryWeight(vec4 guideP, vec4 guideQ, vec2 gradient, vec2 offset) {
+    if (guideP.w < 0.0) return 1.0;
+    return normalWeight(guideP.xyz, guideQ.xyz) * depthWeight(guideP.w, guideQ.w, gradient, offset);
 }
 
 // Eq. 5: the luminance difference against the noise expected at p, sqrt of its (prefiltered)

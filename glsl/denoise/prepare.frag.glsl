@@ -20,8 +20,8 @@ const float kMinAlbedo = 0.01;
 const float kMinSamplesForVariance = 4.0;
 
 layout(location = 0) out vec4 outColor;   // (colour, luminance variance of its mean; -1: estimate it)
-layout(location = 1) out vec4 outGuide;   // (unit normal or 0, mean distance)
-layout(location = 2) out vec4 outAlbedo;  // (albedo to multiply back, pixel class)
+layout(location = 1) out vec4 outGuide;   // (unit normal or 0, mean distance or pixel class)
+layout(location = 2) out vec4 outAlbedo;  // (albedo to multiply back, 0)
 
 void main() {
     ivec2 p = ivec2(gl_FragCoord.xy);
@@ -29,23 +29,24 @@ void main() {
     float n = sum.a;
     if (n == 0.0) {  // not rendered yet (a tile of an unfinished pass): its neighbours fill it in
         outColor = vec4(0.0);
-        outGuide = vec4(0.0);
-        outAlbedo = vec4(1.0, 1.0, 1.0, kUnrendered);
+        outGuide = vec4(0.0, 0.0, 0.0, kUnrendered);
+        outAlbedo = vec4(1.0, 1.0, 1.0, 0.0);
         return;
     }
     vec3 mean = sum.rgb / n;
     vec4 normalDepth = texelFetch(uNormalDepth, p, 0), albedoSum = texelFetch(uAlbedoSum, p, 0);
     float guideSamples = albedoSum.a;  // fewer than n after a resumed render (guides are not saved)
     vec3 normal = vec3(0.0), albedo = vec3(1.0);
-    float depth = 0.0, pixel = kSurface;
+    float depth = 0.0;
+    bool emitter = false;
     if (guideSamples > 0.0) {
         vec3 meanNormal = normalDepth.xyz / guideSamples;
         normal = dot(meanNormal, meanNormal) > 1e-12 ? normalize(meanNormal) : vec3(0.0);
         depth = normalDepth.w / guideSamples;
         // An emitter's radiance is not albedo times light, and a pixel that saw only background has no
         // albedo: neither is demodulated.
-        if (texelFetch(uCounters, p, 0).y > 0.0) pixel = kEmitter;
-        else if (uDemodulate == 1 && depth > 0.0) albedo = max(albedoSum.rgb / guideSamples, kMinAlbedo);
+        emitter = texelFetch(uCounters, p, 0).y > 0.0;
+        if (!emitter && uDemodulate == 1 && depth > 0.0) albedo = max(albedoSum.rgb / guideSamples, kMinAlbedo);
     }
     float variance = -1.0;
     if (n >= kMinSamplesForVariance) {
@@ -58,6 +59,6 @@ void main() {
         variance = deviation * deviation;
     }
     outColor = vec4(mean / albedo, variance);
-    outGuide = vec4(normal, depth);
-    outAlbedo = vec4(albedo, pixel);
+    outGuide = vec4(normal, emitter ? kEmitter : depth);
+    outAlbedo = vec4(albedo, 0.0);
 }

@@ -12,19 +12,20 @@ out vec4 outColor;
 void main() {
     ivec2 p = ivec2(gl_FragCoord.xy);
     vec4 c = texelFetch(uColor, p, 0);
-    if (c.a >= 0.0 || pixelClass(p) != kSurface) {
+    vec4 guide = texelFetch(uGuide, p, 0);
+    if (c.a >= 0.0 || !isNeighbour(guide)) {
         outColor = vec4(c.rgb, max(c.a, 0.0));
         return;
     }
-    vec4 guide = texelFetch(uGuide, p, 0);
     vec2 gradient = depthGradient(p, guide.w);
     float weights = 0.0, moment1 = 0.0, moment2 = 0.0;
     for (int dy = -3; dy <= 3; ++dy)
         for (int dx = -3; dx <= 3; ++dx) {
             ivec2 q = p + ivec2(dx, dy);
-            if (!isNeighbour(q)) continue;
+            if (!inImage(q)) continue;
             vec4 g = texelFetch(uGuide, q, 0);
-            float w = normalWeight(guide.xyz, g.xyz) * depthWeight(guide.w, g.w, gradient, vec2(dx, dy));
+            if (!isNeighbour(g)) continue;
+            float w = geometryWeight(guide, g, gradient, vec2(dx, dy));
             float l = luminance(texelFetch(uColor, q, 0).rgb);
             weights += w;
             moment1 += w * l;

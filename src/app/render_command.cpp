@@ -3,11 +3,11 @@
 
 #include <algorithm>
 #include <atomic>
-#include <cmath>
-#include <cstdlib>
 #include <chrono>
+#include <cmath>
 #include <csignal>
 #include <cstdio>
+#include <cstdlib>
 #include <ctime>
 #include <filesystem>
 
@@ -107,8 +107,11 @@ void checkOutputPath(const std::string& path) {
 
 int renderCommand(const std::vector<std::string>& argv) {
     Args args(argv,
-              {"-o", "--output", "--size", "--spp", "--max-depth", "--seed", "--integrator", "--eye",
-               "--target", "--up", "--fov", "--view", "--exposure", "--tonemap", "--samples-per-pass", "--shader-dir", "--backend", "--sample-offset", "--time-budget", "--resume", "--denoise", "--denoised-out"},
+              {"-o",           "--output",      "--size",          "--spp",         "--max-depth",
+               "--seed",       "--integrator",  "--eye",           "--target",      "--up",
+               "--fov",        "--view",        "--exposure",      "--tonemap",     "--samples-per-pass",
+               "--shader-dir", "--backend",     "--sample-offset", "--time-budget", "--resume",
+               "--denoise",    "--denoised-out"},
               {"--stats", "--quiet", "-h", "--help"});
     if (args.has("-h") || args.has("--help")) {
         std::fputs(kRenderUsage, stdout);
@@ -157,7 +160,8 @@ int renderCommand(const std::vector<std::string>& argv) {
     settings.seed = uint32_t(args.integer("--seed", 0, 2147483647).value_or(int(d.seed.value_or(0))));
     settings.integrator = parseIntegrator(args.text("--integrator").value_or(d.integrator.value_or("nee")));
     if (auto v = args.text("--view")) settings.view = parseView(*v);
-    settings.samplesPerPass = args.integer("--samples-per-pass", 1, RenderSettings::kMaxSamplesPerPass).value_or(1);
+    settings.samplesPerPass =
+        args.integer("--samples-per-pass", 1, RenderSettings::kMaxSamplesPerPass).value_or(1);
     settings.sampleOffset = uint32_t(args.integer("--sample-offset", 0, 1 << 30).value_or(0));
     settings.guides = denoiser != Denoiser::None;
     std::optional<PartialRender> resumed;

@@ -78,7 +78,8 @@ void DenoisePasses::resize(int width, int height) {
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
 }
 
-void DenoisePasses::draw(Pass pass, GLuint target, std::initializer_list<std::pair<const char*, GLuint>> inputs) {
+void DenoisePasses::draw(Pass pass, GLuint target,
+                         std::initializer_list<std::pair<const char*, GLuint>> inputs) {
     Program& p = program(pass);
     p.use();
     int unit = kFirstUnit;
@@ -113,7 +114,7 @@ void DenoisePasses::run(const Renderer& renderer, Denoiser which) {
     const GLuint guide = textures_[kGuide], albedo = textures_[kAlbedo];
     Texture current = kColorA, other = kColorB;
     auto filter = [&](Pass pass) {
-        draw(pass, framebuffers_[other], {{"uColor", textures_[current]}, {"uGuide", guide}, {"uAlbedo", albedo}});
+        draw(pass, framebuffers_[other], {{"uColor", textures_[current]}, {"uGuide", guide}});
         std::swap(current, other);
     };
     if (which == Denoiser::Bilateral) {

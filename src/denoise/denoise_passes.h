@@ -46,7 +46,7 @@ class DenoisePasses {
     std::array<std::unique_ptr<Program>, kPassCount> programs_;
     int width_ = 0, height_ = 0;
     std::array<GLuint, kTextureCount> textures_{};
-    GLuint prepareFramebuffer_ = 0;                         // writes colour A, guide and albedo
+    GLuint prepareFramebuffer_ = 0;                     // writes colour A, guide and albedo
     std::array<GLuint, kTextureCount> framebuffers_{};  // one per texture, for the other passes
     GLuint vertexArray_ = 0;
 };

@@ -12,7 +12,8 @@ namespace {
 // Makes the bound framebuffer's draw calls write every attachment, in order.
 void drawAllAttachments() {
     std::array<GLenum, RenderTargets::kAttachments> buffers;
-    for (int a = 0; a < RenderTargets::kAttachments; ++a) buffers[size_t(a)] = GLenum(GL_COLOR_ATTACHMENT0 + a);
+    for (int a = 0; a < RenderTargets::kAttachments; ++a)
+        buffers[size_t(a)] = GLenum(GL_COLOR_ATTACHMENT0 + a);
     glDrawBuffers(RenderTargets::kAttachments, buffers.data());
 }
 
@@ -90,7 +91,8 @@ void RenderTargets::endPass(const PixelRegion& region) {
         glReadBuffer(draw[size_t(a)]);
         glDrawBuffers(kAttachments, draw.data());
         int x1 = region.x + region.width, y1 = region.y + region.height;
-        glBlitFramebuffer(region.x, region.y, x1, y1, region.x, region.y, x1, y1, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+        glBlitFramebuffer(region.x, region.y, x1, y1, region.x, region.y, x1, y1, GL_COLOR_BUFFER_BIT,
+                          GL_NEAREST);
     }
     drawAllAttachments();
     glBindFramebuffer(GL_FRAMEBUFFER, 0);

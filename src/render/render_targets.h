@@ -1,8 +1,8 @@
 #pragma once
 // The accumulation buffers: two framebuffers, each with kAttachments RGBA32F attachments (sums,
-// squares, counters, and the first-hit guides of the denoisers). A pass reads the current one and writes the other. A full-frame pass then swaps
-// them (ping-pong); a pass over a region (a tile, half of a split view) copies that region back instead,
-// so regions can be rendered one at a time without copying the whole frame.
+// squares, counters, and the first-hit guides of the denoisers). A pass reads the current one and writes the
+// other. A full-frame pass then swaps them (ping-pong); a pass over a region (a tile, half of a split view)
+// copies that region back instead, so regions can be rendered one at a time without copying the whole frame.
 #include <array>
 
 #include "gl/gl.h"
@@ -18,8 +18,14 @@ struct PixelRegion {
 
 // The attachments, in the order of the trace pass's outputs (glsl/passes/trace.frag.glsl says what each
 // channel holds).
-enum Attachment : int { kSumAttachment, kSquaresAttachment, kCountersAttachment, kNormalDepthAttachment,
-                        kAlbedoAttachment, kAttachmentCount };
+enum Attachment : int {
+    kSumAttachment,
+    kSquaresAttachment,
+    kCountersAttachment,
+    kNormalDepthAttachment,
+    kAlbedoAttachment,
+    kAttachmentCount
+};
 
 class RenderTargets {
   public:

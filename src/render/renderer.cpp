@@ -54,7 +54,8 @@ Renderer::Renderer(const Scene& scene, ShaderLibrary shaders, const BvhBuildOpti
     if (scene.environment.hasMap()) {
         PackedEnvironment environment = packEnvironment(scene.environment);
         // A black map is no light at all: leave it out rather than sample nothing.
-        if (environment.totalWeight > 0.0) environmentTextures_ = std::make_unique<EnvironmentTextures>(environment);
+        if (environment.totalWeight > 0.0)
+            environmentTextures_ = std::make_unique<EnvironmentTextures>(environment);
     }
     for (const Material& m : scene.materials) materialTypes_ |= 1u << uint32_t(m.type);
     glGenVertexArrays(1, &vertexArray_);
@@ -67,7 +68,8 @@ Renderer::~Renderer() {
 std::unique_ptr<Program> Renderer::compile(Integrator integrator) const {
     ShaderDefines defines = layout::layoutDefines();
     defines.emplace_back("BVH_STACK_SIZE", std::to_string(stats_.stackSize));
-    defines.emplace_back("INTEGRATOR_FILE", std::string("\"integrators/") + integratorName(integrator) + ".glsl\"");
+    defines.emplace_back("INTEGRATOR_FILE",
+                         std::string("\"integrators/") + integratorName(integrator) + ".glsl\"");
     defines.emplace_back("DEBUG_VIEW", std::to_string(int(settings_.view)));
     defines.emplace_back("GUIDES", settings_.guides ? "1" : "0");
     defines.emplace_back("MATERIAL_TYPES", std::to_string(materialTypes_));
@@ -82,7 +84,8 @@ std::unique_ptr<Program> Renderer::compile(Integrator integrator) const {
     defines.emplace_back("SPECTRUM_CENTRE_NM", vec3Literal(spectrum::kCentreNm));
     defines.emplace_back("SPECTRUM_WIDTH_NM", vec3Literal(spectrum::kWidthNm));
     defines.emplace_back("SPECTRUM_NORMALISATION", vec3Literal(spectrum::normalisation()));
-    return std::make_unique<Program>(shaders_, "passes/fullscreen.vert.glsl", "passes/trace.frag.glsl", defines);
+    return std::make_unique<Program>(shaders_, "passes/fullscreen.vert.glsl", "passes/trace.frag.glsl",
+                                     defines);
 }
 
 void Renderer::reloadShaders() {
@@ -99,11 +102,12 @@ void Renderer::configure(const RenderSettings& settings, const Camera& camera) {
     if (settings.maxDepth < 0 || (settings.split && settings.split->maxDepth < 0))
         throw Error("max depth must be 0 or more");
     if (settings.samplesPerPass < 1 || settings.samplesPerPass > RenderSettings::kMaxSamplesPerPass)
-        throw Error("samples per pass must be between 1 and " + std::to_string(RenderSettings::kMaxSamplesPerPass));
+        throw Error("samples per pass must be between 1 and " +
+                    std::to_string(RenderSettings::kMaxSamplesPerPass));
     bool splitChanged = settings.split.has_value() != settings_.split.has_value() ||
                         (settings.split && settings.split->integrator != settings_.split->integrator);
-    bool recompile = !program_ || settings.integrator != settings_.integrator || settings.view != settings_.view ||
-                     settings.guides != settings_.guides || splitChanged;
+    bool recompile = !program_ || settings.integrator != settings_.integrator ||
+                     settings.view != settings_.view || settings.guides != settings_.guides || splitChanged;
     if (recompile) {
         // Compile both programs before changing anything, so that a compile error leaves the renderer
         // exactly as it was.
@@ -196,8 +200,8 @@ void Renderer::render(int samples, const std::function<bool(int)>& progress) {
         int count = std::min(settings_.samplesPerPass, samples - done);
         if (splitProgram_) {
             draw(*program_, settings_.maxDepth, clip(full, {0, 0, half, settings_.height}), count);
-            draw(*splitProgram_, settings_.split->maxDepth, clip(full, {half, 0, settings_.width, settings_.height}),
-                 count);
+            draw(*splitProgram_, settings_.split->maxDepth,
+                 clip(full, {half, 0, settings_.width, settings_.height}), count);
         } else {
             draw(*program_, settings_.maxDepth, full, count);
         }
@@ -211,13 +215,15 @@ void Renderer::render(int samples, const std::function<bool(int)>& progress) {
 bool Renderer::renderTile(int tileSize) {
     if (!targets_) throw Error("internal: Renderer::renderTile before configure");
     tileSize = std::max(tileSize, 1);
-    int columns = (settings_.width + tileSize - 1) / tileSize, rows = (settings_.height + tileSize - 1) / tileSize;
+    int columns = (settings_.width + tileSize - 1) / tileSize,
+        rows = (settings_.height + tileSize - 1) / tileSize;
     int column = nextTile_ % columns, row = nextTile_ / columns;
     PixelRegion tile = clip(targets_->full(), {column * tileSize, row * tileSize, tileSize, tileSize});
     if (splitProgram_) {
         int half = settings_.width / 2;
         draw(*program_, settings_.maxDepth, clip(tile, {0, 0, half, settings_.height}), 1);
-        draw(*splitProgram_, settings_.split->maxDepth, clip(tile, {half, 0, settings_.width, settings_.height}), 1);
+        draw(*splitProgram_, settings_.split->maxDepth,
+             clip(tile, {half, 0, settings_.width, settings_.height}), 1);
     } else {
         draw(*program_, settings_.maxDepth, tile, 1);
     }

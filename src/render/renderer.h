@@ -29,8 +29,8 @@ class Renderer {
     Renderer(const Scene& scene, ShaderLibrary shaders = ShaderLibrary(), const BvhBuildOptions& bvh = {});
     ~Renderer();
 
-    // Sets what to render; restarts accumulation, recompiling shaders only when the integrator, view, guides or
-    // split changed. Throws fp::Error for settings that cannot be rendered.
+    // Sets what to render; restarts accumulation, recompiling shaders only when the integrator, view, guides
+    // or split changed. Throws fp::Error for settings that cannot be rendered.
     void configure(const RenderSettings& settings, const Camera& camera);
     // Adds `samples` samples per pixel over the whole image; `progress(done)` is called after every
     // pass and may return false to stop early (an interrupted render keeps what it has).

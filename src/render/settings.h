@@ -16,9 +16,11 @@ const char* integratorName(Integrator integrator);
 // tracer pays there (glsl/passes/debug_views.glsl).
 enum class View { Radiance = 0, Depth = 1, Normal = 2, Albedo = 3, Bounces = 4, Nodes = 5, Triangles = 6 };
 // Views that count something, best shown as a heat map.
-inline bool isCountView(View v) { return v == View::Bounces || v == View::Nodes || v == View::Triangles; }
+inline bool isCountView(View v) {
+    return v == View::Bounces || v == View::Nodes || v == View::Triangles;
+}
 
-constexpr View kAllViews[] = {View::Radiance, View::Depth,  View::Normal,   View::Albedo,
+constexpr View kAllViews[] = {View::Radiance, View::Depth, View::Normal,   View::Albedo,
                               View::Bounces,  View::Nodes, View::Triangles};
 View parseView(const std::string& name);  // throws fp::Error listing the choices
 const char* viewName(View view);

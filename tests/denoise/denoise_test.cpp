@@ -202,8 +202,9 @@ TEST_F(DenoiseCornell, FiltersBringSixteenSamplesCloserToConverged) {
         Image out = denoise(*renderer_, d);
         ASSERT_TRUE(allFinite(out));
         double errorAll = rmseWhere(out, reference, all), errorSurfaces = rmseWhere(out, reference, surfaces);
-        std::printf("%s at 16 spp: RMSE %.4f (raw %.4f); without emitter pixels %.4f (raw %.4f, ratio %.2f)\n",
-                    denoiserName(d), errorAll, rawAll, errorSurfaces, rawSurfaces, errorSurfaces / rawSurfaces);
+        std::printf(
+            "%s at 16 spp: RMSE %.4f (raw %.4f); without emitter pixels %.4f (raw %.4f, ratio %.2f)\n",
+            denoiserName(d), errorAll, rawAll, errorSurfaces, rawSurfaces, errorSurfaces / rawSurfaces);
         EXPECT_LT(errorAll, rawAll) << denoiserName(d);
         EXPECT_LT(errorSurfaces, 0.8 * rawSurfaces) << denoiserName(d);
     }
@@ -222,7 +223,7 @@ TEST(Denoise, DoesNotBlurAcrossANormalDiscontinuity) {
     uint32_t lamp = addMaterial(scene, glm::vec3(0.0f), glm::vec3(30.0f));
     const float t = 0.5f;  // slope of each face away from the camera
     addQuad(scene, {-20, -20, -20 * t}, {0, -20, 0}, {0, 20, 0}, {-20, 20, -20 * t}, grey);  // left: z = t x
-    addQuad(scene, {0, -20, 0}, {20, -20, -20 * t}, {20, 20, -20 * t}, {0, 20, 0}, grey);    // right: z = -t x
+    addQuad(scene, {0, -20, 0}, {20, -20, -20 * t}, {20, 20, -20 * t}, {0, 20, 0}, grey);  // right: z = -t x
     // At x = -30, facing +x; every point has t x + z < 0: behind the right face's plane.
     addQuad(scene, {-30, -10, -10}, {-30, 10, -10}, {-30, 10, 4}, {-30, -10, 4}, lamp);
     Renderer renderer(scene);
@@ -241,8 +242,9 @@ TEST(Denoise, DoesNotBlurAcrossANormalDiscontinuity) {
     double bound = 5.0 * estimate(acc, strip.x, strip.y, strip.width, strip.height).standardError.g;
     for (Denoiser d : kFilters) {
         double m = meanColor(denoise(renderer, d), strip).g;
-        std::printf("%s: right face next to the ridge %.4f (expected 0.5 +- %.4f; raw %.4f, left face %.2f)\n",
-                    denoiserName(d), m, bound, meanColor(raw, strip).g, leftMean);
+        std::printf(
+            "%s: right face next to the ridge %.4f (expected 0.5 +- %.4f; raw %.4f, left face %.2f)\n",
+            denoiserName(d), m, bound, meanColor(raw, strip).g, leftMean);
         EXPECT_NEAR(m, 0.5, bound) << denoiserName(d);
     }
 }
