@@ -101,6 +101,7 @@ class Session {
     double overheadSeconds_ = 0.005;  // per frame, everything but rendering (events, panel, display, swap)
     int denoisedSamples_ = -1;        // the sample count the denoiser's result is of; -1: none is current
     double denoiseSeconds_ = 0.0, denoisedAt_ = 0.0;
+    double frameDenoiseSeconds_ = 0.0;  // not part of the per-frame overhead: it happens now and then
     bool heatFitDue_ = true, heatFitRequested_ = false;
     std::string shaderError_, message_;
 };
@@ -344,6 +345,7 @@ GLuint Session::shownTexture(bool current) {
         window_.finish();
         denoisedAt_ = now();
         denoiseSeconds_ = denoisedAt_ - start;
+        frameDenoiseSeconds_ += denoiseSeconds_;
         denoisedSamples_ = renderer_.samples();
     }
     return denoiser_.resultTexture();
@@ -429,6 +431,7 @@ void Session::run() {
 
         framePaths_ = 0.0;
         frameRenderSeconds_ = 0.0;
+        frameDenoiseSeconds_ = 0.0;
         bool rendering = decision.render && !targetReached();
         if (rendering) renderWithinBudget();
         fitHeatMapIfDue();
@@ -460,7 +463,9 @@ void Session::run() {
         stats_.addFrame(now(), frameSeconds, framePaths_,
                         double(renderer_.settings().width) * double(renderer_.settings().height));
         if (rendering)
-            overheadSeconds_ += 0.25 * (std::max(frameSeconds - frameRenderSeconds_, 0.0) - overheadSeconds_);
+            overheadSeconds_ +=
+                0.25 *
+                (std::max(frameSeconds - frameRenderSeconds_ - frameDenoiseSeconds_, 0.0) - overheadSeconds_);
         if (done) break;
         idle = options_.frames == 0 && !rendering && !policy_.moving(now()) && !input_.flying();
     }
