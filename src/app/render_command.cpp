@@ -191,6 +191,12 @@ int renderCommand(const std::vector<std::string>& argv) {
         already = int(resumed->samples());
         renderer.restore(resumed->mean, already);
         if (!quiet) std::fprintf(stderr, "resuming %s: %d samples done\n", from.c_str(), already);
+        if (denoisedOutput && denoiser != Denoiser::None && !quiet)
+            std::fprintf(
+                stderr,
+                "note: %s holds no guides or sums of squares: the denoiser's guides and noise estimate "
+                "come from the samples rendered now only\n",
+                from.c_str());
     }
 
     Progress progress(spp - already);
