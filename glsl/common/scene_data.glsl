@@ -30,4 +30,4 @@ vec3 fetchShadingNormal(int i, vec2 uv) {
 
 vec3 materialEmission(int m) { return texelFetch(uMaterials, m * MATERIAL_TEXELS + 1).rgb; }
 
-float luminance(vec3 rgb) { return dot(rgb, vec3(0.2126, 0.7152, 0.0722)); }
+#include "common/luminance.glsl"

@@ -28,7 +28,7 @@ vec3 debugView(Ray ray) {
 #elif DEBUG_VIEW == VIEW_NORMAL
     return 0.5 * s.shadingNormal + 0.5;  // the side facing the camera, mapped from [-1, 1] to [0, 1]
 #else
-    return s.material.diffuse;
+    return surfaceAlbedo(s);  // passes/guides.glsl
 #endif
 #endif
 #endif

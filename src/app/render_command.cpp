@@ -3,11 +3,11 @@
 
 #include <algorithm>
 #include <atomic>
-#include <cmath>
-#include <cstdlib>
 #include <chrono>
+#include <cmath>
 #include <csignal>
 #include <cstdio>
+#include <cstdlib>
 #include <ctime>
 #include <filesystem>
 
@@ -15,6 +15,7 @@
 #include "app/commands.h"
 #include "app/progress.h"
 #include "core/error.h"
+#include "denoise/denoiser.h"
 #include "gl/context.h"
 #include "image/file_io.h"
 #include "image/tone_map.h"
@@ -35,7 +36,10 @@ const char* kRenderUsage =
     ".exr or .pfm (linear radiance).\n"
     "\n"
     "options:\n"
-    "  -o, --output FILE     output image (default: render.png)\n"
+    "  -o, --output FILE     output image (default: render.png); always the raw samples\n"
+    "  --denoise NAME        none | bilateral (joint bilateral filter) | atrous (edge-avoiding a-trous\n"
+    "                        wavelets, variance-guided); needs --denoised-out\n"
+    "  --denoised-out FILE   where the denoised image goes (.png, .exr or .pfm); needs --denoise\n"
     "  --size WxH            image size (default: the scene file's, else 512x512)\n"
     "  --spp N               samples per pixel (default: the scene file's, else 64)\n"
     "  --max-depth D         bounces: 0 shows emitters only, 1 direct light, ... (default 5)\n"
@@ -104,8 +108,11 @@ void checkOutputPath(const std::string& path) {
 
 int renderCommand(const std::vector<std::string>& argv) {
     Args args(argv,
-              {"-o", "--output", "--size", "--spp", "--max-depth", "--seed", "--integrator", "--eye",
-               "--target", "--up", "--fov", "--view", "--exposure", "--tonemap", "--samples-per-pass", "--shader-dir", "--backend", "--sample-offset", "--time-budget", "--resume", "--bvh-threads"},
+              {"-o",           "--output",      "--size",          "--spp",         "--max-depth",
+               "--seed",       "--integrator",  "--eye",           "--target",      "--up",
+               "--fov",        "--view",        "--exposure",      "--tonemap",     "--samples-per-pass",
+               "--shader-dir", "--backend",     "--sample-offset", "--time-budget", "--resume",
+               "--denoise",    "--denoised-out"},
               {"--stats", "--quiet", "-h", "--help"});
     if (args.has("-h") || args.has("--help")) {
         std::fputs(kRenderUsage, stdout);
@@ -115,6 +122,21 @@ int renderCommand(const std::vector<std::string>& argv) {
         throw Error("render takes one scene file, got " + std::to_string(args.positional().size()));
     std::string output = args.text("-o").value_or(args.text("--output").value_or("render.png"));
     checkOutputPath(output);
+    // -o always holds the raw samples (resumable, mergeable); a denoised image needs a name of its own,
+    // so that no file silently holds something other than what its flag says.
+    Denoiser denoiser = parseDenoiser(args.text("--denoise").value_or("none"));
+    std::optional<std::string> denoisedOutput = args.text("--denoised-out");
+    if (args.has("--denoise") && denoiser != Denoiser::None && !denoisedOutput)
+        throw Error("--denoise " + std::string(denoiserName(denoiser)) +
+                    " needs --denoised-out FILE for the denoised image (-o keeps the raw samples)");
+    if (denoisedOutput && !args.has("--denoise"))
+        throw Error("--denoised-out needs --denoise NAME (none, bilateral or atrous)");
+    if (denoisedOutput) {
+        checkOutputPath(*denoisedOutput);
+        if (std::filesystem::absolute(*denoisedOutput).lexically_normal() ==
+            std::filesystem::absolute(output).lexically_normal())
+            throw Error("--denoised-out and -o name the same file, " + output);
+    }
     DisplaySettings display;
     display.exposure = args.number("--exposure").value_or(0.0f);
     if (auto t = args.text("--tonemap")) display.toneMap = parseToneMap(*t);
@@ -139,8 +161,10 @@ int renderCommand(const std::vector<std::string>& argv) {
     settings.seed = uint32_t(args.integer("--seed", 0, 2147483647).value_or(int(d.seed.value_or(0))));
     settings.integrator = parseIntegrator(args.text("--integrator").value_or(d.integrator.value_or("nee")));
     if (auto v = args.text("--view")) settings.view = parseView(*v);
-    settings.samplesPerPass = args.integer("--samples-per-pass", 1, RenderSettings::kMaxSamplesPerPass).value_or(1);
+    settings.samplesPerPass =
+        args.integer("--samples-per-pass", 1, RenderSettings::kMaxSamplesPerPass).value_or(1);
     settings.sampleOffset = uint32_t(args.integer("--sample-offset", 0, 1 << 30).value_or(0));
+    settings.guides = denoiser != Denoiser::None;
     std::optional<PartialRender> resumed;
     if (auto r = args.text("--resume")) resumed = readPartial(*r);
 
@@ -170,6 +194,12 @@ int renderCommand(const std::vector<std::string>& argv) {
         already = int(resumed->samples());
         renderer.restore(resumed->mean, already);
         if (!quiet) std::fprintf(stderr, "resuming %s: %d samples done\n", from.c_str(), already);
+        if (denoisedOutput && denoiser != Denoiser::None && !quiet)
+            std::fprintf(
+                stderr,
+                "note: %s holds no guides or sums of squares: the denoiser's guides and noise estimate "
+                "come from the samples rendered now only\n",
+                from.c_str());
     }
 
     Progress progress(spp - already);
@@ -193,6 +223,7 @@ int renderCommand(const std::vector<std::string>& argv) {
         writePartial(output, {acc.mean(), {{settings.sampleOffset, uint64_t(total)}}, fingerprint});
     else
         writeImage(output, acc.mean(), display);
+    if (denoisedOutput) writeImage(*denoisedOutput, denoise(renderer, denoiser), display);
 
     int done = total - already;
     double paths = double(settings.width) * settings.height * done;

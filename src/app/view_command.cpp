@@ -36,6 +36,8 @@ const char* kViewUsage =
     "                        home camera (default: the scene file's, else one that frames the scene)\n"
     "  --exposure STOPS      display exposure (default 0)\n"
     "  --tonemap NAME        clamp | reinhard | aces (default clamp)\n"
+    "  --denoise NAME        none | bilateral | atrous: denoise the radiance view for display (N toggles\n"
+    "                        raw / denoised; screenshots are of what is shown)\n"
     "  --scale F             accumulation size / window size, 0.0625 to 1 (default 1)\n"
     "  --spp N               stop rendering at N samples per pixel (default: never)\n"
     "  --shader-dir DIR      read shaders from DIR and reload them when a *.glsl file there changes\n"
@@ -60,9 +62,26 @@ void checkImagePath(const std::string& flag, const std::string& path, bool pngOn
 
 int viewCommand(const std::vector<std::string>& argv) {
     Args args(argv,
-              {"--size", "--spp", "--max-depth", "--seed", "--integrator", "--view", "--split",
-               "--split-depth", "--eye", "--target", "--up", "--fov", "--exposure", "--tonemap", "--scale",
-               "--shader-dir", "--frames", "--screenshot", "--screenshot-window"},
+              {"--size",
+               "--spp",
+               "--max-depth",
+               "--seed",
+               "--integrator",
+               "--view",
+               "--split",
+               "--split-depth",
+               "--eye",
+               "--target",
+               "--up",
+               "--fov",
+               "--exposure",
+               "--tonemap",
+               "--scale",
+               "--shader-dir",
+               "--frames",
+               "--screenshot",
+               "--screenshot-window",
+               "--denoise"},
               {"--no-ui", "-h", "--help"});
     if (args.has("-h") || args.has("--help")) {
         std::fputs(kViewUsage, stdout);
@@ -98,6 +117,7 @@ int viewCommand(const std::vector<std::string>& argv) {
     c.splitView.maxDepth = args.integer("--split-depth", 0, 1000).value_or(c.render.maxDepth);
     c.tone.exposure = args.number("--exposure").value_or(0.0f);
     if (auto t = args.text("--tonemap")) c.tone.toneMap = parseToneMap(*t);
+    if (auto name = args.text("--denoise")) c.denoiser = parseDenoiser(*name);
     c.resolutionScale = args.number("--scale").value_or(1.0f);
     if (!(c.resolutionScale >= 1.0f / 16.0f && c.resolutionScale <= 1.0f))
         throw Error("option --scale: must be from 0.0625 to 1");

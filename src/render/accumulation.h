@@ -12,8 +12,10 @@ namespace fp {
 struct Accumulation {
     int width = 0, height = 0;
     // Per pixel, rows top to bottom: (sum of radiance, samples), (sum of squares, dropped samples) and
-    // (rays traced, 0, 0, 0).
-    std::vector<glm::vec4> sum, squares, counters;
+    // (rays traced, samples whose camera ray hit an emitter first, 0, 0); then the first-hit guides of
+    // the denoisers, summed over the samples: (shading normal, distance) and (albedo, guide samples).
+    // A miss adds zeros (and 1 guide sample).
+    std::vector<glm::vec4> sum, squares, counters, normalDepth, albedo;
     // bdpt's light image (render/light_splat.h), empty for the other integrators: per pixel, (sum of the
     // light-traced contributions that landed there, rays traced by light paths launched there) and (sum
     // of their squares, non-finite contributions dropped); and N, the light paths traced per pixel

@@ -7,6 +7,18 @@
 
 namespace fp {
 
+namespace {
+
+// Makes the bound framebuffer's draw calls write every attachment, in order.
+void drawAllAttachments() {
+    std::array<GLenum, RenderTargets::kAttachments> buffers;
+    for (int a = 0; a < RenderTargets::kAttachments; ++a)
+        buffers[size_t(a)] = GLenum(GL_COLOR_ATTACHMENT0 + a);
+    glDrawBuffers(RenderTargets::kAttachments, buffers.data());
+}
+
+}  // namespace
+
 RenderTargets::RenderTargets(int width, int height) : width_(width), height_(height) {
     GLint maxSize = 0;
     glGetIntegerv(GL_MAX_TEXTURE_SIZE, &maxSize);
@@ -25,8 +37,7 @@ RenderTargets::RenderTargets(int width, int height) : width_(width), height_(hei
             glFramebufferTexture2D(GL_FRAMEBUFFER, GLenum(GL_COLOR_ATTACHMENT0 + a), GL_TEXTURE_2D,
                                    textures_[size_t(f)][size_t(a)], 0);
         }
-        const GLenum buffers[] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1, GL_COLOR_ATTACHMENT2};
-        glDrawBuffers(kAttachments, buffers);
+        drawAllAttachments();
         GLenum status = glCheckFramebufferStatus(GL_FRAMEBUFFER);
         if (status != GL_FRAMEBUFFER_COMPLETE)
             throw Error("float render targets are not supported here (framebuffer status 0x" +
@@ -73,17 +84,17 @@ void RenderTargets::endPass(const PixelRegion& region) {
     // attachment, so the current framebuffer stays complete.
     glBindFramebuffer(GL_READ_FRAMEBUFFER, framebuffers_[size_t(current_ ^ 1)]);
     glBindFramebuffer(GL_DRAW_FRAMEBUFFER, framebuffers_[size_t(current_)]);
-    const GLenum none[kAttachments] = {GL_NONE, GL_NONE, GL_NONE};
     for (int a = 0; a < kAttachments; ++a) {
-        GLenum draw[kAttachments] = {none[0], none[1], none[2]};
-        draw[a] = GLenum(GL_COLOR_ATTACHMENT0 + a);
-        glReadBuffer(draw[a]);
-        glDrawBuffers(kAttachments, draw);
+        std::array<GLenum, kAttachments> draw;
+        draw.fill(GL_NONE);
+        draw[size_t(a)] = GLenum(GL_COLOR_ATTACHMENT0 + a);
+        glReadBuffer(draw[size_t(a)]);
+        glDrawBuffers(kAttachments, draw.data());
         int x1 = region.x + region.width, y1 = region.y + region.height;
-        glBlitFramebuffer(region.x, region.y, x1, y1, region.x, region.y, x1, y1, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+        glBlitFramebuffer(region.x, region.y, x1, y1, region.x, region.y, x1, y1, GL_COLOR_BUFFER_BIT,
+                          GL_NEAREST);
     }
-    const GLenum all[kAttachments] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1, GL_COLOR_ATTACHMENT2};
-    glDrawBuffers(kAttachments, all);
+    drawAllAttachments();
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
 }
 
@@ -102,7 +113,8 @@ Accumulation RenderTargets::read() const {
     Accumulation acc;
     acc.width = width_;
     acc.height = height_;
-    std::vector<glm::vec4>* outputs[kAttachments] = {&acc.sum, &acc.squares, &acc.counters};
+    std::vector<glm::vec4>* outputs[kAttachments] = {&acc.sum, &acc.squares, &acc.counters, &acc.normalDepth,
+                                                     &acc.albedo};
     glBindFramebuffer(GL_READ_FRAMEBUFFER, framebuffers_[size_t(current_)]);
     std::vector<glm::vec4> rows(size_t(width_) * size_t(height_));
     for (int a = 0; a < kAttachments; ++a) {

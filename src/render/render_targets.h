@@ -1,8 +1,8 @@
 #pragma once
 // The accumulation buffers: two framebuffers, each with kAttachments RGBA32F attachments (sums,
-// squares, counters). A pass reads the current one and writes the other. A full-frame pass then swaps
-// them (ping-pong); a pass over a region (a tile, half of a split view) copies that region back instead,
-// so regions can be rendered one at a time without copying the whole frame.
+// squares, counters, and the first-hit guides of the denoisers). A pass reads the current one and writes the
+// other. A full-frame pass then swaps them (ping-pong); a pass over a region (a tile, half of a split view)
+// copies that region back instead, so regions can be rendered one at a time without copying the whole frame.
 #include <array>
 
 #include "gl/gl.h"
@@ -16,9 +16,20 @@ struct PixelRegion {
     bool empty() const { return width <= 0 || height <= 0; }
 };
 
+// The attachments, in the order of the trace pass's outputs (glsl/passes/trace.frag.glsl says what each
+// channel holds).
+enum Attachment : int {
+    kSumAttachment,
+    kSquaresAttachment,
+    kCountersAttachment,
+    kNormalDepthAttachment,
+    kAlbedoAttachment,
+    kAttachmentCount
+};
+
 class RenderTargets {
   public:
-    static constexpr int kAttachments = 3;
+    static constexpr int kAttachments = kAttachmentCount;
 
     // Throws fp::Error if the size exceeds the GL limits or the framebuffer is incomplete.
     RenderTargets(int width, int height);
@@ -36,10 +47,12 @@ class RenderTargets {
     void endPass(const PixelRegion& region);
     Accumulation read() const;
     // Replaces the accumulation by `samples` samples whose per-pixel mean was `mean` (rows top first),
-    // to resume a saved render. Sums of squares are not saved, so they restart at zero.
+    // to resume a saved render. Sums of squares and guides are not saved, so they restart at zero.
     void restore(const Image& mean, int samples);
     // The current sums (radiance sum, sample count), for display.
-    GLuint sumTexture() const { return textures_[size_t(current_)][0]; }
+    GLuint sumTexture() const { return texture(kSumAttachment); }
+    // The current texture of any attachment (the denoisers read them all).
+    GLuint texture(Attachment a) const { return textures_[size_t(current_)][size_t(a)]; }
 
   private:
     int width_, height_;

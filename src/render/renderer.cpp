@@ -18,7 +18,7 @@ double secondsSince(std::chrono::steady_clock::time_point start) {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
-constexpr int kSumUnit = layout::kFirstFreeUnit;  // then the squares and the counters
+constexpr int kSumUnit = layout::kFirstFreeUnit;  // then the other attachments, in order
 constexpr int kSpareUnit = kSumUnit + RenderTargets::kAttachments;
 
 }  // namespace
@@ -80,6 +80,7 @@ std::unique_ptr<Program> Renderer::compile(Integrator integrator, const char* fr
     defines.emplace_back("INTEGRATOR_FILE",
                          std::string("\"integrators/") + integratorName(integrator) + ".glsl\"");
     defines.emplace_back("DEBUG_VIEW", std::to_string(int(settings_.view)));
+    defines.emplace_back("GUIDES", settings_.guides ? "1" : "0");
     defines.emplace_back("MATERIAL_TYPES", std::to_string(materialTypes_));
     defines.emplace_back("ENVIRONMENT_MAP", environmentTextures_ ? "1" : "0");
     // Only textured scenes pay for texture lookups (glsl/common/textures.glsl).
@@ -162,7 +163,7 @@ void Renderer::configure(const RenderSettings& settings, const Camera& camera) {
     bool splitChanged = settings.split.has_value() != settings_.split.has_value() ||
                         (settings.split && settings.split->integrator != settings_.split->integrator);
     bool recompile = !program_ || settings.integrator != settings_.integrator ||
-                     settings.view != settings_.view || splitChanged;
+                     settings.view != settings_.view || settings.guides != settings_.guides || splitChanged;
     if (recompile) {
         // Compile both programs before changing anything, so that a compile error leaves the renderer
         // exactly as it was.
@@ -235,8 +236,10 @@ void Renderer::draw(Program& p, int maxDepth, const PixelRegion& region, int sam
     if (region.empty()) return;
     setTraceUniforms(p, maxDepth);
     p.set("uPreviousSum", kSumUnit);
-    p.set("uPreviousSquares", kSumUnit + 1);
-    p.set("uPreviousCounters", kSumUnit + 2);
+    p.set("uPreviousSquares", kSumUnit + kSquaresAttachment);
+    p.set("uPreviousCounters", kSumUnit + kCountersAttachment);
+    p.set("uPreviousNormalDepth", kSumUnit + kNormalDepthAttachment);
+    p.set("uPreviousAlbedo", kSumUnit + kAlbedoAttachment);
     p.set("uSampleOffset", settings_.sampleOffset);
     p.set("uSamplesPerPass", samples);
     glBindVertexArray(vertexArray_);

@@ -35,8 +35,8 @@ class Renderer {
              const BvhBuildOptions& bvh = layout::bvhOptions());
     ~Renderer();
 
-    // Sets what to render; restarts accumulation, recompiling shaders only when the integrator, view or
-    // split changed. Throws fp::Error for settings that cannot be rendered.
+    // Sets what to render; restarts accumulation, recompiling shaders only when the integrator, view, guides
+    // or split changed. Throws fp::Error for settings that cannot be rendered.
     void configure(const RenderSettings& settings, const Camera& camera);
     // Adds `samples` samples per pixel over the whole image; `progress(done)` is called after every
     // pass and may return false to stop early (an interrupted render keeps what it has). With bdpt each
@@ -60,6 +60,9 @@ class Renderer {
     Accumulation readback() const;
     // The accumulation's textures, for a display pass.
     AccumulationTextures textures() const;
+    // Any attachment of the accumulation (src/render/render_targets.h), for the denoisers. Only valid
+    // after configure().
+    GLuint accumulationTexture(Attachment a) const { return targets_->texture(a); }
     const SceneStats& stats() const { return stats_; }
     const RenderSettings& settings() const { return settings_; }
 

@@ -48,6 +48,9 @@ struct RenderSettings {
     static constexpr int kMaxSamplesPerPass = 16;
     std::optional<SplitView> split;
     uint32_t sampleOffset = 0;  // the first sample index (to render one range of a larger render)
+    // Also accumulate the first-hit guides (normal, depth, albedo) that the denoisers (src/denoise/)
+    // need. Off by default: it traces each camera ray once more (about 10% of a Cornell-box path).
+    bool guides = false;
 };
 
 }  // namespace fp

@@ -20,6 +20,7 @@ const char* const kViewerControlsHelp =
     "F                fly mode: W/A/S/D move, Q/E down/up,\n"
     "                 the mouse looks; F or Esc leaves\n"
     "R                reset to the scene's camera\n"
+    "N                show the raw or the denoised image\n"
     "P                screenshot: fragpath_<N>spp.png (as shown)\n"
     "                 and .exr (linear), in the current directory\n"
     "H                hide / show this panel\n";
@@ -27,6 +28,7 @@ const char* const kViewerControlsHelp =
 namespace {
 
 const char* const kToneMaps[] = {"clamp", "reinhard", "aces"};
+const char* const kDenoisers[] = {"none", "bilateral", "atrous"};
 const float kScales[] = {1.0f, 0.5f, 0.25f, 0.125f};
 const char* const kScaleNames[] = {"full", "1/2", "1/4", "1/8"};
 
@@ -96,6 +98,7 @@ void statistics(const ViewerControls& c, const PanelInfo& info) {
                 info.reduced ? " (reduced while moving)" : "");
     ImGui::Text("speed    %.3g samples/s, %.3g paths/s", info.samplesPerSecond, info.pathsPerSecond);
     ImGui::Text("frame    %.1f ms", info.frameMs);
+    if (info.denoiseMs > 0.0) ImGui::Text("denoise  %.1f ms (at most 1/4 of the time)", info.denoiseMs);
     ImGui::TextDisabled("%s", info.renderer.c_str());
 }
 
@@ -131,6 +134,14 @@ void renderSettings(ViewerControls& c) {
 
 bool displaySettings(ViewerControls& c) {
     bool fit = false;
+    int denoiser = int(c.denoiser);
+    if (ImGui::Combo("denoiser", &denoiser, kDenoisers, int(std::size(kDenoisers))))
+        c.denoiser = Denoiser(denoiser);
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip(
+            "bilateral: joint bilateral filter; atrous: edge-avoiding a-trous wavelets steered by\n"
+            "the per-pixel variance (SVGF's spatial filter). Radiance view only; restarts once.");
+    if (c.denoiser != Denoiser::None) ImGui::Checkbox("show denoised (N)", &c.showDenoised);
     if (isCountView(c.render.view)) {
         ImGui::Checkbox("auto range", &c.autoHeatMax);
         ImGui::SameLine();

@@ -19,6 +19,7 @@ struct PanelInfo {
     double samplesPerSecond = 0.0;  // full-image samples
     double pathsPerSecond = 0.0;
     double frameMs = 0.0;
+    double denoiseMs = 0.0;    // the last denoising run; 0 if none
     std::string renderer;      // GL_RENDERER, GL_VERSION
     std::string shaderSource;  // "built in" or the hot-reload directory
     std::string shaderError;   // the last compile error, empty when the shaders compile

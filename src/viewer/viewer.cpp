@@ -14,6 +14,7 @@
 #include <optional>
 
 #include "core/error.h"
+#include "denoise/denoise_passes.h"
 #include "render/display.h"
 #include "render/renderer.h"
 #include "viewer/accumulation_policy.h"
@@ -59,6 +60,9 @@ class Session {
     void renderWithinBudget();
     void fitHeatMapIfDue();
     DisplayOptions displayOptions() const;
+    bool showsDenoised() const;
+    GLuint shownTexture(bool current = false);
+    Image shownImage();
     void present(glm::ivec2 framebuffer);
     void screenshotKey();
     void reportError(const std::string& message);
@@ -76,6 +80,7 @@ class Session {
     std::string description_;
     Renderer renderer_;
     Display display_;
+    DenoisePasses denoiser_;
     std::unique_ptr<ImGuiLayer> ui_;
     std::optional<ShaderWatcher> watcher_;
     ViewerControls controls_;
@@ -94,6 +99,9 @@ class Session {
     double framePaths_ = 0.0;
     double frameRenderSeconds_ = 0.0;
     double overheadSeconds_ = 0.005;  // per frame, everything but rendering (events, panel, display, swap)
+    int denoisedSamples_ = -1;        // the sample count the denoiser's result is of; -1: none is current
+    double denoiseSeconds_ = 0.0, denoisedAt_ = 0.0;
+    double frameDenoiseSeconds_ = 0.0;  // not part of the per-frame overhead: it happens now and then
     bool heatFitDue_ = true, heatFitRequested_ = false;
     std::string shaderError_, message_;
 };
@@ -104,6 +112,7 @@ Session::Session(const Scene& scene, const ViewerOptions& options)
       description_(window_.description()),
       renderer_(scene, ShaderLibrary(options.shaderDir)),
       display_(ShaderLibrary(options.shaderDir)),
+      denoiser_(ShaderLibrary(options.shaderDir)),
       controls_(options.controls),
       camera_(options.camera) {
     if (options.ui) ui_ = std::make_unique<ImGuiLayer>(window_.handle());
@@ -141,6 +150,9 @@ void Session::handleKeys() {
                 break;
             case GLFW_KEY_H:
                 controls_.showPanel = !controls_.showPanel;
+                break;
+            case GLFW_KEY_N:
+                controls_.showDenoised = !controls_.showDenoised;
                 break;
             default:
                 break;
@@ -188,6 +200,7 @@ PanelInfo Session::panelInfo() const {
     info.samplesPerSecond = stats_.samplesPerSecond();
     info.pathsPerSecond = stats_.pathsPerSecond();
     info.frameMs = 1000.0 * stats_.frameSeconds();
+    info.denoiseMs = showsDenoised() ? 1000.0 * denoiseSeconds_ : 0.0;
     info.renderer = description_;
     info.shaderSource = options_.shaderDir.empty()
                             ? "built into the binary (--shader-dir DIR to edit them)"
@@ -208,6 +221,8 @@ void Session::reloadShadersIfChanged(double t) {
         restartTime_ = now();
         heatFitDue_ = true;
         display_.reloadShaders();
+        denoiser_.reloadShaders();
+        denoisedSamples_ = -1;
         shaderError_.clear();
         std::fprintf(stderr, "fragpath: reloaded shaders from %s\n", options_.shaderDir.c_str());
     } catch (const Error& e) {
@@ -236,6 +251,7 @@ void Session::restart(const RenderSettings& settings, bool reduced) {
     tile_ = 0;
     planner_.passAbandoned();
     restartTime_ = now();
+    denoisedSamples_ = -1;
     // While moving, keep the heat map's range from the last full-resolution image: a range fitted to
     // every reduced frame would flicker.
     if (!reduced || controls_.heatMax <= 0.0f) heatFitDue_ = true;
@@ -301,17 +317,60 @@ DisplayOptions Session::displayOptions() const {
     return d;
 }
 
+// The denoised image replaces the raw one when a denoiser is chosen and shown, the accumulation has
+// the guides (the restart that adds them may still be pending) and a whole sample, and the view is
+// radiance (denoising a count view would show nothing true).
+bool Session::showsDenoised() const {
+    const RenderSettings& s = renderer_.settings();
+    return controls_.denoiser != Denoiser::None && controls_.showDenoised && s.guides &&
+           s.view == View::Radiance && renderer_.samples() >= 1;
+}
+
+// Denoises again when the sample count changed, but spends at most about a quarter of the time on it:
+// on a software renderer the a-trous passes cost about one sample (BENCHMARKS.md), on a GPU next to
+// nothing, so there it follows every sample. `current` forces an up-to-date result (screenshots).
+GLuint Session::shownTexture(bool current) {
+    if (!showsDenoised()) return renderer_.textures().sum;
+    bool stale = denoisedSamples_ != renderer_.samples();
+    bool due = denoisedSamples_ < 0 || current || now() - denoisedAt_ >= 3.0 * denoiseSeconds_;
+    if (stale && due) {
+        double start = now();
+        try {
+            denoiser_.run(renderer_, controls_.denoiser);
+        } catch (const Error& e) {
+            reportError(e.what());
+            controls_.denoiser = Denoiser::None;
+            return renderer_.textures().sum;
+        }
+        window_.finish();
+        denoisedAt_ = now();
+        denoiseSeconds_ = denoisedAt_ - start;
+        frameDenoiseSeconds_ += denoiseSeconds_;
+        denoisedSamples_ = renderer_.samples();
+    }
+    return denoiser_.resultTexture();
+}
+
+Image Session::shownImage() {
+    if (!showsDenoised()) return renderer_.readback().mean();
+    shownTexture(true);
+    return denoiser_.result();
+}
+
 void Session::present(glm::ivec2 framebuffer) {
+    GLuint texture = shownTexture();  // before binding the window: denoising binds its own framebuffers
     window_.bindWindowFramebuffer();
     if (framebuffer.x > 0 && framebuffer.y > 0)
-        display_.draw(renderer_.textures(), framebuffer.x, framebuffer.y, displayOptions());
+        display_.draw(texture == renderer_.textures().sum ? renderer_.textures() : AccumulationTextures{texture},
+                      framebuffer.x, framebuffer.y, displayOptions());
     if (ui_) ui_->render();
 }
 
 void Session::screenshotKey() {
     std::string base = screenshotBaseName(renderer_.samples());
+    if (showsDenoised()) base += std::string("_") + denoiserName(controls_.denoiser);
     try {
-        Image mean = renderer_.readback().mean();
+        Image mean = shownImage();
         writeViewImage(base + ".png", mean, displayOptions());
         writeImage(base + ".exr", mean);
         message_ = "wrote " + base + ".png, .exr";
@@ -373,6 +432,7 @@ void Session::run() {
 
         framePaths_ = 0.0;
         frameRenderSeconds_ = 0.0;
+        frameDenoiseSeconds_ = 0.0;
         bool rendering = decision.render && !targetReached();
         if (rendering) renderWithinBudget();
         fitHeatMapIfDue();
@@ -404,13 +464,15 @@ void Session::run() {
         stats_.addFrame(now(), frameSeconds, framePaths_,
                         double(renderer_.settings().width) * double(renderer_.settings().height));
         if (rendering)
-            overheadSeconds_ += 0.25 * (std::max(frameSeconds - frameRenderSeconds_, 0.0) - overheadSeconds_);
+            overheadSeconds_ +=
+                0.25 *
+                (std::max(frameSeconds - frameRenderSeconds_ - frameDenoiseSeconds_, 0.0) - overheadSeconds_);
         if (done) break;
         idle = options_.frames == 0 && !rendering && !policy_.moving(now()) && !input_.flying();
     }
 
     if (!options_.screenshot.empty()) {
-        writeViewImage(options_.screenshot, renderer_.readback().mean(), displayOptions());
+        writeViewImage(options_.screenshot, shownImage(), displayOptions());
         std::printf("wrote %s (%d spp)\n", options_.screenshot.c_str(), renderer_.samples());
     }
     if (options_.printTiming) printTiming();

@@ -1,6 +1,7 @@
 #pragma once
 // Everything the user can change in the viewer besides the camera: what to render (these restart
 // accumulation) and how to show it (these never do). The panel edits it; command-line flags set it.
+#include "denoise/denoiser.h"
 #include "image/image.h"
 #include "render/settings.h"
 
@@ -19,10 +20,15 @@ struct ViewerControls {
     float heatMax = 0.0f;     // count views: the count shown white; 0 until known
     int targetSpp = 0;        // stop rendering at this many samples per pixel; 0: never
     bool showPanel = true;
+    // Denoising of the radiance view: choosing a denoiser restarts accumulation (the trace pass then
+    // also accumulates the guides); showing the raw or the denoised image never does.
+    Denoiser denoiser = Denoiser::None;
+    bool showDenoised = true;
 
     RenderSettings requested() const {
         RenderSettings s = render;
         s.split = split ? std::optional<SplitView>(splitView) : std::nullopt;
+        s.guides = denoiser != Denoiser::None;
         return s;
     }
     // Adopts the render-related fields of `s` (after a failed change, to show what is really rendered).

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "cli/fragpath_runner.h"
+#include "image/image.h"
 
 namespace fp {
 namespace {
@@ -84,6 +85,19 @@ TEST_F(ViewerXvfb, RendersWhatFragpathRenderRenders) {
     for (size_t i = 0; i < imageA.rgb.size(); ++i)
         largest = std::max(largest, std::abs(int(imageA.rgb[i]) - int(imageB.rgb[i])));
     EXPECT_LE(largest, 1);
+}
+
+// The viewer's denoised screenshot is fragpath render's denoised image: same samples, same passes.
+TEST_F(ViewerXvfb, DenoisesWhatFragpathRenderDenoises) {
+    CliRun a =
+        view("--size 48x48 --spp 4 --frames 1 --denoise atrous --screenshot " + path("A.exr") + " --no-ui");
+    ASSERT_EQ(a.exitCode, 0) << a.output;
+    CliRun b = test::runFragpath("render --size 48x48 --spp 4 --quiet --denoise atrous -o " +
+                                 path("raw.exr") + " --denoised-out " + path("B.exr"));
+    ASSERT_EQ(b.exitCode, 0) << b.output;
+    Image imageA = readImage(path("A.exr")), imageB = readImage(path("B.exr"));
+    EXPECT_EQ(imageA.pixels, imageB.pixels);
+    EXPECT_NE(imageA.pixels, readImage(path("raw.exr")).pixels);
 }
 
 TEST_F(ViewerXvfb, PanelSplitViewAndCountViewsRun) {

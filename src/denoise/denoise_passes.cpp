@@ -1,0 +1,153 @@
+#include "denoise/denoise_passes.h"
+
+#include <algorithm>
+
+#include "core/error.h"
+#include "gpu/layout.h"
+
+namespace fp {
+
+namespace {
+
+// Units above the renderer's (scene buffers, accumulation) and the display pass's, so that denoising
+// disturbs no binding the trace pass relies on.
+constexpr int kFirstUnit = layout::kFirstFreeUnit + 8;
+constexpr int kSpareUnit = kFirstUnit + 7;
+
+const char* const kPassFiles[] = {"denoise/prepare.frag.glsl", "denoise/variance.frag.glsl",
+                                  "denoise/bilateral.frag.glsl", "denoise/atrous.frag.glsl",
+                                  "denoise/finish.frag.glsl"};
+
+}  // namespace
+
+DenoisePasses::DenoisePasses(ShaderLibrary shaders) : shaders_(std::move(shaders)) {
+    glGenVertexArrays(1, &vertexArray_);
+}
+
+DenoisePasses::~DenoisePasses() {
+    resize(0, 0);
+    glDeleteVertexArrays(1, &vertexArray_);
+}
+
+void DenoisePasses::reloadShaders() {
+    std::array<std::unique_ptr<Program>, kPassCount> programs;
+    for (int p = 0; p < kPassCount; ++p)
+        if (programs_[size_t(p)])
+            programs[size_t(p)] =
+                std::make_unique<Program>(shaders_, "passes/fullscreen.vert.glsl", kPassFiles[p]);
+    for (int p = 0; p < kPassCount; ++p)  // only once all compiled
+        if (programs[size_t(p)]) programs_[size_t(p)] = std::move(programs[size_t(p)]);
+}
+
+Program& DenoisePasses::program(Pass pass) {
+    std::unique_ptr<Program>& p = programs_[size_t(pass)];
+    if (!p) p = std::make_unique<Program>(shaders_, "passes/fullscreen.vert.glsl", kPassFiles[pass]);
+    return *p;
+}
+
+void DenoisePasses::resize(int width, int height) {
+    if (width == width_ && height == height_) return;
+    if (width_ > 0) {
+        glDeleteFramebuffers(1, &prepareFramebuffer_);
+        glDeleteFramebuffers(kTextureCount, framebuffers_.data());
+        glDeleteTextures(kTextureCount, textures_.data());
+    }
+    width_ = width;
+    height_ = height;
+    if (width == 0) return;
+    glActiveTexture(GLenum(GL_TEXTURE0 + kSpareUnit));  // never rebind a unit someone else uses
+    glGenTextures(kTextureCount, textures_.data());
+    glGenFramebuffers(kTextureCount, framebuffers_.data());
+    for (int t = 0; t < kTextureCount; ++t) {
+        glBindTexture(GL_TEXTURE_2D, textures_[size_t(t)]);
+        glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA32F, width, height, 0, GL_RGBA, GL_FLOAT, nullptr);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+        glBindFramebuffer(GL_FRAMEBUFFER, framebuffers_[size_t(t)]);
+        glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, textures_[size_t(t)], 0);
+    }
+    glGenFramebuffers(1, &prepareFramebuffer_);
+    glBindFramebuffer(GL_FRAMEBUFFER, prepareFramebuffer_);
+    const GLuint outputs[] = {textures_[kColorA], textures_[kGuide], textures_[kAlbedo]};
+    const GLenum buffers[] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1, GL_COLOR_ATTACHMENT2};
+    for (int a = 0; a < 3; ++a)
+        glFramebufferTexture2D(GL_FRAMEBUFFER, buffers[a], GL_TEXTURE_2D, outputs[a], 0);
+    glDrawBuffers(3, buffers);
+    if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
+        throw Error("the denoiser's float render targets are not supported here");
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+}
+
+void DenoisePasses::draw(Pass pass, GLuint target,
+                         std::initializer_list<std::pair<const char*, GLuint>> inputs) {
+    Program& p = program(pass);
+    p.use();
+    int unit = kFirstUnit;
+    for (const auto& [name, texture] : inputs) {
+        glActiveTexture(GLenum(GL_TEXTURE0 + unit));
+        glBindTexture(GL_TEXTURE_2D, texture);
+        p.set(name, unit++);
+    }
+    glBindFramebuffer(GL_FRAMEBUFFER, target);
+    glViewport(0, 0, width_, height_);
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+}
+
+void DenoisePasses::run(const Renderer& renderer, Denoiser which) {
+    if (which == Denoiser::None) throw Error("internal: DenoisePasses::run with no denoiser");
+    if (!renderer.settings().guides)
+        throw Error(std::string("the ") + denoiserName(which) +
+                    " denoiser needs the first-hit guides: render with RenderSettings::guides set");
+    resize(renderer.settings().width, renderer.settings().height);
+    glDisable(GL_SCISSOR_TEST);
+    glDisable(GL_BLEND);
+    glBindVertexArray(vertexArray_);
+
+    program(kPrepare).use();
+    program(kPrepare).set("uDemodulate", which == Denoiser::Atrous ? 1 : 0);
+    AccumulationTextures image = renderer.textures();
+    bool splats = image.splatSum != 0 && image.lightPathsPerPixel > 0.0f;
+    program(kPrepare).set("uLightPaths", splats ? image.lightPathsPerPixel : 0.0f);
+    draw(kPrepare, prepareFramebuffer_,
+         {{"uSum", renderer.accumulationTexture(kSumAttachment)},
+          {"uSquares", renderer.accumulationTexture(kSquaresAttachment)},
+          {"uCounters", renderer.accumulationTexture(kCountersAttachment)},
+          {"uNormalDepth", renderer.accumulationTexture(kNormalDepthAttachment)},
+          {"uAlbedoSum", renderer.accumulationTexture(kAlbedoAttachment)},
+          {"uSplatSum", splats ? image.splatSum : image.sum}});
+    const GLuint guide = textures_[kGuide], albedo = textures_[kAlbedo];
+    Texture current = kColorA, other = kColorB;
+    auto filter = [&](Pass pass) {
+        draw(pass, framebuffers_[other], {{"uColor", textures_[current]}, {"uGuide", guide}});
+        std::swap(current, other);
+    };
+    if (which == Denoiser::Bilateral) {
+        filter(kBilateral);
+    } else {
+        filter(kVariance);
+        for (int i = 0; i < kAtrousIterations; ++i) {
+            program(kAtrous).use();
+            program(kAtrous).set("uStep", 1 << i);
+            filter(kAtrous);
+        }
+    }
+    draw(kFinish, framebuffers_[kResult], {{"uColor", textures_[current]}, {"uAlbedo", albedo}});
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    glActiveTexture(GLenum(GL_TEXTURE0 + kSpareUnit));
+}
+
+Image DenoisePasses::result() const {
+    Image image(width_, height_);
+    std::vector<glm::vec4> rows(size_t(width_) * size_t(height_));
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, framebuffers_[kResult]);
+    glReadBuffer(GL_COLOR_ATTACHMENT0);
+    glPixelStorei(GL_PACK_ALIGNMENT, 4);
+    glReadPixels(0, 0, width_, height_, GL_RGBA, GL_FLOAT, rows.data());
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
+    for (int y = 0; y < height_; ++y)  // GL rows run bottom to top; images here run top to bottom
+        for (int x = 0; x < width_; ++x)
+            image.at(x, y) = glm::vec3(rows[size_t(height_ - 1 - y) * size_t(width_) + size_t(x)]);
+    return image;
+}
+
+}  // namespace fp

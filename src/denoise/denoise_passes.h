@@ -1,0 +1,54 @@
+#pragma once
+// Runs a denoiser's GLSL passes (glsl/denoise/) over a Renderer's current accumulation on the GPU.
+// The result stays in a texture of its own, so that a front end can display it (Display::draw shows
+// it like an accumulation of one sample) or read it back; the accumulation is only read.
+//
+//   prepare   accumulation -> colour (divided by the albedo for atrous), its variance, guides
+//   variance  atrous only: a spatial variance where a pixel has fewer than 4 samples
+//   filter    bilateral: one pass; atrous: 5 iterations with taps 1, 2, 4, 8, 16 pixels apart
+//   finish    multiply the albedo back: (radiance, 1)
+#include <array>
+#include <memory>
+
+#include "denoise/denoiser.h"
+#include "gl/program.h"
+
+namespace fp {
+
+class DenoisePasses {
+  public:
+    // Needs a current GL context; compiles each pass when first needed.
+    explicit DenoisePasses(ShaderLibrary shaders = ShaderLibrary());
+    ~DenoisePasses();
+    DenoisePasses(const DenoisePasses&) = delete;
+    DenoisePasses& operator=(const DenoisePasses&) = delete;
+
+    // Denoises the renderer's current accumulation with `which` (not None). Throws fp::Error if the
+    // render has no guides (RenderSettings::guides) or a pass does not compile.
+    void run(const Renderer& renderer, Denoiser which);
+    // The last result, (denoised radiance, 1) per pixel, at the accumulation's size.
+    GLuint resultTexture() const { return textures_[kResult]; }
+    Image result() const;  // rows top first
+    // Recompiles from the library (hot reload); throws fp::Error and keeps the previous programs.
+    void reloadShaders();
+
+    static constexpr int kAtrousIterations = 5;  // Dammertz et al.: 5 levels cover a 61-pixel footprint
+
+  private:
+    enum Texture { kColorA, kColorB, kGuide, kAlbedo, kResult, kTextureCount };
+    enum Pass { kPrepare, kVariance, kBilateral, kAtrous, kFinish, kPassCount };
+    void resize(int width, int height);
+    Program& program(Pass pass);
+    // Draws `pass` into framebuffer `target`, with `inputs` bound to units in order, named `names`.
+    void draw(Pass pass, GLuint target, std::initializer_list<std::pair<const char*, GLuint>> inputs);
+
+    ShaderLibrary shaders_;
+    std::array<std::unique_ptr<Program>, kPassCount> programs_;
+    int width_ = 0, height_ = 0;
+    std::array<GLuint, kTextureCount> textures_{};
+    GLuint prepareFramebuffer_ = 0;                     // writes colour A, guide and albedo
+    std::array<GLuint, kTextureCount> framebuffers_{};  // one per texture, for the other passes
+    GLuint vertexArray_ = 0;
+};
+
+}  // namespace fp

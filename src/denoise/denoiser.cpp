@@ -1,0 +1,33 @@
+#include "denoise/denoiser.h"
+
+#include "core/error.h"
+#include "denoise/denoise_passes.h"
+
+namespace fp {
+
+Denoiser parseDenoiser(const std::string& name) {
+    for (Denoiser d : kAllDenoisers)
+        if (name == denoiserName(d)) return d;
+    throw Error("unknown denoiser '" + name + "' (choose none, bilateral or atrous)");
+}
+
+const char* denoiserName(Denoiser denoiser) {
+    switch (denoiser) {
+        case Denoiser::None:
+            return "none";
+        case Denoiser::Bilateral:
+            return "bilateral";
+        case Denoiser::Atrous:
+            return "atrous";
+    }
+    return "?";
+}
+
+Image denoise(Renderer& renderer, Denoiser which) {
+    if (which == Denoiser::None) return renderer.readback().mean();
+    DenoisePasses passes;
+    passes.run(renderer, which);
+    return passes.result();
+}
+
+}  // namespace fp
