@@ -39,7 +39,7 @@ void main() {
 #if DEBUG_VIEW == 0
         // Box filter: a uniformly jittered position inside the pixel.
         vec3 c = radiance(cameraRay(vec2(pixel) + rand2()));
-#elif DEBUG_VIEW == VIEW_BOUNCES
+#elif DEBUG_VIEW == VIEW_BOUNCES || DEBUG_VIEW == VIEW_COST
         vec3 c = debugView(cameraRay(vec2(pixel) + rand2()));
 #else
         vec3 c = debugView(cameraRay(vec2(pixel) + 0.5));

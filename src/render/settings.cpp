@@ -29,7 +29,7 @@ const char* integratorName(Integrator integrator) {
 View parseView(const std::string& name) {
     for (View v : kAllViews)
         if (name == viewName(v)) return v;
-    throw Error("unknown view '" + name + "' (choose radiance, depth, normal, albedo, bounces, nodes or triangles)");
+    throw Error("unknown view '" + name + "' (choose radiance, depth, normal, albedo, bounces, nodes, triangles or cost)");
 }
 
 const char* viewName(View view) {
@@ -41,6 +41,7 @@ const char* viewName(View view) {
         case View::Bounces: return "bounces";
         case View::Nodes: return "nodes";
         case View::Triangles: return "triangles";
+        case View::Cost: return "cost";
     }
     return "?";
 }
