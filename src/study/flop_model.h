@@ -50,6 +50,8 @@ constexpr double kFlopsPerCameraRay = 27.0;
 //   (1), the MIS-weighted contribution (15) and f != 0 (3): 298.
 // - bdpt: counted as nee's 298 per vertex. This is a lower bound: it leaves out the MIS weights of
 //   every join (their loops over the vertices), which bdpt adds.
+// Every surfaceAt call counts as a whole interaction, also the last vertex of a path that only adds its
+// emission (depth limit reached): an overestimate of at most one interaction per path.
 double shadingFlops(Integrator integrator);
 
 // What the cost view measured, per path (mean over all paths rendered).

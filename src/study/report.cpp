@@ -26,7 +26,7 @@ const char* const kThresholdRationale =
 namespace {
 
 std::string format(const char* fmt, ...) {
-    char text[1024];
+    char text[4096];
     va_list args;
     va_start(args, fmt);
     std::vsnprintf(text, sizeof text, fmt, args);
@@ -66,6 +66,9 @@ std::vector<FeasibilityRow> feasibilityRows(const ReportInput& in) {
             f.sppText = describe(needed);
             f.sppNeeded = needed.kind == Crossing::NotReached ? 0.0 : needed.spp;
             f.flopsPerPath = flopsPerPath(counts->second, parseIntegrator(integrator));
+            f.shadingShare = (kFlopsPerCameraRay +
+                              counts->second.surfacesShaded * shadingFlops(parseIntegrator(integrator))) /
+                             f.flopsPerPath;
             // Throughput of the raw render at the largest level: the most samples, the least overhead.
             const StudyRow& last = raw.empty() ? series.back() : raw.back();
             f.pathsPerCpuSecond =
@@ -207,7 +210,9 @@ std::string reportMarkdown(const ReportInput& in) {
         "this is a stated guess, not a measurement. (2) FLOPs are counted on the GLSL, not on the "
         "instructions the compiler emits. (3) The spp needed at this resolution holds at 1920x1080 (the "
         "per-pixel noise of a Monte Carlo estimate does not depend on the resolution). (4) One frame's "
-        "samples only: no temporal accumulation or reprojection.\n\n";
+        "samples only: no temporal accumulation or reprojection. (5) Since the RTX 2080, GPUs traverse BVHs "
+        "and test triangles in fixed-function RT cores that the FP32 peak does not count; the answer below "
+        "also gives the year if only the shading share of the FLOPs fell on the FP32 units.\n\n";
 
     md += "## The answer\n\n";
     const FeasibilityRow* bestRaw = nullptr;
@@ -224,10 +229,14 @@ std::string reportMarkdown(const ReportInput& in) {
         return format(
             "%s%s needs %s spp, %.3g TFLOPS sustained, so %.3g TFLOPS of peak at the %.2f%% efficiency "
             "measured here; first GPU: %s. \"Real-time path tracing within 4 years\" of 2016 (by 2020) "
-            "**%s**. Even at 100%% of peak the first GPU would be %s.",
+            "**%s**. Even at 100%% of peak the first GPU would be %s. If RT cores did the traversal and "
+            "triangle tests, the FP32 units would carry the shading share, %.0f%% of the FLOPs: first "
+            "GPU %s at the measured efficiency.",
             f.integrator.c_str(), f.denoiser == "none" ? "" : (" + " + f.denoiser).c_str(), f.sppText.c_str(),
             f.requiredTflops, f.requiredPeakTflops, 100 * f.efficiency, yearText(a).c_str(),
-            year <= 2020 ? "would have held" : "would not have held", yearText(full).c_str());
+            year <= 2020 ? "would have held" : "would not have held", yearText(full).c_str(),
+            100 * f.shadingShare,
+            yearText(yearReached(f.requiredTflops * 1e12 * f.shadingShare, f.efficiency)).c_str());
     };
     if (bestRaw)
         md += "- Without a denoiser, the cheapest integrator: " + verdict(*bestRaw) + "\n";

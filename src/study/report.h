@@ -36,6 +36,7 @@ struct FeasibilityRow {
     double sppNeeded = 0.0;  // 0: not reached
     std::string sppText;
     double flopsPerPath = 0.0, pathsPerCpuSecond = 0.0, efficiency = 0.0;
+    double shadingShare = 0.0;        // of flopsPerPath, what is not BVH traversal or triangle tests
     double requiredTflops = 0.0;      // sustained, 1920x1080 at 60 FPS
     double requiredPeakTflops = 0.0;  // required / efficiency
 };
