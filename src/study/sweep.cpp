@@ -72,6 +72,7 @@ SweepResult runSweep(Renderer& renderer, const Image& reference, const SweepOpti
                     row.integrator = name;
                     row.denoiser = denoiser.name;
                     row.spp = levels[level];
+                    // "none" only reads the accumulation back, which a real-time renderer never does.
                     row.denoiseSeconds = denoiser.name == "none" ? 0.0 : secondsSince(denoiseStart);
                     row.rmse = rmse(image, reference);
                     row.relMse = relativeMse(image, reference);
