@@ -49,7 +49,7 @@ const char* kStudyUsage =
     "\n"
     "options:\n"
     "  --out DIR               output directory, created if missing (default: study)\n"
-    "  --size WxH              image size (default: the scene file's, else 128x128)\n"
+    "  --size WxH              image size (default 128x128)\n"
     "  --max-spp N             the largest sample count (default 64)\n"
     "  --integrators LIST      comma-separated (default naive,bsdf,nee,bdpt)\n"
     "  --denoisers LIST        comma-separated, of those built in (default: all; 'none' is the raw image)\n"
@@ -131,8 +131,8 @@ int studyCommand(const std::vector<std::string>& argv) {
 
     Scene scene = args.positional().empty() ? builtinCornellBox() : loadScene(args.positional()[0]);
     RenderSettings settings;
-    settings.width = scene.defaults.width.value_or(128);
-    settings.height = scene.defaults.height.value_or(128);
+    // Not the scene file's size: that is meant for one final render, the study renders hundreds.
+    settings.width = settings.height = 128;
     if (auto s = args.size("--size")) settings.width = s->x, settings.height = s->y;
     if (settings.width < study::kSsimWindow || settings.height < study::kSsimWindow)
         throw Error("--size: the study needs at least " + std::to_string(study::kSsimWindow) + "x" +
