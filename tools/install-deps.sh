@@ -5,6 +5,7 @@ packages=(
   cmake make g++ pkg-config python3-glad
   libosmesa6-dev libegl-dev libglm-dev libtinyobjloader-dev nlohmann-json3-dev libstb-dev libtinyexr-dev libgtest-dev
   libglfw3-dev libimgui-dev xvfb xauth clang libclang-rt-14-dev
+  gnuplot-nox
 )
 missing=()
 for p in "${packages[@]}"; do

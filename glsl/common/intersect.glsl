@@ -6,6 +6,8 @@ const float INF = 1e30;
 float gRayCount = 0.0;  // rays traced by this pixel, for the rays/s figure
 int gNodesVisited = 0;  // BVH nodes and triangles the last traversal looked at, for the cost views
 int gTrianglesTested = 0;
+int gPathNodes = 0;  // the same, summed over every ray of a path (camera, bounce, shadow), for the cost view
+int gPathTriangles = 0;
 
 struct Ray {
     vec3 origin;
@@ -111,9 +113,20 @@ bool traverse(Ray ray, float tMax, bool anyHit, out Hit hit) {
     return hit.triangle >= 0;
 }
 
-bool traceClosest(Ray ray, out Hit hit) { return traverse(ray, INF, false, hit); }
+void countPathCost() {
+    gPathNodes += gNodesVisited;
+    gPathTriangles += gTrianglesTested;
+}
+
+bool traceClosest(Ray ray, out Hit hit) {
+    bool found = traverse(ray, INF, false, hit);
+    countPathCost();
+    return found;
+}
 
 bool occluded(Ray ray, float tMax) {
     Hit hit;
-    return traverse(ray, tMax, true, hit);
+    bool found = traverse(ray, tMax, true, hit);
+    countPathCost();
+    return found;
 }

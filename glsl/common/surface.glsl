@@ -12,7 +12,10 @@ struct Surface {
     bool frontFace;        // the ray hit the counter-clockwise side: the side that emits
 };
 
+int gSurfacesShaded = 0;  // surface interactions of the current path, for the cost view
+
 Surface surfaceAt(Ray ray, Hit hit) {
+    ++gSurfacesShaded;
     TriangleData tri = fetchTriangle(hit.triangle);
     Surface s;
     s.position = ray.origin + hit.t * ray.dir;

@@ -7,12 +7,21 @@
 #define VIEW_BOUNCES 4
 #define VIEW_NODES 5
 #define VIEW_TRIANGLES 6
+#define VIEW_COST 7
 
 vec3 debugView(Ray ray) {
 #if DEBUG_VIEW == VIEW_BOUNCES
     gBounces = 0;
     radiance(ray);  // the selected integrator, counting the bounces its path survives
     return vec3(float(gBounces));
+#elif DEBUG_VIEW == VIEW_COST
+    // What one whole path costs (the study's FLOP model, src/study/flop_model.h): BVH nodes visited,
+    // triangles tested and surfaces shaded, summed over all of its rays.
+    gPathNodes = 0;
+    gPathTriangles = 0;
+    gSurfacesShaded = 0;
+    radiance(ray);
+    return vec3(float(gPathNodes), float(gPathTriangles), float(gSurfacesShaded));
 #else
     Hit hit;
     bool found = traceClosest(ray, hit);

@@ -46,7 +46,7 @@ void main() {
     for (int i = 0; i < uSamplesPerPass; ++i) {
         rngInit(uSeed, uvec2(pixel), firstSample + uint(i));
         gWavelength = 0.0;
-#if DEBUG_VIEW == 0 || DEBUG_VIEW == VIEW_BOUNCES
+#if DEBUG_VIEW == 0 || DEBUG_VIEW == VIEW_BOUNCES || DEBUG_VIEW == VIEW_COST
         // Box filter: a uniformly jittered position inside the pixel.
         Ray ray = cameraRay(vec2(pixel) + rand2());
 #else

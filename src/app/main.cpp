@@ -16,6 +16,7 @@ static const char* kUsage =
     "  bench [SCENE]    measure time to first frame, paths/s and rays/s (median of several runs)\n"
     "  view [SCENE]     open a window that renders interactively (needs a display, or xvfb-run)\n"
     "  merge PARTS -o OUT.exr  combine partial renders of disjoint sample ranges into one image\n"
+    "  study [SCENE]    how much noise is too much: error and time against samples, feasibility report\n"
     "\n"
     "Run 'fragpath <command> --help' for the options of a command.\n";
 
@@ -32,6 +33,7 @@ int main(int argc, char** argv) {
         if (command == "bench") return fp::benchCommand(args);
         if (command == "view") return fp::viewCommand(args);
         if (command == "merge") return fp::mergeCommand(args);
+        if (command == "study") return fp::studyCommand(args);
         std::fprintf(stderr, "fragpath: unknown command '%s'\n\n%s", command.c_str(), kUsage);
         return 2;
     } catch (const fp::Error& e) {

@@ -29,7 +29,7 @@ const char* kViewUsage =
     "  --max-depth D         bounces (default: the scene file's, else 5)\n"
     "  --seed S              random seed (default: the scene file's, else 0)\n"
     "  --integrator NAME     naive | bsdf | nee | bdpt (default: the scene file's, else nee)\n"
-    "  --view NAME           radiance | depth | normal | albedo | bounces | nodes | triangles\n"
+    "  --view NAME           radiance | depth | normal | albedo | bounces | nodes | triangles | cost\n"
     "  --split NAME          split view: the right half uses integrator NAME\n"
     "  --split-depth D       max depth of the right half (default: --max-depth)\n"
     "  --eye X,Y,Z --target X,Y,Z --up X,Y,Z --fov DEG\n"

@@ -37,7 +37,8 @@ PackedEnvironment packEnvironment(const Environment& environment) {
     double running = 0.0;
     for (int y = 0; y < h; ++y) {
         running += rowSums[size_t(y)];
-        out.cdf[size_t(y)] = out.totalWeight > 0.0 ? float(running / out.totalWeight) : float(y + 1) / float(h);
+        out.cdf[size_t(y)] =
+            out.totalWeight > 0.0 ? float(running / out.totalWeight) : float(y + 1) / float(h);
     }
     if (h > 0) out.cdf[size_t(h) - 1] = 1.0f;
     return out;

@@ -28,7 +28,7 @@ View parseView(const std::string& name) {
     for (View v : kAllViews)
         if (name == viewName(v)) return v;
     throw Error("unknown view '" + name +
-                "' (choose radiance, depth, normal, albedo, bounces, nodes or triangles)");
+                "' (choose radiance, depth, normal, albedo, bounces, nodes, triangles or cost)");
 }
 
 const char* viewName(View view) {
@@ -47,6 +47,8 @@ const char* viewName(View view) {
             return "nodes";
         case View::Triangles:
             return "triangles";
+        case View::Cost:
+            return "cost";
     }
     return "?";
 }

@@ -16,14 +16,24 @@ const char* integratorName(Integrator integrator);
 
 // What each pixel shows: the rendered radiance, one property of the first hit, or a cost the path
 // tracer pays there (glsl/passes/debug_views.glsl).
-enum class View { Radiance = 0, Depth = 1, Normal = 2, Albedo = 3, Bounces = 4, Nodes = 5, Triangles = 6 };
+// Cost: per path, (BVH nodes visited, triangles tested, surfaces shaded) summed over all its rays, in RGB.
+enum class View {
+    Radiance = 0,
+    Depth = 1,
+    Normal = 2,
+    Albedo = 3,
+    Bounces = 4,
+    Nodes = 5,
+    Triangles = 6,
+    Cost = 7
+};
 // Views that count something, best shown as a heat map.
 inline bool isCountView(View v) {
     return v == View::Bounces || v == View::Nodes || v == View::Triangles;
 }
 
-constexpr View kAllViews[] = {View::Radiance, View::Depth, View::Normal,   View::Albedo,
-                              View::Bounces,  View::Nodes, View::Triangles};
+constexpr View kAllViews[] = {View::Radiance, View::Depth, View::Normal,    View::Albedo,
+                              View::Bounces,  View::Nodes, View::Triangles, View::Cost};
 View parseView(const std::string& name);  // throws fp::Error listing the choices
 const char* viewName(View view);
 

@@ -361,8 +361,9 @@ void Session::present(glm::ivec2 framebuffer) {
     GLuint texture = shownTexture();  // before binding the window: denoising binds its own framebuffers
     window_.bindWindowFramebuffer();
     if (framebuffer.x > 0 && framebuffer.y > 0)
-        display_.draw(texture == renderer_.textures().sum ? renderer_.textures() : AccumulationTextures{texture},
-                      framebuffer.x, framebuffer.y, displayOptions());
+        display_.draw(
+            texture == renderer_.textures().sum ? renderer_.textures() : AccumulationTextures{texture},
+            framebuffer.x, framebuffer.y, displayOptions());
     if (ui_) ui_->render();
 }
 

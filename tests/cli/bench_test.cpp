@@ -118,8 +118,8 @@ TEST_F(Bench, HelpListsTheOptions) {
     CliRun r = fragpath("bench --help");
     EXPECT_EQ(r.exitCode, 0);
     for (const char* flag : {"--size", "--spp", "--runs", "--max-depth", "--integrator", "--json", "--suite",
-                             "--max-triangles", "--scenes", "--with-bunny", "--native", "256x256 with --suite",
-                             "--study caustic", "--budget", "--reference-spp"})
+                             "--max-triangles", "--scenes", "--with-bunny", "--native",
+                             "256x256 with --suite", "--study caustic", "--budget", "--reference-spp"})
         EXPECT_NE(r.output.find(flag), std::string::npos) << flag;
 }
 

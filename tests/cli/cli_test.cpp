@@ -90,7 +90,7 @@ TEST_F(Cli, BadFlagsAreErrors) {
     expectError("render --max-depth -1", "--max-depth");
     expectError("render --integrator magic", "naive, bsdf, nee or bdpt");
     expectError("render --tonemap sepia", "sepia");
-    expectError("render --view xray", "radiance, depth, normal, albedo, bounces, nodes or triangles");
+    expectError("render --view xray", "radiance, depth, normal, albedo, bounces, nodes, triangles or cost");
     expectError("render --eye 1,2", "X,Y,Z");
     expectError("render --eye 1,2,nan", "finite");
     expectError("render --fov 180", "field of view");

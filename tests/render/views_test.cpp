@@ -41,6 +41,37 @@ TEST(Views, CountsAreWithinTheirBounds) {
     }
 }
 
+// The cost view (the study's counting mode) sums over every ray of a path: with max depth 0 a path is
+// its camera ray alone, which shades at most one surface; with light sampling every ray visits at
+// least the root node and tests at most all 32 triangles.
+TEST(Views, CostCountsTheWholePath) {
+    ensureGlContext();
+    Scene scene = builtinCornellBox();
+    Renderer renderer(scene);
+    for (int depth : {0, 5}) {
+        RenderSettings s;
+        s.width = s.height = 16;
+        s.view = View::Cost;
+        s.maxDepth = depth;
+        renderer.configure(s, *scene.camera);
+        renderer.render(4);
+        Accumulation acc = renderer.readback();
+        double rays = acc.raysTraced() / (16.0 * 16.0 * 4.0);
+        glm::dvec3 cost = meanColor(acc.mean());  // nodes, triangles, surfaces per path
+        if (depth == 0) {
+            EXPECT_EQ(rays, 1.0);
+            EXPECT_LE(cost.z, 1.0);
+            EXPECT_GT(cost.z, 0.5) << "most camera rays hit the box";
+        } else {
+            EXPECT_GT(rays, 2.0) << "bounce and shadow rays";
+            EXPECT_GT(cost.z, 1.5);
+        }
+        EXPECT_GE(cost.x, rays);
+        EXPECT_LE(cost.y, 32.0 * rays);
+        EXPECT_LE(cost.z, rays);
+    }
+}
+
 TEST(Views, NormalsAreUnitVectorsFacingTheCamera) {
     ensureGlContext();
     Scene scene = furnaceBox(0.5f, 0.0f);

@@ -1,0 +1,148 @@
+#include "study/plots.h"
+
+#include <unistd.h>
+
+#include <sys/wait.h>
+#include <algorithm>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+
+#include "core/error.h"
+#include "image/file_io.h"
+
+namespace fp::study {
+
+namespace {
+
+struct Series {
+    std::string integrator, denoiser;
+};
+
+std::vector<Series> seriesOf(const std::vector<StudyRow>& rows) {
+    std::vector<Series> series;
+    for (const StudyRow& r : rows) {
+        bool known = std::any_of(series.begin(), series.end(), [&](const Series& s) {
+            return s.integrator == r.integrator && s.denoiser == r.denoiser;
+        });
+        if (!known) series.push_back({r.integrator, r.denoiser});
+    }
+    return series;
+}
+
+// A gnuplot `plot` list: one line per series, colour by integrator, dash pattern by denoiser.
+std::string plotClauses(const std::vector<Series>& series, const std::string& x, const std::string& y) {
+    std::vector<std::string> integrators, denoisers;
+    auto indexOf = [](std::vector<std::string>& list, const std::string& name) {
+        auto it = std::find(list.begin(), list.end(), name);
+        if (it != list.end()) return int(it - list.begin());
+        list.push_back(name);
+        return int(list.size()) - 1;
+    };
+    std::string text;
+    for (const Series& s : series) {
+        int colour = indexOf(integrators, s.integrator) + 1, dash = indexOf(denoisers, s.denoiser) + 1;
+        std::string title = s.denoiser == "none" ? s.integrator : s.integrator + " + " + s.denoiser;
+        text += (text.empty() ? "plot " : ", \\\n     ") +
+                std::string("'study.csv' every ::1 using (strcol(1) eq '") + s.integrator +
+                "' && strcol(2) eq '" + s.denoiser + "' ? " + x + " : NaN):" + y + " with linespoints lc " +
+                std::to_string(colour) + " dt " + std::to_string(dash) + " pt " + std::to_string(dash + 5) +
+                " title '" + title + "'";
+    }
+    return text;
+}
+
+std::string quoteForShell(const std::string& text) {
+    std::string quoted = "'";
+    for (char c : text) quoted += c == '\'' ? std::string("'\\''") : std::string(1, c);
+    return quoted + "'";
+}
+
+}  // namespace
+
+const std::vector<std::string>& plotFileNames() {
+    static const std::vector<std::string> names = {"error_vs_spp.png", "error_vs_time.png",
+                                                   "ssim_vs_spp.png"};
+    return names;
+}
+
+std::string gnuplotScript(const std::vector<StudyRow>& rows, double relMseThreshold) {
+    // Ranges that always show the threshold and the frame budget, even when every point is far from them.
+    double tMin = kFrameBudgetSeconds, tMax = kFrameBudgetSeconds, eMin = relMseThreshold,
+           eMax = relMseThreshold;
+    int sppMax = 1;
+    for (const StudyRow& r : rows) {
+        tMin = std::min(tMin, r.totalSeconds()), tMax = std::max(tMax, r.totalSeconds());
+        if (r.relMse > 0) eMin = std::min(eMin, r.relMse), eMax = std::max(eMax, r.relMse);
+        sppMax = std::max(sppMax, r.spp);
+    }
+    const std::vector<Series> series = seriesOf(rows);
+    char ranges[512];
+    std::snprintf(ranges, sizeof ranges,
+                  "threshold = %.6g  # relative MSE under which the report calls an image not noisy\n"
+                  "budget_ms = %.6g  # one frame at 60 FPS\n"
+                  "set yrange [%.6g:%.6g]\n",
+                  relMseThreshold, 1000.0 * kFrameBudgetSeconds, eMin / 2, eMax * 2);
+    char sppRange[128], timeRange[128];
+    std::snprintf(sppRange, sizeof sppRange, "set xrange [0.8:%.6g]\n", sppMax * 1.25);
+    std::snprintf(timeRange, sizeof timeRange, "set xrange [%.6g:%.6g]\n", 1000 * tMin / 1.5,
+                  1000 * tMax * 1.5);
+    const std::string& names0 = plotFileNames()[0];
+    const std::string& names1 = plotFileNames()[1];
+    const std::string& names2 = plotFileNames()[2];
+    return std::string(
+               "# Written by `fragpath study` from study.csv in this directory; edit and rerun with\n") +
+           "#   gnuplot plots.gp\n" +
+           "# Columns: 1 integrator, 2 denoiser, 3 spp, 4 render_seconds, 5 render_cpu_seconds,\n" +
+           "# 6 denoise_seconds, 7 total_seconds, 8 rmse, 9 rel_mse, 10 ssim.\n" +
+           "set datafile separator ','\n" + "set terminal pngcairo size 800,520 font 'sans,10'\n" +
+           "set grid\n" + "set key outside right top\n" + ranges + "set logscale xy\n" + "\nset output '" +
+           names0 + "'\n" + "set title 'Error against samples per pixel'\n" +
+           "set xlabel 'samples per pixel'\nset ylabel 'relative MSE'\n" + sppRange +
+           plotClauses(series, "$3", "9") +
+           ", \\\n     threshold with lines lc 'black' dt 3 title 'noise threshold'\n" + "\nset output '" +
+           names1 + "'\n" + "set title 'Error against render time (this machine; median of the runs)'\n" +
+           "set xlabel 'render + denoise time (ms)'\n" + timeRange +
+           "set arrow 1 from budget_ms, graph 0 to budget_ms, graph 1 nohead lc 'red' dt 2 lw 2\n" +
+           "set label 1 '60 FPS frame budget (16.7 ms)' at budget_ms, graph 0.95 offset 0.5, 0 tc 'red'\n" +
+           plotClauses(series, "1000 * $7", "9") +
+           ", \\\n     threshold with lines lc 'black' dt 3 title 'noise threshold'\n" +
+           "unset arrow 1\nunset label 1\n" + "\nset output '" + names2 + "'\n" +
+           "set title 'Structural similarity against samples per pixel'\n" +
+           "unset logscale y\nset yrange [0:1]\n" +
+           "set xlabel 'samples per pixel'\nset ylabel 'SSIM (display luma)'\n" + sppRange +
+           plotClauses(series, "$3", "10") + "\n";
+}
+
+void requireGnuplot() {
+    const char* path = std::getenv("PATH");
+    std::string paths = path ? path : "";
+    size_t start = 0;
+    while (start <= paths.size()) {
+        size_t end = std::min(paths.find(':', start), paths.size());
+        std::string dir = paths.substr(start, end - start);
+        std::string candidate = (dir.empty() ? std::string(".") : dir) + "/gnuplot";
+        if (access(candidate.c_str(), X_OK) == 0) return;
+        start = end + 1;
+    }
+    throw Error(
+        "the study draws its plots with gnuplot, which is not on PATH: install it (Debian: apt-get install "
+        "gnuplot-nox, or tools/install-deps.sh), or pass --no-plots");
+}
+
+void drawPlots(const std::string& dir, const std::vector<StudyRow>& rows, double relMseThreshold) {
+    std::string script = gnuplotScript(rows, relMseThreshold);
+    writeFileAtomically((std::filesystem::path(dir) / "plots.gp").string(),
+                        std::vector<std::uint8_t>(script.begin(), script.end()));
+    std::string command = "cd " + quoteForShell(dir) + " && gnuplot plots.gp 2>&1";
+    FILE* pipe = popen(command.c_str(), "r");
+    if (!pipe) throw Error("could not start gnuplot");
+    std::string output;
+    char buffer[1024];
+    while (size_t n = fread(buffer, 1, sizeof buffer, pipe)) output.append(buffer, n);
+    int status = pclose(pipe);
+    if (!WIFEXITED(status) || WEXITSTATUS(status) != 0)
+        throw Error("gnuplot failed on " + dir + "/plots.gp:\n" + output);
+}
+
+}  // namespace fp::study

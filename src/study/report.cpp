@@ -1,0 +1,264 @@
+#include "study/report.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdarg>
+#include <cstdio>
+
+#include "study/feasibility.h"
+#include "study/metrics.h"
+#include "study/plots.h"
+#include "study/spp_needed.h"
+
+namespace fp::study {
+
+const char* const kThresholdRationale =
+    "An image counts as not noisy when its relative MSE against the reference is at most 4e-4, i.e. a "
+    "relative RMS error of 2% per pixel and channel. 2% is the Weber fraction for luminance: under "
+    "photopic adaptation the smallest visible change of a uniform luminance is 1-2% of it (Weber's law; "
+    "the threshold-versus-intensity data summarised in Wyszecki and Stiles 1982, \"Color Science\", and "
+    "in Barten 1999, \"Contrast Sensitivity of the Human Eye and Its Effects on Image Quality\"). Taking "
+    "the upper end assumes that error below a just-noticeable luminance difference is not seen as noise. "
+    "It is an assumption, not a measured visibility threshold for this scene: noise with fine grain is "
+    "less visible than a uniform step, and epsilon = 0.01 weighs down errors in dark pixels. Change it "
+    "with --threshold.";
+
+namespace {
+
+std::string format(const char* fmt, ...) {
+    char text[4096];
+    va_list args;
+    va_start(args, fmt);
+    std::vsnprintf(text, sizeof text, fmt, args);
+    va_end(args);
+    return text;
+}
+
+std::vector<StudyRow> seriesOf(const std::vector<StudyRow>& rows, const std::string& integrator,
+                               const std::string& denoiser) {
+    std::vector<StudyRow> series;
+    for (const StudyRow& r : rows)
+        if (r.integrator == integrator && r.denoiser == denoiser) series.push_back(r);
+    return series;
+}
+
+std::string yearText(const YearAnswer& a) {
+    if (a.firstGpuYear) return format("%d (%s)", *a.firstGpuYear, a.firstGpuName.c_str());
+    return format("none up to 2025; the trend line reaches it in ~%.0f", a.extrapolatedYear);
+}
+
+}  // namespace
+
+std::vector<FeasibilityRow> feasibilityRows(const ReportInput& in) {
+    std::vector<FeasibilityRow> result;
+    const double perCore = in.cpu.gflops() / std::max(in.cpu.cores, 1);
+    for (const std::string& integrator : in.integrators) {
+        auto counts = in.counts.find(integrator);
+        if (counts == in.counts.end()) continue;
+        std::vector<StudyRow> raw = seriesOf(in.rows, integrator, "none");
+        for (const std::string& denoiser : in.denoisers) {
+            std::vector<StudyRow> series = seriesOf(in.rows, integrator, denoiser);
+            if (series.empty()) continue;
+            FeasibilityRow f;
+            f.integrator = integrator;
+            f.denoiser = denoiser;
+            SppNeeded needed = sppNeeded(series, in.relMseThreshold);
+            f.sppText = describe(needed);
+            f.sppNeeded = needed.kind == Crossing::NotReached ? 0.0 : needed.spp;
+            f.flopsPerPath = flopsPerPath(counts->second, parseIntegrator(integrator));
+            f.shadingShare = (kFlopsPerCameraRay +
+                              counts->second.surfacesShaded * shadingFlops(parseIntegrator(integrator))) /
+                             f.flopsPerPath;
+            // Throughput of the raw render at the largest level: the most samples, the least overhead.
+            const StudyRow& last = raw.empty() ? series.back() : raw.back();
+            f.pathsPerCpuSecond =
+                double(in.width) * in.height * last.spp / std::max(last.renderCpuSeconds, 1e-9);
+            f.efficiency = measuredEfficiency(f.flopsPerPath, f.pathsPerCpuSecond, perCore);
+            // A denoiser adds its own cost per frame; it is small next to the paths and left out here.
+            f.requiredTflops = requiredFlopsPerSecond(std::max(f.sppNeeded, 1.0), f.flopsPerPath) / 1e12;
+            f.requiredPeakTflops = f.requiredTflops / f.efficiency;
+            result.push_back(f);
+        }
+    }
+    return result;
+}
+
+std::string reportMarkdown(const ReportInput& in) {
+    std::string md = "# How much noise is too much? A fragpath study\n\n";
+    md +=
+        "Written by `fragpath study`; every number below comes from the files next to this one "
+        "(`study.csv`) or is derived from them as stated.\n\n## Set-up\n\n";
+    md += format("- Scene: %s, %dx%d pixels, max depth %d.\n", in.scene.c_str(), in.width, in.height,
+                 in.maxDepth);
+    md += "- Reference: " + in.referenceText + "\n";
+    md += format("- Sample counts 1, 2, 4, ... %d per pixel; integrators: ", in.maxSpp);
+    for (size_t i = 0; i < in.integrators.size(); ++i) md += (i ? ", " : "") + in.integrators[i];
+    md += "; denoisers: ";
+    for (size_t i = 0; i < in.denoisers.size(); ++i) md += (i ? ", " : "") + in.denoisers[i];
+    md += ".\n";
+    md += "- Renderer: " + in.glRenderer + "; CPU: " + in.cpu.model + ".\n";
+    md += format(
+        "- Times: wall-clock seconds of the render from scratch (median of %d run%s) and process CPU "
+        "seconds (all threads). %s Wall times change with the load; CPU seconds much less, so the "
+        "efficiency below uses CPU seconds.\n\n",
+        in.runs, in.runs == 1 ? "" : "s", in.loadText.c_str());
+
+    md += "## Metrics\n\n";
+    md += "- **RMSE**: root of the mean over pixels and channels of (x - y)^2, linear radiance.\n";
+    md += format(
+        "- **relMSE**: mean over pixels and channels of (x - y)^2 / (y^2 + eps), eps = %.2g (Rousselle, "
+        "Knaus and Zwicker 2011, the relative MSE of pbrt and of the denoising literature); y is the "
+        "reference.\n",
+        kRelMseEpsilon);
+    md +=
+        "- **SSIM**: Wang et al. 2004, 11x11 Gaussian window (sigma 1.5), K1 = 0.01, K2 = 0.03, mean over "
+        "the "
+        "windows inside the image, on the luma (Rec. 709 weights) of the display image (clamp tone map, "
+        "exposure 0, sRGB encoding): dynamic range L = 1 for these HDR images.\n\n";
+
+    md += "## When is an image no longer noisy?\n\n" + std::string(kThresholdRationale) + "\n\n";
+    md += format("Threshold used: **relMSE <= %.3g**.\n\n", in.relMseThreshold);
+    md +=
+        "Samples per pixel needed to get under it (interpolated in log-log between the two levels around the "
+        "crossing; a raw estimate that never crosses is extrapolated from its last level by MSE ~ 1/N, the "
+        "Monte Carlo rate of an unbiased estimator; a denoised one is not, since its error need not fall "
+        "that way):\n\n| integrator | denoiser | spp needed | relMSE at max spp | SSIM at max spp |\n"
+        "|---|---|---|---|---|\n";
+    for (const std::string& integrator : in.integrators)
+        for (const std::string& denoiser : in.denoisers) {
+            std::vector<StudyRow> series = seriesOf(in.rows, integrator, denoiser);
+            if (series.empty()) continue;
+            md += format("| %s | %s | %s | %.3g | %.4f |\n", integrator.c_str(), denoiser.c_str(),
+                         describe(sppNeeded(series, in.relMseThreshold)).c_str(), series.back().relMse,
+                         series.back().ssim);
+        }
+
+    md += "\n## Plots\n\n";
+    if (in.plots) {
+        for (const std::string& name : plotFileNames()) md += "![" + name + "](" + name + ")\n\n";
+        md += "`plots.gp` drew them from `study.csv`; edit it and run `gnuplot plots.gp` here to redraw.\n\n";
+    } else {
+        md += "Not drawn (--no-plots).\n\n";
+    }
+    md += "## Image strip\n\n![strip](strip.png)\n\nThe same crop at ";
+    for (size_t i = 0; i < in.strip.columns.size(); ++i)
+        md += format("%s%d", i ? ", " : "", in.strip.columns[i]);
+    md += " spp, then the reference; rows from the top: ";
+    for (size_t i = 0; i < in.strip.rows.size(); ++i)
+        md += (i ? ", " : "") + in.strip.rows[i].first + " + " + in.strip.rows[i].second;
+    md += ". Clamp tone map, sRGB.\n\n";
+
+    md += "## Real-time feasibility\n\n";
+    md += format(
+        "A counting mode (`--view cost`: glsl/passes/debug_views.glsl) runs each integrator's whole "
+        "path and records, summed over all of its rays (camera, bounce and shadow), the BVH nodes "
+        "visited, the triangles tested and the surfaces shaded; averaged over %dx%d x %d paths:\n\n",
+        in.width, in.height, in.countSpp);
+    md +=
+        "| integrator | rays | BVH nodes | triangle tests | surfaces shaded | FLOPs per path "
+        "|\n|---|---|---|---|---|---|\n";
+    for (const std::string& integrator : in.integrators) {
+        auto it = in.counts.find(integrator);
+        if (it == in.counts.end()) continue;
+        const PathCounts& c = it->second;
+        md +=
+            format("| %s | %.2f | %.1f | %.1f | %.2f | %.0f |\n", integrator.c_str(), c.rays, c.nodesVisited,
+                   c.trianglesTested, c.surfacesShaded, flopsPerPath(c, parseIntegrator(integrator)));
+    }
+    md +=
+        "\nFLOPs per operation, counted from the GLSL (an add, multiply, divide, min, max, compare, sqrt, "
+        "sin or cos on one float is one FLOP; integer work such as the random numbers and the stack is not; "
+        "src/study/flop_model.h has the line-by-line breakdown):\n\n| operation | FLOPs | from "
+        "|\n|---|---|---|\n";
+    for (const FlopCount& f : operationTable())
+        md += format("| %s | %.0f | %s |\n", f.operation, f.flops, f.breakdown);
+    md +=
+        "\nFLOPs per path = 52 x nodes + 52 x triangle tests + 9 x rays + 27 (camera ray) + surfaces x (the "
+        "integrator's surface interaction).\n\n";
+
+    md +=
+        "**Efficiency measured here.** Peak FP32 of this CPU: " + in.cpu.formula() +
+        " (physical cores x clock x SIMD lanes x FLOPs per lane per cycle; 2 FMA pipes per core assumed, "
+        "the SIMD width capped by the vector width llvmpipe compiles to). Achieved = FLOPs per path x paths "
+        "per CPU-second (raw render at the largest sample count), against the peak of one core since CPU "
+        "seconds add up the busy time of all cores.\n\n";
+    std::vector<FeasibilityRow> rows = feasibilityRows(in);
+    md +=
+        "| integrator | denoiser | spp needed | FLOPs/path | paths per CPU-s | efficiency | sustained TFLOPS "
+        "for 1080p60 | GPU peak TFLOPS needed | first GPU that reaches it | ... at 100% efficiency |\n"
+        "|---|---|---|---|---|---|---|---|---|---|\n";
+    for (const FeasibilityRow& f : rows) {
+        std::string year =
+            f.sppNeeded > 0 ? yearText(yearReached(f.requiredTflops * 1e12, f.efficiency)) : "-";
+        std::string atPeak = f.sppNeeded > 0 ? yearText(yearReached(f.requiredTflops * 1e12, 1.0)) : "-";
+        md += format("| %s | %s | %s | %.0f | %.3g | %.2f%% | %s | %s | %s | %s |\n", f.integrator.c_str(),
+                     f.denoiser.c_str(), f.sppText.c_str(), f.flopsPerPath, f.pathsPerCpuSecond,
+                     100 * f.efficiency, f.sppNeeded > 0 ? format("%.3g", f.requiredTflops).c_str() : "-",
+                     f.sppNeeded > 0 ? format("%.3g", f.requiredPeakTflops).c_str() : "-", year.c_str(),
+                     atPeak.c_str());
+    }
+    md += "\nGPU peaks (FP32, vendor boost-clock figures): ";
+    for (const Gpu& g : consumerGpus()) md += format("%s (%d) %.1f, ", g.name, g.year, g.peakTflops);
+    md += format(
+        "TFLOPS; a least-squares fit of log2(peak) against the year doubles every %.2f years (the "
+        "\"trend\" years above extrapolate it).\n\n",
+        doublingYears());
+    md +=
+        "**Assumptions.** (1) A GPU runs this shader at the efficiency measured here on llvmpipe (fraction "
+        "of "
+        "peak FP32 achieved): GPUs hide memory latency better but diverge more on incoherent paths, so "
+        "this is a stated guess, not a measurement. (2) FLOPs are counted on the GLSL, not on the "
+        "instructions the compiler emits. (3) The spp needed at this resolution holds at 1920x1080 (the "
+        "per-pixel noise of a Monte Carlo estimate does not depend on the resolution). (4) One frame's "
+        "samples only: no temporal accumulation or reprojection. (5) Since the RTX 2080, GPUs traverse BVHs "
+        "and test triangles in fixed-function RT cores that the FP32 peak does not count; the answer below "
+        "also gives the year if only the shading share of the FLOPs fell on the FP32 units.\n\n";
+
+    md += "## The answer\n\n";
+    const FeasibilityRow* bestRaw = nullptr;
+    const FeasibilityRow* bestDenoised = nullptr;
+    for (const FeasibilityRow& f : rows) {
+        if (f.sppNeeded <= 0) continue;
+        const FeasibilityRow*& best = f.denoiser == "none" ? bestRaw : bestDenoised;
+        if (!best || f.requiredPeakTflops < best->requiredPeakTflops) best = &f;
+    }
+    auto verdict = [&](const FeasibilityRow& f) {
+        YearAnswer a = yearReached(f.requiredTflops * 1e12, f.efficiency);
+        double year = a.firstGpuYear ? double(*a.firstGpuYear) : a.extrapolatedYear;
+        YearAnswer full = yearReached(f.requiredTflops * 1e12, 1.0);
+        return format(
+            "%s%s needs %s spp, %.3g TFLOPS sustained, so %.3g TFLOPS of peak at the %.2f%% efficiency "
+            "measured here; first GPU: %s. \"Real-time path tracing within 4 years\" of 2016 (by 2020) "
+            "**%s**. Even at 100%% of peak the first GPU would be %s. If RT cores did the traversal and "
+            "triangle tests, the FP32 units would carry the shading share, %.0f%% of the FLOPs: first "
+            "GPU %s at the measured efficiency.",
+            f.integrator.c_str(), f.denoiser == "none" ? "" : (" + " + f.denoiser).c_str(), f.sppText.c_str(),
+            f.requiredTflops, f.requiredPeakTflops, 100 * f.efficiency, yearText(a).c_str(),
+            year <= 2020 ? "would have held" : "would not have held", yearText(full).c_str(),
+            100 * f.shadingShare,
+            yearText(yearReached(f.requiredTflops * 1e12 * f.shadingShare, f.efficiency)).c_str());
+    };
+    if (bestRaw)
+        md += "- Without a denoiser, the cheapest integrator: " + verdict(*bestRaw) + "\n";
+    else
+        md += "- No raw series has a number of samples needed.\n";
+    if (bestDenoised) {
+        md += "- With a denoiser, the cheapest combination: " + verdict(*bestDenoised) + "\n";
+        if (bestRaw) {
+            YearAnswer a = yearReached(bestRaw->requiredTflops * 1e12, bestRaw->efficiency);
+            YearAnswer b = yearReached(bestDenoised->requiredTflops * 1e12, bestDenoised->efficiency);
+            md += format("- The denoiser moves the year by %.1f years on the trend line (%.0f -> %.0f).\n",
+                         b.extrapolatedYear - a.extrapolatedYear, a.extrapolatedYear, b.extrapolatedYear);
+        }
+    } else {
+        md += "- No denoised series reaches the threshold within the measured sample counts" +
+              std::string(in.denoisers.size() > 1 ? "." : " (this study ran without a denoiser).") + "\n";
+    }
+    md +=
+        "\nThese figures hold for this scene only: a scene with more triangles visits more BVH nodes per "
+        "ray, "
+        "and glossy or glass surfaces cost more per interaction, so they need more FLOPs per path.\n";
+    return md;
+}
+
+}  // namespace fp::study

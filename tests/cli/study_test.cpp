@@ -1,0 +1,137 @@
+// `fragpath study` end to end on a tiny Cornell box: every artefact is written with the expected
+// contents, and bad requests fail with a clear message before any rendering.
+#include <cmath>
+#include <cstdlib>
+#include <fstream>
+#include <map>
+#include <set>
+#include <sstream>
+
+#include "fragpath_runner.h"
+#include "image/image.h"
+
+namespace fp::test {
+namespace {
+
+std::string readText(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    std::stringstream text;
+    text << in.rdbuf();
+    return text.str();
+}
+
+// Width and height from a PNG's IHDR chunk, or (0, 0) if the file is not a PNG.
+std::pair<int, int> pngSize(const std::string& path) {
+    std::string bytes = readText(path);
+    if (bytes.size() < 24 || bytes.compare(0, 8, "\x89PNG\r\n\x1a\n") != 0 ||
+        bytes.compare(12, 4, "IHDR") != 0)
+        return {0, 0};
+    auto be32 = [&](size_t at) {
+        return int((uint8_t(bytes[at]) << 24) | (uint8_t(bytes[at + 1]) << 16) |
+                   (uint8_t(bytes[at + 2]) << 8) | uint8_t(bytes[at + 3]));
+    };
+    return {be32(16), be32(20)};
+}
+
+std::vector<std::string> splitCsvLine(const std::string& line) {
+    std::vector<std::string> cells;
+    std::stringstream in(line);
+    std::string cell;
+    while (std::getline(in, cell, ',')) cells.push_back(cell);
+    return cells;
+}
+
+class StudyTest : public TempDirTest {};
+
+TEST_F(StudyTest, WritesEveryArtefact) {
+    const std::string out = path("out");
+    CliRun run = runFragpath(
+        "study --size 16x16 --max-spp 4 --reference-spp 64 --integrators nee,naive --quiet --out " + out);
+    ASSERT_EQ(run.exitCode, 0) << run.output;
+
+    // The CSV: the documented header, then integrators x denoisers x spp levels (1, 2, 4) rows.
+    std::ifstream csv(out + "/study.csv");
+    std::string header;
+    std::getline(csv, header);
+    EXPECT_EQ(header,
+              "integrator,denoiser,spp,render_seconds,render_cpu_seconds,denoise_seconds,total_seconds,rmse,"
+              "rel_mse,ssim");
+    std::map<std::pair<std::string, std::string>, std::set<int>> levels;
+    std::map<int, double> neeRawRmse;
+    std::set<std::string> denoisers;
+    int rows = 0;
+    for (std::string line; std::getline(csv, line); ++rows) {
+        std::vector<std::string> cells = splitCsvLine(line);
+        ASSERT_EQ(cells.size(), 10u) << line;
+        for (size_t i = 3; i < cells.size(); ++i) {
+            double v = std::strtod(cells[i].c_str(), nullptr);
+            EXPECT_TRUE(std::isfinite(v) && v >= 0.0) << line;
+        }
+        double ssim = std::strtod(cells[9].c_str(), nullptr);
+        EXPECT_LE(ssim, 1.0) << line;
+        int spp = std::stoi(cells[2]);
+        levels[{cells[0], cells[1]}].insert(spp);
+        denoisers.insert(cells[1]);
+        if (cells[0] == "nee" && cells[1] == "none") neeRawRmse[spp] = std::strtod(cells[7].c_str(), nullptr);
+    }
+    EXPECT_TRUE(denoisers.count("none"));
+    EXPECT_EQ(rows, int(2 * denoisers.size() * 3));
+    for (const auto& [series, spp] : levels) EXPECT_EQ(spp, (std::set<int>{1, 2, 4})) << series.first;
+    // Expected MSE at N spp is var/N plus the 64-spp reference's var/64, so RMSE(4)/RMSE(1) is about
+    // sqrt((1/4 + 1/64) / (1 + 1/64)) = 0.51; 0.8 leaves room for the spread of a 16x16 image's MSE.
+    ASSERT_EQ(neeRawRmse.size(), 3u);
+    EXPECT_LT(neeRawRmse[4], 0.8 * neeRawRmse[1]);
+
+    // Plots from gnuplot, the script that drew them, the strip and the reference.
+    EXPECT_TRUE(std::filesystem::exists(out + "/plots.gp"));
+    for (const char* plot : {"error_vs_spp.png", "error_vs_time.png", "ssim_vs_spp.png"}) {
+        EXPECT_GT(pngSize(out + "/" + plot).first, 0) << plot;
+        EXPECT_GT(std::filesystem::file_size(out + "/" + plot), 5000u) << plot;
+    }
+    // Columns 1 and 4 spp and the reference, 16 pixels each with 2-pixel gaps; a row per series.
+    std::pair<int, int> strip = pngSize(out + "/strip.png");
+    EXPECT_EQ(strip.first, 3 * 16 + 2 * 2);
+    EXPECT_EQ(strip.second, int(levels.size()) * 16 + (int(levels.size()) - 1) * 2);
+    EXPECT_EQ(readImage(out + "/reference.exr").width, 16);
+
+    std::string report = readText(out + "/report.md");
+    EXPECT_NE(report.find("Threshold used: **relMSE <= 0.0004**"), std::string::npos);
+    EXPECT_NE(report.find("Weber"), std::string::npos);
+    EXPECT_NE(report.find("| operation | FLOPs | from |"), std::string::npos);
+    EXPECT_NE(report.find("| ray-triangle test (Moller-Trumbore) | 52 |"), std::string::npos);
+    EXPECT_NE(report.find("RTX 3080"), std::string::npos);
+    EXPECT_NE(report.find("within 4 years"), std::string::npos);
+
+    // The saved reference can be loaded back for another study of the same size.
+    run = runFragpath("study --size 16x16 --max-spp 2 --integrators nee --no-plots --quiet --reference " +
+                      out + "/reference.exr --out " + path("again"));
+    ASSERT_EQ(run.exitCode, 0) << run.output;
+    EXPECT_NE(readText(path("again/report.md")).find("loaded from"), std::string::npos);
+}
+
+TEST_F(StudyTest, RejectsBadRequestsBeforeRendering) {
+    auto expectError = [](const std::string& args, const std::string& message, const std::string& env = "") {
+        CliRun run = env.empty() ? runFragpath(args) : runFragpath(args, env);
+        EXPECT_EQ(run.exitCode, 1) << args << "\n" << run.output;
+        EXPECT_NE(run.output.find(message), std::string::npos) << args << "\n" << run.output;
+    };
+    const std::string out = " --out " + path("out");
+    expectError("study --integrators nee,warp" + out, "unknown integrator 'warp'");
+    expectError("study --denoisers none,magic" + out, "unknown denoiser 'magic' (choose none");
+    expectError("study --integrators nee,nee" + out, "'nee' is listed twice");
+    expectError("study --size 8x8" + out, "at least 11x11");
+
+    Image small(20, 20);
+    writeImage(path("small.exr"), small);
+    expectError("study --size 16x16 --reference " + path("small.exr") + out,
+                "is 20x20 but the study renders 16x16 (--size)");
+    expectError("study --reference " + path("missing.exr") + out, "missing.exr");
+
+    std::ofstream(path("file")) << "not a directory";
+    expectError("study --out " + path("file") + "/sub",
+                "output directory " + path("file") + "/sub cannot be created");
+    expectError("study" + out, "gnuplot, which is not on PATH", "LP_NUM_THREADS=2 PATH=/nonexistent");
+}
+
+}  // namespace
+}  // namespace fp::test
