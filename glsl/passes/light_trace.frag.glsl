@@ -6,6 +6,7 @@
 #include "common/rng.glsl"
 #include "common/sampling.glsl"
 #include "common/scene_data.glsl"
+#include "common/textures.glsl"
 #include "common/intersect.glsl"
 #include "common/bsdf.glsl"
 #include "common/surface.glsl"
