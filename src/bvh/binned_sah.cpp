@@ -71,7 +71,7 @@ struct TopNode {
 
 class ParallelBuild {
   public:
-    ParallelBuild(std::vector<PrimRef>& refs, const BvhBuildOptions& options, int threads)
+    ParallelBuild(HugePageVector<PrimRef>& refs, const BvhBuildOptions& options, int threads)
         : refs_(refs), options_(options), threads_(threads) {}
 
     Bvh build(uint32_t subtreeLimit) {
@@ -169,7 +169,7 @@ class ParallelBuild {
     Bvh assemble() {
         size_t total = 0;
         for (const TopNode& node : top_) total += node.subtree < 0;
-        for (const std::vector<BvhNode>& nodes : subtreeNodes_) total += nodes.size();
+        for (const HugePageVector<BvhNode>& nodes : subtreeNodes_) total += nodes.size();
         Bvh bvh;
         bvh.nodes.resize(total);
         std::vector<uint32_t> offsets(subtreeNodes_.size());
@@ -208,13 +208,13 @@ class ParallelBuild {
         return bvh;
     }
 
-    std::vector<PrimRef>& refs_;
+    HugePageVector<PrimRef>& refs_;
     const BvhBuildOptions& options_;
     int threads_;
     BinnedSah sah_{options_};             // for the top nodes: their bins are merged here
     std::vector<TopNode> top_;            // top_[0] is the root; children are pushed in pairs
     std::vector<uint32_t> subtreeRoots_;  // top node of each subtree job
-    std::vector<std::vector<BvhNode>> subtreeNodes_;
+    std::vector<HugePageVector<BvhNode>> subtreeNodes_;
 };
 
 }  // namespace
@@ -224,11 +224,11 @@ int buildThreadCount(const BvhBuildOptions& options) {
     return int(std::max(1u, std::thread::hardware_concurrency()));
 }
 
-Bvh buildBinnedSah(const std::vector<Aabb>& primBounds, const BvhBuildOptions& options) {
+Bvh buildBinnedSah(const AabbArray& primBounds, const BvhBuildOptions& options) {
     detail::validateOptions(options, primBounds.size());  // before binCount sizes anything
     Bvh bvh;
     if (primBounds.empty()) return bvh;
-    std::vector<PrimRef> refs = detail::makePrimRefs(primBounds);
+    HugePageVector<PrimRef> refs = detail::makePrimRefs(primBounds);
     const auto n = uint32_t(refs.size());
     const int threads = buildThreadCount(options);
     const uint32_t subtreeLimit = std::max(kMinSubtree, n / (uint32_t(threads) * kJobsPerThread));

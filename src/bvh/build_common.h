@@ -113,8 +113,8 @@ inline bool preferLeaf(float bracketCost, uint32_t count, const RangeBounds& rb,
 }
 
 // PrimRefs for primBounds, in input order.
-inline std::vector<PrimRef> makePrimRefs(const std::vector<Aabb>& primBounds) {
-    std::vector<PrimRef> refs(primBounds.size());
+inline HugePageVector<PrimRef> makePrimRefs(const AabbArray& primBounds) {
+    HugePageVector<PrimRef> refs(primBounds.size());
     for (size_t i = 0; i < refs.size(); ++i) refs[i] = PrimRef(primBounds[i], uint32_t(i));
     return refs;
 }
@@ -128,7 +128,7 @@ inline std::vector<PrimRef> makePrimRefs(const std::vector<Aabb>& primBounds) {
 // primitives; a refused split of more than maxLeafSize primitives is overridden by halving the range.
 template <class Split>
 void buildSubtree(PrimRef* refs, uint32_t begin, uint32_t end, const BvhBuildOptions& options, Split&& split,
-                  std::vector<BvhNode>& nodes) {
+                  HugePageVector<BvhNode>& nodes) {
     const auto maxLeafSize = static_cast<uint32_t>(options.maxLeafSize);
     const auto base = static_cast<uint32_t>(nodes.size());
     constexpr uint32_t kNoParent = std::numeric_limits<uint32_t>::max();
@@ -165,19 +165,19 @@ void buildSubtree(PrimRef* refs, uint32_t begin, uint32_t end, const BvhBuildOpt
 }
 
 // The primitive order the builders leave in refs, as Bvh::primIndex.
-inline std::vector<uint32_t> primIndexOf(const std::vector<PrimRef>& refs) {
-    std::vector<uint32_t> primIndex(refs.size());
+inline HugePageVector<uint32_t> primIndexOf(const HugePageVector<PrimRef>& refs) {
+    HugePageVector<uint32_t> primIndex(refs.size());
     for (size_t i = 0; i < refs.size(); ++i) primIndex[i] = refs[i].index();
     return primIndex;
 }
 
 // A whole single-threaded build with `split` (see buildSubtree).
 template <class Split>
-Bvh buildTopDown(const std::vector<Aabb>& primBounds, const BvhBuildOptions& options, Split&& split) {
+Bvh buildTopDown(const AabbArray& primBounds, const BvhBuildOptions& options, Split&& split) {
     validateOptions(options, primBounds.size());
     Bvh bvh;
     if (primBounds.empty()) return bvh;
-    std::vector<PrimRef> refs = makePrimRefs(primBounds);
+    HugePageVector<PrimRef> refs = makePrimRefs(primBounds);
     buildSubtree(refs.data(), 0, uint32_t(refs.size()), options, split, bvh.nodes);
     bvh.primIndex = primIndexOf(refs);
     return bvh;

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "core/aabb.h"
+#include "core/huge_page_allocator.h"
 
 namespace fp {
 
@@ -18,8 +19,9 @@ struct BvhNode {
 };
 
 struct Bvh {
-    std::vector<BvhNode> nodes;       // nodes[0] is the root
-    std::vector<uint32_t> primIndex;  // leaf order -> original primitive index
+    // Large arrays, written right after allocation: see core/huge_page_allocator.h for why.
+    HugePageVector<BvhNode> nodes;       // nodes[0] is the root
+    HugePageVector<uint32_t> primIndex;  // leaf order -> original primitive index
 };
 
 struct BvhBuildOptions {
@@ -43,16 +45,16 @@ struct BvhBuildOptions {
 // Binned SAH (Wald 2007, "On fast construction of SAH-based bounding volume hierarchies"): each node
 // is split at the lowest-cost of the binCount - 1 planes per axis between equal-width bins over its
 // centroid bounds, or made a leaf when that is strictly cheaper and it holds at most maxLeafSize.
-Bvh buildBinnedSah(const std::vector<Aabb>& primBounds, const BvhBuildOptions& options = {});
+Bvh buildBinnedSah(const AabbArray& primBounds, const BvhBuildOptions& options = {});
 // The threads buildBinnedSah may use with these options (threadCount, or the hardware's if 0).
 int buildThreadCount(const BvhBuildOptions& options);
 // Full-sweep SAH: the quality reference for the binned builder (O(n log n) per level; not for rendering).
 // Each node is split at the lowest-cost of all planes between consecutive distinct centroids along each
 // axis (centroids sorted per axis), with the binned builder's costs and leaf rule; binCount is not used.
-Bvh buildSweepSah(const std::vector<Aabb>& primBounds, const BvhBuildOptions& options = {});
+Bvh buildSweepSah(const AabbArray& primBounds, const BvhBuildOptions& options = {});
 // Object median split along the longest centroid axis: the baseline the SAH builder must beat.
 // Nodes with at most maxLeafSize primitives become leaves; binCount and the costs are not used.
-Bvh buildMedianSplit(const std::vector<Aabb>& primBounds, const BvhBuildOptions& options = {});
+Bvh buildMedianSplit(const AabbArray& primBounds, const BvhBuildOptions& options = {});
 
 struct BvhStats {
     uint32_t nodeCount = 0, leafCount = 0, maxDepth = 0;

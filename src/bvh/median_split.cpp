@@ -5,7 +5,7 @@
 
 namespace fp {
 
-Bvh buildMedianSplit(const std::vector<Aabb>& primBounds, const BvhBuildOptions& options) {
+Bvh buildMedianSplit(const AabbArray& primBounds, const BvhBuildOptions& options) {
     const auto maxLeafSize = static_cast<uint32_t>(std::max(options.maxLeafSize, 1));
     auto split = [maxLeafSize](detail::PrimRef* refs, uint32_t begin, uint32_t end,
                                const detail::RangeBounds& rb) {

@@ -38,8 +38,8 @@ class NodeStack {
 
 }  // namespace
 
-std::vector<Aabb> triangleBounds(const std::vector<TriangleVerts>& triangles) {
-    std::vector<Aabb> bounds;
+AabbArray triangleBounds(const std::vector<TriangleVerts>& triangles) {
+    AabbArray bounds;
     bounds.reserve(triangles.size());
     for (const TriangleVerts& tri : triangles) bounds.push_back(tri.bounds());
     return bounds;

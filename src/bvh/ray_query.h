@@ -37,7 +37,7 @@ struct TriangleVerts {
     }
 };
 
-std::vector<Aabb> triangleBounds(const std::vector<TriangleVerts>& triangles);
+AabbArray triangleBounds(const std::vector<TriangleVerts>& triangles);
 
 struct RayHit {
     float t = std::numeric_limits<float>::infinity();

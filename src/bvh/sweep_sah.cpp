@@ -26,7 +26,7 @@ class SweepSahSplitter {
         uint32_t bestLeftCount = 0;
         for (int axis = 0; axis < 3; ++axis) {
             if (!(rb.centroids.lo[axis] < rb.centroids.hi[axis])) continue;  // no plane separates them
-            std::vector<PrimRef>& sorted = sorted_[axis];
+            HugePageVector<PrimRef>& sorted = sorted_[axis];
             sorted.assign(refs + begin, refs + end);
             auto key = [axis](const PrimRef& r) { return r.lo[axis] + r.hi[axis]; };  // doubled centroid
             // Ties broken by the primitive index, so the order (and the tree) is fully determined.
@@ -58,13 +58,13 @@ class SweepSahSplitter {
 
   private:
     const BvhBuildOptions& options_;
-    std::vector<PrimRef> sorted_[3];  // scratch: the node's references sorted along each axis
-    std::vector<float> rightArea_;    // scratch
+    HugePageVector<PrimRef> sorted_[3];  // scratch: the node's references sorted along each axis
+    std::vector<float> rightArea_;       // scratch
 };
 
 }  // namespace
 
-Bvh buildSweepSah(const std::vector<Aabb>& primBounds, const BvhBuildOptions& options) {
+Bvh buildSweepSah(const AabbArray& primBounds, const BvhBuildOptions& options) {
     SweepSahSplitter splitter(options);
     return detail::buildTopDown(primBounds, options, splitter);
 }

@@ -3,6 +3,8 @@
 #include <glm/glm.hpp>
 #include <limits>
 
+#include "core/huge_page_allocator.h"
+
 namespace fp {
 
 struct Aabb {
@@ -27,5 +29,8 @@ struct Aabb {
         return 2.0f * (e.x * e.y + e.y * e.z + e.z * e.x);
     }
 };
+
+// One box per primitive: the BVH builders' input, a large array for large scenes.
+using AabbArray = HugePageVector<Aabb>;
 
 }  // namespace fp

@@ -56,7 +56,7 @@ Scene buildScene(const fp::Scene& scene, const BvhBuildOptions& options) {
     }
     out.environment = scene.environment.color;
 
-    std::vector<Aabb> bounds;
+    AabbArray bounds;
     for (const Triangle& t : scene.triangles) bounds.push_back(t.bounds());
     Bvh bvh = buildBinnedSah(bounds, options);
 

@@ -27,7 +27,7 @@ Renderer::Renderer(const Scene& scene, ShaderLibrary shaders, const BvhBuildOpti
     : shaders_(std::move(shaders)) {
     auto start = std::chrono::steady_clock::now();
     const std::clock_t cpuStart = std::clock();  // CPU time of the whole process, so of every build thread
-    std::vector<Aabb> bounds;
+    AabbArray bounds;
     bounds.reserve(scene.triangles.size());
     for (const Triangle& t : scene.triangles) bounds.push_back(t.bounds());
     Bvh bvh = buildBinnedSah(bounds, bvhOptions);

@@ -14,7 +14,7 @@ using test::checkStructure;
 
 TEST(BvhBuild, StructureHoldsOnEveryMeshBuilderAndLeafSize) {
     for (const test::NamedMesh& m : test::testMeshes()) {
-        const std::vector<Aabb> bounds = triangleBounds(m.mesh);
+        const AabbArray bounds = triangleBounds(m.mesh);
         for (const test::NamedBuilder& b : builders())
             for (int maxLeafSize : {1, 2, 4, 8})
                 for (int binCount : {2, 16, 32}) {
@@ -44,7 +44,7 @@ TEST(BvhBuild, OnePrimitiveIsOneLeaf) {
         EXPECT_EQ(bvh.nodes[0].count, 1u);
         EXPECT_EQ(bvh.nodes[0].first, 0u);
         EXPECT_TRUE(test::sameBox(bvh.nodes[0].bounds, box));
-        EXPECT_EQ(bvh.primIndex, std::vector<uint32_t>{0});
+        EXPECT_EQ(bvh.primIndex, HugePageVector<uint32_t>{0});
     }
 }
 
@@ -55,7 +55,7 @@ TEST(BvhBuild, TwoDistantPrimitivesAreSplitTwoOverlappingOnesShareALeaf) {
     ASSERT_EQ(split.nodes.size(), 3u);
     EXPECT_EQ(split.nodes[0].count, 0u);
     EXPECT_EQ(split.nodes[0].first, 2u);
-    EXPECT_EQ(split.primIndex, (std::vector<uint32_t>{1, 0}));  // the lower centroid goes left
+    EXPECT_EQ(split.primIndex, (HugePageVector<uint32_t>{1, 0}));  // the lower centroid goes left
     EXPECT_TRUE(test::sameBox(split.nodes[1].bounds, a));
     EXPECT_TRUE(test::sameBox(split.nodes[2].bounds, far));
     // Overlapping boxes with distinct centroids: split costs 1 + (6 + 6) / 7.26 ~ 2.65 > leaf cost 2.
@@ -73,7 +73,7 @@ TEST(BvhBuild, TwoDistantPrimitivesAreSplitTwoOverlappingOnesShareALeaf) {
 TEST(BvhBuild, CoincidentCentroidsAreSplitInHalves) {
     // 1000 identical boxes: no plane separates them, so each oversized node halves its range and the
     // depth is exactly ceil(log2(1000 / 4)) = 8.
-    const std::vector<Aabb> bounds = triangleBounds(test::identicalTriangles(1000));
+    const AabbArray bounds = triangleBounds(test::identicalTriangles(1000));
     for (const test::NamedBuilder& b : builders()) {
         SCOPED_TRACE(b.name);
         BvhBuildOptions options;
@@ -87,7 +87,7 @@ TEST(BvhBuild, CoincidentCentroidsAreSplitInHalves) {
 }
 
 TEST(BvhBuild, SmallNodeBecomesLeafWhenTraversalIsExpensive) {
-    const std::vector<Aabb> bounds = triangleBounds(test::randomSoup(8, 5));
+    const AabbArray bounds = triangleBounds(test::randomSoup(8, 5));
     BvhBuildOptions options;
     options.maxLeafSize = 8;
     options.traversalCost = 100.0f;  // any split costs > 100 > 8 intersections
@@ -100,7 +100,7 @@ TEST(BvhBuild, SmallNodeBecomesLeafWhenTraversalIsExpensive) {
 }
 
 TEST(BvhBuild, OversizedNodeIsSplitEvenWhenALeafIsCheaper) {
-    const std::vector<Aabb> bounds = triangleBounds(test::randomSoup(9, 6));
+    const AabbArray bounds = triangleBounds(test::randomSoup(9, 6));
     BvhBuildOptions options;
     options.maxLeafSize = 8;
     options.traversalCost = 100.0f;
@@ -119,7 +119,7 @@ TEST(BvhBuild, SahSeparatesADistantSmallClusterAtTheRoot) {
         t.p2 += glm::vec3(1000.0f);
         mesh.push_back(t);
     }
-    const std::vector<Aabb> bounds = triangleBounds(mesh);
+    const AabbArray bounds = triangleBounds(mesh);
     Bvh bvh = buildBinnedSah(bounds);
     ASSERT_TRUE(checkStructure(bvh, bounds, {}));
     const BvhNode& root = bvh.nodes[0];
@@ -136,7 +136,7 @@ TEST(BvhBuild, SahSeparatesADistantSmallClusterAtTheRoot) {
 }
 
 TEST(BvhBuild, SameInputGivesSameTree) {
-    const std::vector<Aabb> bounds = triangleBounds(test::randomSoup(5000, 9));
+    const AabbArray bounds = triangleBounds(test::randomSoup(5000, 9));
     for (const test::NamedBuilder& b : builders()) {
         Bvh first = b.build(bounds, {}), second = b.build(bounds, {});
         EXPECT_EQ(first.primIndex, second.primIndex) << b.name;
@@ -153,7 +153,7 @@ TEST(BvhBuild, WidelySpreadCentroidsArePeeledOneLevelAtATime) {
     // Centroids at 32^i: relative to each node's centroid range, all but the top one fall into the
     // first of 16 bins, so the only plane peels off one primitive per level: depth n - 1, with areas
     // up to 2^116 that must not overflow.
-    std::vector<Aabb> bounds;
+    AabbArray bounds;
     for (int i = 0; i < 24; ++i) {
         const float x = std::ldexp(1.0f, 5 * i);
         bounds.push_back({glm::vec3(x, 0.0f, 0.0f), glm::vec3(1.5f * x, 1.0f, 1.0f)});
@@ -176,7 +176,7 @@ TEST(BvhBuild, WidelySpreadCentroidsArePeeledOneLevelAtATime) {
 }
 
 TEST(BvhBuild, InvalidOptionsThrow) {
-    const std::vector<Aabb> bounds = triangleBounds(test::randomSoup(10, 10));
+    const AabbArray bounds = triangleBounds(test::randomSoup(10, 10));
     for (const test::NamedBuilder& b : builders()) {
         BvhBuildOptions bins;
         bins.binCount = 1;

@@ -68,7 +68,7 @@ TEST(BvhStats, EmptyBvhIsAllZeros) {
 
 TEST(BvhStats, ZeroAreaRootCountsEveryNodeFully) {
     // Five points on a line: root area 0, so each node weighs 1 (documented in bvh.h).
-    std::vector<Aabb> points;
+    AabbArray points;
     for (int i = 0; i < 5; ++i) points.push_back(box({float(i), 0, 0}, {float(i), 0, 0}));
     BvhBuildOptions options;
     options.maxLeafSize = 1;
@@ -81,7 +81,7 @@ TEST(BvhStats, ZeroAreaRootCountsEveryNodeFully) {
 TEST(BvhStats, AgreesWithTheStructureOfBuiltTrees) {
     for (const test::NamedMesh& m : test::testMeshes()) {
         if (m.mesh.empty()) continue;
-        const std::vector<Aabb> bounds = triangleBounds(m.mesh);
+        const AabbArray bounds = triangleBounds(m.mesh);
         Bvh bvh = buildBinnedSah(bounds);
         BvhStats stats = computeStats(bvh);
         SCOPED_TRACE(m.name);

@@ -169,7 +169,7 @@ inline std::vector<NamedMesh> testMeshes() {
 
 struct NamedBuilder {
     std::string name;
-    std::function<Bvh(const std::vector<Aabb>&, const BvhBuildOptions&)> build;
+    std::function<Bvh(const AabbArray&, const BvhBuildOptions&)> build;
 };
 
 inline std::vector<NamedBuilder> builders() {
@@ -195,7 +195,7 @@ inline bool sameBox(const Aabb& a, const Aabb& b) {
 //   in consecutive ranges;
 // - every node's bounds contain, and equal, the union of its children's bounds (interior) or of its
 //   primitives' bounds (leaf).
-inline ::testing::AssertionResult checkStructure(const Bvh& bvh, const std::vector<Aabb>& primBounds,
+inline ::testing::AssertionResult checkStructure(const Bvh& bvh, const AabbArray& primBounds,
                                                  const BvhBuildOptions& options) {
     const size_t n = primBounds.size();
     if (n == 0) {

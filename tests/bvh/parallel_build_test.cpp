@@ -62,7 +62,7 @@ std::vector<test::NamedMesh> largeMeshes() {
 
 TEST(ParallelBuild, SameTreeForAnyThreadCount) {
     for (const test::NamedMesh& m : largeMeshes()) {
-        const std::vector<Aabb> bounds = triangleBounds(m.mesh);
+        const AabbArray bounds = triangleBounds(m.mesh);
         BvhBuildOptions options;
         options.threadCount = 1;
         const Bvh one = buildBinnedSah(bounds, options);
@@ -77,7 +77,7 @@ TEST(ParallelBuild, SameTreeForAnyThreadCount) {
 
 TEST(ParallelBuild, SameTreeWhenTheTopNodesBecomeLeaves) {
     // Traversal so expensive that the root is a leaf, reached through the multithreaded path.
-    const std::vector<Aabb> bounds = triangleBounds(test::randomSoup(20000, 24));
+    const AabbArray bounds = triangleBounds(test::randomSoup(20000, 24));
     BvhBuildOptions options;
     options.maxLeafSize = 1 << 20;
     options.traversalCost = 1e9f;
@@ -100,7 +100,7 @@ TEST(ParallelBuild, SameTreeAsTheSingleThreadedBuilderItReplaced) {
     ASSERT_EQ(meshes.size(), before.size());
     for (size_t i = 0; i < meshes.size(); ++i) {
         ASSERT_EQ(meshes[i].name, before[i].first);
-        const std::vector<Aabb> bounds = triangleBounds(meshes[i].mesh);
+        const AabbArray bounds = triangleBounds(meshes[i].mesh);
         for (int threads : {1, 2}) {
             BvhBuildOptions options;
             options.threadCount = threads;

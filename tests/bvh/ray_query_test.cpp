@@ -355,7 +355,7 @@ TEST(ClosestHit, MatchesBruteForceOnEveryMeshAndBuilder) {
     uint32_t seed = 100;
     for (const test::NamedMesh& m : test::testMeshes()) {
         if (m.mesh.empty()) continue;
-        const std::vector<Aabb> bounds = triangleBounds(m.mesh);
+        const AabbArray bounds = triangleBounds(m.mesh);
         const Bvh reference = buildBinnedSah(bounds);
         const std::vector<TestRay> rays = makeRays(m.mesh, reference, 400, seed++);
         std::vector<RayHit> expected;

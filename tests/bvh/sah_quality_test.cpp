@@ -11,13 +11,13 @@ struct Costs {
     float binned, sweep, median;
 };
 
-std::vector<Aabb> sceneBounds(const Scene& scene) {
-    std::vector<Aabb> bounds;
+AabbArray sceneBounds(const Scene& scene) {
+    AabbArray bounds;
     for (const Triangle& t : scene.triangles) bounds.push_back(t.bounds());
     return bounds;
 }
 
-Costs sahCosts(const std::vector<Aabb>& bounds) {
+Costs sahCosts(const AabbArray& bounds) {
     BvhBuildOptions options;
     Bvh binned = buildBinnedSah(bounds, options), sweep = buildSweepSah(bounds, options),
         median = buildMedianSplit(bounds, options);
@@ -85,7 +85,7 @@ TEST(SahQuality, BinnedBeatsMedianClearlyOnUnevenDensity) {
 
 TEST(SahQuality, MoreBinsDoNotMakeMuchWorseTrees) {
     // Sanity of the bin sweep: 2 bins (centroid-box midpoint only) should not beat 32 bins by much.
-    const std::vector<Aabb> bounds = triangleBounds(test::unevenDensity(20000, 500, 13));
+    const AabbArray bounds = triangleBounds(test::unevenDensity(20000, 500, 13));
     BvhBuildOptions two, many;
     two.binCount = 2;
     many.binCount = 32;
@@ -97,7 +97,7 @@ TEST(SahQuality, MoreBinsDoNotMakeMuchWorseTrees) {
 TEST(SahQuality, SweepFindsTheBestSinglePlaneOfASmallNode) {
     // With leaves of one primitive and splits free to traverse, the root's split is the single plane
     // that minimises A_L N_L + A_R N_R: brute force over every sorted cut on every axis must not beat it.
-    const std::vector<Aabb> bounds = triangleBounds(test::randomSoup(40, 17));
+    const AabbArray bounds = triangleBounds(test::randomSoup(40, 17));
     BvhBuildOptions options;
     options.maxLeafSize = 1;
     Bvh bvh = buildSweepSah(bounds, options);

@@ -31,7 +31,7 @@ Scene randomScene(int triangles, uint32_t seed) {
 }
 
 Bvh buildFor(const Scene& s) {
-    std::vector<Aabb> bounds;
+    AabbArray bounds;
     for (const Triangle& t : s.triangles) bounds.push_back(t.bounds());
     return buildBinnedSah(bounds);
 }
@@ -146,7 +146,7 @@ TEST(PackScene, ChildLinksRoundTripAndRefuseWhatTheyCannotHold) {
     // Coincident triangles cannot be split, so a builder allowed larger leaves makes one of all of them.
     Scene s = randomScene(1, 5);
     s.triangles.resize(layout::kMaxLeafCount + 1, s.triangles[0]);
-    std::vector<Aabb> bounds(s.triangles.size(), s.triangles[0].bounds());
+    AabbArray bounds(s.triangles.size(), s.triangles[0].bounds());
     BvhBuildOptions wide;
     wide.maxLeafSize = int(layout::kMaxLeafCount) + 1;
     EXPECT_THROW(packScene(s, buildBinnedSah(bounds, wide)), Error);

@@ -11,7 +11,7 @@ namespace {
 TEST(Limits, SceneOverTheBufferTextureLimitIsAClearError) {
     ensureGlContext();
     Scene scene = furnaceBox(0.5f, 1.0f);  // 12 triangles: 36 triangle texels
-    std::vector<Aabb> bounds;
+    AabbArray bounds;
     for (const Triangle& t : scene.triangles) bounds.push_back(t.bounds());
     PackedScene packed = packScene(scene, buildBinnedSah(bounds));
     EXPECT_NO_THROW(SceneTextures(packed, 36));

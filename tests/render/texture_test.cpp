@@ -193,7 +193,7 @@ TEST(Textures, QuadWithoutTexcoordsShowsTheMeanColour) {
 TEST(Textures, TexelsOverTheBufferTextureLimitAreAClearError) {
     ensureGlContext();
     Scene scene = texturedQuad(gradientTexels(), true);  // 16 texels; 2 triangles: 6 texels of uvs
-    std::vector<Aabb> bounds;
+    AabbArray bounds;
     for (const Triangle& t : scene.triangles) bounds.push_back(t.bounds());
     PackedScene packed = packScene(scene, buildBinnedSah(bounds));
     EXPECT_NO_THROW(SceneTextures(packed, 16));
