@@ -7,16 +7,19 @@
 #include <glm/glm.hpp>
 
 #include "bvh/bvh.h"
+#include "core/huge_page_allocator.h"
 #include "scene/scene.h"
 
 namespace fp {
 
 struct PackedScene {
-    std::vector<glm::vec4> triangles, normals, nodeBounds, materials, lights;
-    std::vector<glm::uvec2> nodeLinks;
+    // The per-triangle and per-node arrays are large for large scenes: see core/huge_page_allocator.h.
+    HugePageVector<glm::vec4> triangles, normals, nodeBounds;
+    std::vector<glm::vec4> materials, lights;
+    HugePageVector<glm::uvec2> nodeLinks;
     // Empty unless some material has a texture (hasTextures()).
-    std::vector<glm::vec2> texcoords;
-    std::vector<uint8_t> textureTexels;  // 4 bytes per texel
+    HugePageVector<glm::vec2> texcoords;
+    HugePageVector<uint8_t> textureTexels;  // 4 bytes per texel
     std::vector<glm::ivec4> textureTable;
     uint32_t triangleCount = 0, nodeCount = 0, lightCount = 0;
     uint32_t bvhDepth = 0;         // deepest interior node (root = 0): the traversal stack must hold it
