@@ -242,14 +242,17 @@ int renderCommand(const std::vector<std::string>& argv) {
             "bvh              %u nodes, %u leaves, depth %u, leaf size %u..%u (mean %.2f), SAH cost %.2f\n",
             s.bvh.nodeCount, s.bvh.leafCount, s.bvh.maxDepth, s.bvh.minLeafSize, s.bvh.maxLeafSize,
             s.bvh.meanLeafSize, s.bvh.sahCost);
-        std::printf("bvh build        %.3f s, %.3f CPU-s, threads %d (%.3g triangles/s)\n",
-                    s.bvhBuildSeconds, s.bvhBuildCpuSeconds, s.bvhBuildThreads,
+        std::printf("bvh build        %.3f s, %.3f CPU-s, threads %d (%.3g triangles/s)\n", s.bvhBuildSeconds,
+                    s.bvhBuildCpuSeconds, s.bvhBuildThreads,
                     s.bvhBuildSeconds > 0 ? s.triangles / s.bvhBuildSeconds : 0.0);
         std::printf(
             "gpu memory       %zu bytes (%.1f per triangle; positions + BVH %.1f per triangle; "
             "textures %zu bytes)\n",
             s.gpuBytes, double(s.gpuBytes) / s.triangles, double(s.gpuGeometryBytes) / s.triangles,
             s.gpuTextureBytes);
+        std::printf("image buffers    %zu bytes (%.0f per pixel: accumulation%s)\n", renderer.imageBytes(),
+                    double(renderer.imageBytes()) / (double(settings.width) * settings.height),
+                    settings.integrator == Integrator::Bdpt ? " and bdpt's light image" : "");
         std::printf("first frame      %.3f s after start (load, build, upload, shader compile, first pass)\n",
                     firstFrameSeconds);
         std::printf("samples          %d per pixel, %.0f paths, %.0f rays (%.2f rays per path)\n", done,

@@ -34,6 +34,8 @@ class LightSplat {
     static ShaderDefines defines();
     int width() const { return width_; }
     int height() const { return height_; }
+    // GPU memory of the records (kRecords RGBA32F layers) and the light image (2 RGBA32F attachments).
+    size_t bytes() const { return size_t(width_) * size_t(height_) * (kRecords + 2) * 16; }
     void clear();
     // Traces one light path from each pixel of `launch` with `tracer` (light_trace.frag.glsl, bound and
     // with every uniform set but uLightSample) for sample index `sampleIndex`, and adds the records that

@@ -18,8 +18,8 @@ struct SampleRange {
 };
 
 struct PartialRender {
-    Image mean;                        // per pixel, the mean of its samples
-    std::vector<SampleRange> ranges;   // disjoint, sorted
+    Image mean;                       // per pixel, the mean of its samples
+    std::vector<SampleRange> ranges;  // disjoint, sorted
     std::string fingerprint;
     uint64_t samples() const;
 };

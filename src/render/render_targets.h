@@ -39,6 +39,8 @@ class RenderTargets {
 
     int width() const { return width_; }
     int height() const { return height_; }
+    // GPU memory of both framebuffers' attachments: 2 x kAttachments RGBA32F texels per pixel.
+    size_t bytes() const { return size_t(width_) * size_t(height_) * 2 * kAttachments * 16; }
     PixelRegion full() const { return {0, 0, width_, height_}; }
     void clear();
     // Binds the current textures to units firstUnit .. firstUnit + kAttachments - 1 and the other

@@ -120,6 +120,10 @@ void Renderer::compilePrograms(const RenderSettings& settings) {
 
 // The light image (and its splat program) when a light-tracing program is in use, at the image's size;
 // `rebuild` recompiles the splat program even if the size is unchanged.
+size_t Renderer::imageBytes() const {
+    return (targets_ ? targets_->bytes() : 0) + (lightSplat_ ? lightSplat_->bytes() : 0);
+}
+
 void Renderer::updateLightSplat(bool rebuild) {
     if (!lightProgram_ && !splitLightProgram_) {
         lightSplat_.reset();

@@ -64,6 +64,9 @@ class Renderer {
     // after configure().
     GLuint accumulationTexture(Attachment a) const { return targets_->texture(a); }
     const SceneStats& stats() const { return stats_; }
+    // GPU memory of the image buffers the current settings use: the accumulation, and bdpt's light
+    // image when the integrator needs it. Scene data is in stats().gpuBytes.
+    size_t imageBytes() const;
     const RenderSettings& settings() const { return settings_; }
 
   private:

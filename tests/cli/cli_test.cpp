@@ -66,6 +66,19 @@ TEST_F(Cli, StatsReportTheSceneAndTheBvh) {
         EXPECT_NE(r.output.find(field), std::string::npos) << field << " in " << r.output;
 }
 
+TEST_F(Cli, StatsCountTheImageBuffersOfTheIntegrator) {
+    // 8x8 pixels: the accumulation's 2 x 5 RGBA32F attachments (160 bytes per pixel), and for bdpt also
+    // its light image (5 record layers and 2 attachments, 112 bytes per pixel).
+    CliRun nee = fragpath("render --size 8x8 --spp 1 --stats -o " + path("n.png"));
+    ASSERT_EQ(nee.exitCode, 0) << nee.output;
+    EXPECT_NE(nee.output.find("image buffers    10240 bytes (160 per pixel"), std::string::npos)
+        << nee.output;
+    CliRun bdpt = fragpath("render --size 8x8 --spp 1 --integrator bdpt --stats -o " + path("b.png"));
+    ASSERT_EQ(bdpt.exitCode, 0) << bdpt.output;
+    EXPECT_NE(bdpt.output.find("image buffers    17408 bytes (272 per pixel"), std::string::npos)
+        << bdpt.output;
+}
+
 TEST_F(Cli, CameraFlagsOverrideTheScene) {
     ASSERT_EQ(fragpath("render --size 8x8 --spp 1 -o " + path("a.pfm")).exitCode, 0);
     CliRun r = fragpath("render --size 8x8 --spp 1 --eye 278,273,-800 --target 278,273,0 --fov 10 -o " +
