@@ -13,13 +13,13 @@ namespace fp {
 
 struct PackedScene {
     std::vector<glm::vec4> triangles, normals, nodeBounds, materials, lights;
-    std::vector<glm::uvec2> nodeLinks;
+    std::vector<glm::uvec4> nodeLinks;
     // Empty unless some material has a texture (hasTextures()).
     std::vector<glm::vec2> texcoords;
     std::vector<uint8_t> textureTexels;  // 4 bytes per texel
     std::vector<glm::ivec4> textureTable;
     uint32_t triangleCount = 0, nodeCount = 0, lightCount = 0;
-    uint32_t bvhDepth = 0;         // deepest interior node (root = 0): the traversal stack must hold it
+    uint32_t bvhDepth = 0;         // deepest (wide) node, root = 0: the traversal stack grows with it
     float totalLightPower = 0.0f;  // sum over emitters of luminance(Ke) * area
 
     bool hasTextures() const { return !textureTable.empty(); }
