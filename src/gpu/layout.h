@@ -29,7 +29,7 @@
 //                                            binary nodes. With bvhOptions() below, leaves hold about 4
 //                                            triangles and there is about one node per 9 to 10
 //                                            triangles, so positions + BVH come to about 48 + 12 = 60
-//                                            bytes per triangle (BENCHMARKS.md).
+//                                            bytes per triangle (57.8-61.0 on the suite; BENCHMARKS.md).
 //  materials     RGBA32F    5 per material   (Kd.rgb, type) (Ke.rgb, roughness) (Ks.rgb, ior) (Tf.rgb, B)
 //                                            (diffuse texture, 0, 0, 0)
 //                                            B: Cauchy coefficient in nm^2 of a dispersive glass, else 0
