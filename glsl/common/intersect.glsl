@@ -34,27 +34,30 @@ bool intersectTriangle(Ray ray, vec3 v0, vec3 e1, vec3 e2, float tMax, out float
     return uv.x >= 0.0 && uv.y >= 0.0 && uv.x + uv.y <= 1.0 && t > 0.0 && t < tMax;
 }
 
-// Slab test (Kay & Kajiya 1986): entry distance, or INF when the box is missed within (0, tMax).
-// The exit distance is widened by a few ulps (Ize 2013, "Robust BVH Ray Traversal") so that rounding
-// never culls a box the ray grazes.
-float boxEntry(vec3 origin, vec3 invDir, vec3 lo, vec3 hi, float tMax) {
-    vec3 t0 = (lo - origin) * invDir, t1 = (hi - origin) * invDir;
-    vec3 tNear = min(t0, t1), tFar = max(t0, t1);
-    float enter = max(max(tNear.x, tNear.y), max(tNear.z, 0.0));
-    float exit = min(min(min(tFar.x, tFar.y), tFar.z) * 1.0000004, tMax);
-    return enter <= exit ? enter : INF;
+// Slab test (Kay & Kajiya 1986) of the four children of a wide node at once, channel i for child i:
+// entry distances, INF where a box is missed within (0, tMax). The exit distance is widened by a few
+// ulps (Ize 2013, "Robust BVH Ray Traversal") so that rounding never culls a box the ray grazes.
+vec4 boxEntries(vec3 origin, vec3 invDir, vec4 loX, vec4 hiX, vec4 loY, vec4 hiY, vec4 loZ, vec4 hiZ, float tMax) {
+    vec4 x0 = (loX - origin.x) * invDir.x, x1 = (hiX - origin.x) * invDir.x;
+    vec4 y0 = (loY - origin.y) * invDir.y, y1 = (hiY - origin.y) * invDir.y;
+    vec4 z0 = (loZ - origin.z) * invDir.z, z1 = (hiZ - origin.z) * invDir.z;
+    vec4 enter = max(max(min(x0, x1), min(y0, y1)), max(min(z0, z1), vec4(0.0)));
+    vec4 exit = min(min(min(max(x0, x1), max(y0, y1)), max(z0, z1)) * 1.0000004, vec4(tMax));
+    return mix(vec4(INF), enter, lessThanEqual(enter, exit));
 }
 
-// Tests the triangles of two leaf ranges, [firstA, firstA + countA) then [firstB, firstB + countB), in
-// one loop, shrinking hit.t; returns true as soon as one is hit when anyHit is set. One loop for both
-// children of a node, not one call per child: llvmpipe runs every inlined copy of this loop whenever
-// any pixel of its SIMD group needs it, and the second copy cost 15 % of a Cornell box render
+// Tests the triangles of up to four leaf ranges, [first.i, first.i + count.i) for i = x, y, z, w, in
+// one loop, shrinking hit.t; returns true as soon as one is hit when anyHit is set. One loop for all the
+// leaf children of a node, not one per child: llvmpipe runs every inlined copy of this loop whenever
+// any pixel of its SIMD group needs it, and a second copy cost 15 % of a Cornell box render
 // (BENCHMARKS.md, optimisation log).
-bool intersectLeaves(Ray ray, uint firstA, uint countA, uint firstB, uint countB, bool anyHit, inout Hit hit) {
-    uint count = countA + countB;
-    gTrianglesTested += int(count);
-    for (uint k = 0u; k < count; ++k) {
-        uint i = k < countA ? firstA + k : firstB + (k - countA);
+bool intersectLeaves(Ray ray, uvec4 first, uvec4 count, bool anyHit, inout Hit hit) {
+    // Where each range starts in the loop's count, and what turns the loop index into a triangle index.
+    uint end0 = count.x, end1 = end0 + count.y, end2 = end1 + count.z, total = end2 + count.w;
+    uvec4 offset = first - uvec4(0u, end0, end1, end2);  // modulo 2^32, as uint arithmetic is
+    gTrianglesTested += int(total);
+    for (uint k = 0u; k < total; ++k) {
+        uint i = k + (k < end0 ? offset.x : k < end1 ? offset.y : k < end2 ? offset.z : offset.w);
         TriangleData tri = fetchTriangle(int(i));
         float t;
         vec2 uv;
@@ -66,8 +69,21 @@ bool intersectLeaves(Ray ray, uint firstA, uint countA, uint firstB, uint countB
     return false;
 }
 
-// Stack traversal with both child boxes stored in the parent: one node fetch tests two boxes, leaves
-// are intersected at once, and the nearer interior child is visited first.
+// Orders two (distance, link) pairs by distance: one compare-exchange of a sorting network.
+void orderPair(inout float ta, inout uint la, inout float tb, inout uint lb) {
+    bool swap = tb < ta;
+    float t = ta;
+    uint l = la;
+    ta = swap ? tb : ta;
+    la = swap ? lb : la;
+    tb = swap ? t : tb;
+    lb = swap ? l : lb;
+}
+
+// Stack traversal of the 4-wide BVH (Wald, Benthin & Boulos 2008), the children's boxes stored in the
+// parent: one node visit tests four boxes, the leaf children hit are intersected at once, and the
+// interior children hit are visited nearest first (a five-comparison sorting network, no branches:
+// on llvmpipe every branch costs the whole SIMD group).
 bool traverse(Ray ray, float tMax, bool anyHit, out Hit hit) {
     hit = Hit(tMax, -1, vec2(0.0));
     gRayCount += 1.0;
@@ -82,29 +98,34 @@ bool traverse(Ray ray, float tMax, bool anyHit, out Hit hit) {
     uint node = 0u;
     while (true) {
         ++gNodesVisited;
-        vec4 b0 = texelFetch(uNodeBounds, int(node) * NODE_BOUNDS_TEXELS);
-        vec4 b1 = texelFetch(uNodeBounds, int(node) * NODE_BOUNDS_TEXELS + 1);
-        vec4 b2 = texelFetch(uNodeBounds, int(node) * NODE_BOUNDS_TEXELS + 2);
-        uvec2 link = texelFetch(uNodeLinks, int(node)).xy;  // child links, encoded as layout.h says
-        float tLeft = boxEntry(ray.origin, invDir, b0.xyz, vec3(b0.w, b1.xy), hit.t);
-        float tRight = boxEntry(ray.origin, invDir, vec3(b1.zw, b2.x), b2.yzw, hit.t);
-        bool leftLeaf = (link.x & LEAF_BIT) != 0u, rightLeaf = (link.y & LEAF_BIT) != 0u;
-        // Leaf children are tested at once, left then right; only interior children remain.
-        uint leftCount = tLeft < INF && leftLeaf ? ((link.x >> LEAF_COUNT_SHIFT) & 15u) + 1u : 0u;
-        uint rightCount = tRight < INF && rightLeaf ? ((link.y >> LEAF_COUNT_SHIFT) & 15u) + 1u : 0u;
-        if (leftCount + rightCount > 0u &&
-            intersectLeaves(ray, link.x & LEAF_FIRST_MASK, leftCount, link.y & LEAF_FIRST_MASK, rightCount, anyHit, hit))
-            return true;
-        if (leftLeaf) tLeft = INF;
-        if (rightLeaf) tRight = INF;
-        if (tLeft < INF && tRight < INF) {
-            bool leftFirst = tLeft <= tRight;
-            stack[size++] = leftFirst ? link.y : link.x;
-            node = leftFirst ? link.x : link.y;
-        } else if (tLeft < INF) {
-            node = link.x;
-        } else if (tRight < INF) {
-            node = link.y;
+        int base = int(node) * NODE_BOUNDS_TEXELS;
+        vec4 t = boxEntries(ray.origin, invDir, texelFetch(uNodeBounds, base), texelFetch(uNodeBounds, base + 1),
+                            texelFetch(uNodeBounds, base + 2), texelFetch(uNodeBounds, base + 3),
+                            texelFetch(uNodeBounds, base + 4), texelFetch(uNodeBounds, base + 5), hit.t);
+        uvec4 link = texelFetch(uNodeLinks, int(node));  // child links, encoded as layout.h says
+        bvec4 leaf = notEqual(link & LEAF_BIT, uvec4(0u));
+        // The leaf children that were hit: their triangle counts, zero for the others.
+        uvec4 count = (((link >> LEAF_COUNT_SHIFT) & 15u) + 1u) * uvec4(leaf) * uvec4(lessThan(t, vec4(INF)));
+        if (count != uvec4(0u) && intersectLeaves(ray, link & LEAF_FIRST_MASK, count, anyHit, hit)) return true;
+        // Only interior children remain, nearest first; those beyond a hit the leaves found are culled.
+        t = mix(t, vec4(INF), bvec4(uvec4(leaf) | uvec4(greaterThan(t, vec4(hit.t)))));
+        float t0 = t.x, t1 = t.y, t2 = t.z, t3 = t.w;
+        uint l0 = link.x, l1 = link.y, l2 = link.z, l3 = link.w;
+        orderPair(t0, l0, t1, l1);
+        orderPair(t2, l2, t3, l3);
+        orderPair(t0, l0, t2, l2);
+        orderPair(t1, l1, t3, l3);
+        orderPair(t1, l1, t2, l2);
+        // The farther ones wait on the stack, farthest deepest; the stores need no branch, only the
+        // size depends on what was hit.
+        stack[size] = l3;
+        size += t3 < INF ? 1 : 0;
+        stack[size] = l2;
+        size += t2 < INF ? 1 : 0;
+        stack[size] = l1;
+        size += t1 < INF ? 1 : 0;
+        if (t0 < INF) {
+            node = l0;
         } else {
             if (size == 0) break;
             node = stack[--size];

@@ -52,6 +52,8 @@ const char* kBenchUsage =
     "  --bvh-threads N       threads that build the BVH (default: every CPU); the tree is the same\n"
     "  --samples-per-pass N  samples per pixel per draw in the timed runs, 1 to 16 (default 8); the\n"
     "                        warm-up, whose first pass is the first frame, draws 1\n"
+    "  --shader-dir DIR      read the shaders from DIR instead of the ones built in (to compare shader\n"
+    "                        variants with one binary)\n"
     "  --json FILE           also write every figure to FILE as JSON (with --suite: one object per scene)\n"
     "  --suite               measure the benchmark suite instead of one scene\n"
     "  --max-triangles N     with --suite: skip the scenes with more than N triangles\n"
@@ -133,10 +135,11 @@ int benchCommand(const std::vector<std::string>& argv) {
     // Time to first frame counts from here: argument parsing is negligible, and everything a user waits
     // for before the first pixel (context, load, BVH, upload, compile, JIT, first pass) comes after.
     auto start = bench::Clock::now();
-    Args args(argv,
-              {"--size", "--spp", "--runs", "--max-depth", "--integrator", "--json", "--max-triangles",
-               "--scenes", "--bvh-threads", "--samples-per-pass", "--study", "--budget", "--reference-spp"},
-              {"-h", "--help", "--suite", "--with-bunny", "--native"});
+    Args args(
+        argv,
+        {"--size", "--spp", "--runs", "--max-depth", "--integrator", "--json", "--max-triangles", "--scenes",
+         "--bvh-threads", "--samples-per-pass", "--shader-dir", "--study", "--budget", "--reference-spp"},
+        {"-h", "--help", "--suite", "--with-bunny", "--native"});
     if (args.has("-h") || args.has("--help")) {
         std::fputs(kBenchUsage, stdout);
         return 0;
@@ -167,6 +170,7 @@ int benchCommand(const std::vector<std::string>& argv) {
     settings.render.maxDepth = args.integer("--max-depth", 0, 1000).value_or(5);
     settings.render.integrator = parseIntegrator(args.text("--integrator").value_or("nee"));
     settings.bvh.threadCount = args.integer("--bvh-threads", 1, 1024).value_or(0);
+    settings.shaderDir = args.text("--shader-dir").value_or("");
     settings.render.samplesPerPass =
         args.integer("--samples-per-pass", 1, RenderSettings::kMaxSamplesPerPass).value_or(8);
     std::optional<std::string> jsonPath = args.text("--json");

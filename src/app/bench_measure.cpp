@@ -135,7 +135,7 @@ SceneMeasurement measureScene(const std::function<Scene()>& load, const BenchSet
         m.source = scene.source;
         m.loadSeconds = secondsSince(m.loadStart);
         auto stage = Clock::now();
-        renderer.emplace(scene, ShaderLibrary(), settings.bvh);
+        renderer.emplace(scene, ShaderLibrary(settings.shaderDir), settings.bvh);
         m.rendererSeconds = secondsSince(stage);  // BVH build, packing and upload
     }
     auto stage = Clock::now();

@@ -65,6 +65,9 @@ struct BenchSettings {
     int spp = 8;   // samples per pixel in each run
     int runs = 5;  // timed runs after the warm-up
     BvhBuildOptions bvh = layout::bvhOptions();
+    // Read the shaders from this directory instead of the ones built in (empty: built in), so that
+    // shader variants can be compared run for run with one binary.
+    std::string shaderDir;
 };
 
 struct SceneMeasurement {

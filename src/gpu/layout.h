@@ -14,17 +14,22 @@
 //                                            normals, rendered the same image 10 % slower on llvmpipe:
 //                                            BENCHMARKS.md, optimisation log.)
 //  normals       RGBA32F    3 per triangle   (n0.xyz, 0) (n1.xyz, 0) (n2.xyz, 0)  unit shading normals
-//  nodeBounds    RGBA32F    3 per node       both children's boxes, packed 12 floats:
-//                                            (L.lo.xyz, L.hi.x) (L.hi.yz, R.lo.xy) (R.lo.z, R.hi.xyz)
-//  nodeLinks     RG32UI     1 per node       (left child, right child), each one uint (encodeChild):
+//  nodeBounds    RGBA32F    6 per node       the 4-wide BVH (bvh/wide_bvh.h): its four children's boxes,
+//                                            one bound per texel, child i in channel i:
+//                                            (lo.x) (hi.x) (lo.y) (hi.y) (lo.z) (hi.z)
+//                                            so that one vec4 operation tests a bound of all four.
+//                                            An empty child slot is the point kEmptyChildCoordinate on
+//                                            every axis: no ray reaches it before INF (1e30).
+//  nodeLinks     RGBA32UI   1 per node       the four children's links, each one uint (encodeChild):
 //                                            bit 31 set: a leaf of triangles [first, first + count) with
 //                                            first in bits 0-26 and count - 1 in bits 27-30;
-//                                            bit 31 clear: the interior node of that index. Node 0 is
-//                                            the root.
-//                                            A node is 56 bytes. With bvhOptions() below, leaves hold
-//                                            about 4 triangles and there is about one node per 4 to 5
+//                                            bit 31 clear: the interior node of that index; 0 for an
+//                                            empty slot (node 0 is the root, never a child).
+//                                            A node is 112 bytes and there are about half as many as
+//                                            binary nodes. With bvhOptions() below, leaves hold about 4
+//                                            triangles and there is about one node per 9 to 10
 //                                            triangles, so positions + BVH come to about 48 + 12 = 60
-//                                            bytes per triangle (57-60 on the suite; BENCHMARKS.md).
+//                                            bytes per triangle (57.8-61.0 on the suite; BENCHMARKS.md).
 //  materials     RGBA32F    5 per material   (Kd.rgb, type) (Ke.rgb, roughness) (Ks.rgb, ior) (Tf.rgb, B)
 //                                            (diffuse texture, 0, 0, 0)
 //                                            B: Cauchy coefficient in nm^2 of a dispersive glass, else 0
@@ -58,8 +63,11 @@ namespace fp::layout {
 
 constexpr int kTriangleTexels = 3;
 constexpr int kNormalTexels = 3;
-constexpr int kNodeBoundsTexels = 3;
+constexpr int kNodeBoundsTexels = 6;
 constexpr int kNodeLinkTexels = 1;
+
+// Every coordinate of an empty child slot's box (see nodeBounds above).
+constexpr float kEmptyChildCoordinate = 1e30f;
 
 // A child link of nodeLinks (see above).
 constexpr uint32_t kLeafBit = 1u << 31;

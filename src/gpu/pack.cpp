@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <string>
 
+#include "bvh/wide_bvh.h"
 #include "core/error.h"
 #include "gpu/layout.h"
 #include "scene/spectrum.h"
@@ -16,7 +17,7 @@ float luminance(const glm::vec3& rgb) {
 size_t PackedScene::bytes() const {
     return sizeof(glm::vec4) *
                (triangles.size() + normals.size() + nodeBounds.size() + materials.size() + lights.size()) +
-           sizeof(glm::uvec2) * nodeLinks.size() + textureBytes();
+           sizeof(glm::uvec4) * nodeLinks.size() + textureBytes();
 }
 
 size_t PackedScene::textureBytes() const {
@@ -25,48 +26,25 @@ size_t PackedScene::textureBytes() const {
 }
 
 size_t PackedScene::geometryBytes() const {
-    return sizeof(glm::vec4) * (triangles.size() + nodeBounds.size()) + sizeof(glm::uvec2) * nodeLinks.size();
+    return sizeof(glm::vec4) * (triangles.size() + nodeBounds.size()) + sizeof(glm::uvec4) * nodeLinks.size();
 }
 
 namespace {
 
-// One child as the parent stores it: its box and its link (see gpu/layout.h).
-struct ChildRef {
-    Aabb bounds;
-    uint32_t first, count;
-};
-
-struct NodePacker {
-    const Bvh& bvh;
-    PackedScene& out;
-
-    // Appends the interior node `cpuIndex` (and, depth first, its interior descendants); returns its index.
-    uint32_t packInterior(uint32_t cpuIndex, uint32_t depth) {
-        out.bvhDepth = std::max(out.bvhDepth, depth);
-        const BvhNode& node = bvh.nodes[cpuIndex];
-        uint32_t index = uint32_t(out.nodeLinks.size());
-        out.nodeLinks.emplace_back();
-        out.nodeBounds.resize(out.nodeBounds.size() + layout::kNodeBoundsTexels);
-        ChildRef left = child(cpuIndex + 1, depth), right = child(node.first, depth);
-        store(index, left, right);
-        return index;
-    }
-
-    ChildRef child(uint32_t cpuIndex, uint32_t parentDepth) {
-        const BvhNode& node = bvh.nodes[cpuIndex];
-        if (node.isLeaf()) return {node.bounds, node.first, node.count};
-        return {node.bounds, packInterior(cpuIndex, parentDepth + 1), 0};
-    }
-
-    void store(uint32_t index, const ChildRef& l, const ChildRef& r) {
-        glm::vec4* b = &out.nodeBounds[size_t(index) * layout::kNodeBoundsTexels];
-        b[0] = {l.bounds.lo.x, l.bounds.lo.y, l.bounds.lo.z, l.bounds.hi.x};
-        b[1] = {l.bounds.hi.y, l.bounds.hi.z, r.bounds.lo.x, r.bounds.lo.y};
-        b[2] = {r.bounds.lo.z, r.bounds.hi.x, r.bounds.hi.y, r.bounds.hi.z};
-        out.nodeLinks[index] = {layout::encodeChild({l.first, l.count}),
-                                layout::encodeChild({r.first, r.count})};
-    }
-};
+// Stores wide node `index` as gpu/layout.h says: the children's boxes one axis bound per texel, and
+// their links; empty slots get the unreachable box and link 0.
+void storeNode(const WideBvhNode& node, uint32_t index, PackedScene& out) {
+    glm::vec4* b = &out.nodeBounds[size_t(index) * layout::kNodeBoundsTexels];
+    for (int axis = 0; axis < 3; ++axis)
+        for (int i = 0; i < kWideBvhWidth; ++i) {
+            bool used = i < node.childCount;
+            b[2 * axis][i] = used ? node.bounds[i].lo[axis] : layout::kEmptyChildCoordinate;
+            b[2 * axis + 1][i] = used ? node.bounds[i].hi[axis] : layout::kEmptyChildCoordinate;
+        }
+    for (int i = 0; i < kWideBvhWidth; ++i)
+        out.nodeLinks[index][i] =
+            i < node.childCount ? layout::encodeChild({node.first[i], node.count[i]}) : 0u;
+}
 
 // Texture coordinates in leaf order, and every texture's texels with its table entry (gpu/layout.h).
 void packTextures(const Scene& scene, const Bvh& bvh, PackedScene* out) {
@@ -144,19 +122,12 @@ PackedScene packScene(const Scene& scene, const Bvh& bvh) {
     }
     if (textured) packTextures(scene, bvh, &out);
 
-    NodePacker packer{bvh, out};
-    const BvhNode& root = bvh.nodes[0];
-    if (root.isLeaf()) {
-        // The layout has no leaf-only tree: a root "interior" node whose two children are the one leaf
-        // (testing a handful of triangles twice costs nothing).
-        out.nodeLinks.emplace_back();
-        out.nodeBounds.resize(layout::kNodeBoundsTexels);
-        ChildRef leaf{root.bounds, root.first, root.count};
-        packer.store(0, leaf, leaf);
-    } else {
-        packer.packInterior(0, 0);
-    }
-    out.nodeCount = uint32_t(out.nodeLinks.size());
+    WideBvh wide = collapseToWide(bvh);
+    out.nodeCount = uint32_t(wide.nodes.size());
+    out.bvhDepth = wide.depth;
+    out.nodeBounds.resize(size_t(out.nodeCount) * layout::kNodeBoundsTexels);
+    out.nodeLinks.resize(out.nodeCount);
+    for (uint32_t i = 0; i < out.nodeCount; ++i) storeNode(wide.nodes[i], i, out);
     return out;
 }
 

@@ -16,13 +16,13 @@ struct PackedScene {
     // The per-triangle and per-node arrays are large for large scenes: see core/huge_page_allocator.h.
     HugePageVector<glm::vec4> triangles, normals, nodeBounds;
     std::vector<glm::vec4> materials, lights;
-    HugePageVector<glm::uvec2> nodeLinks;
+    HugePageVector<glm::uvec4> nodeLinks;
     // Empty unless some material has a texture (hasTextures()).
     HugePageVector<glm::vec2> texcoords;
     HugePageVector<uint8_t> textureTexels;  // 4 bytes per texel
     std::vector<glm::ivec4> textureTable;
     uint32_t triangleCount = 0, nodeCount = 0, lightCount = 0;
-    uint32_t bvhDepth = 0;         // deepest interior node (root = 0): the traversal stack must hold it
+    uint32_t bvhDepth = 0;         // deepest (wide) node, root = 0: the traversal stack grows with it
     float totalLightPower = 0.0f;  // sum over emitters of luminance(Ke) * area
 
     bool hasTextures() const { return !textureTable.empty(); }

@@ -37,7 +37,7 @@ SceneTextures::SceneTextures(const PackedScene& s, size_t maxTexels) {
         spec("triangles", s.triangles, GL_RGBA32F, layout::kTrianglesUnit),
         spec("normals", s.normals, GL_RGBA32F, layout::kNormalsUnit),
         spec("BVH node bounds", s.nodeBounds, GL_RGBA32F, layout::kNodeBoundsUnit),
-        spec("BVH node links", s.nodeLinks, GL_RG32UI, layout::kNodeLinksUnit),
+        spec("BVH node links", s.nodeLinks, GL_RGBA32UI, layout::kNodeLinksUnit),
         spec("materials", s.materials, GL_RGBA32F, layout::kMaterialsUnit),
         spec("lights", s.lights, GL_RGBA32F, layout::kLightsUnit)};
     if (s.hasTextures()) {

@@ -4,7 +4,9 @@
 #include <string>
 
 #include "bvh/bvh.h"
+#include "bvh/wide_bvh.h"
 #include "core/error.h"
+#include "gpu/layout.h"
 
 namespace fp::native {
 
@@ -13,32 +15,6 @@ namespace {
 float luminance(const glm::vec3& rgb) {
     return glm::dot(rgb, glm::vec3(0.2126f, 0.7152f, 0.0722f));
 }
-
-// Depth first like gpu/pack.cpp's NodePacker, so node indices match the GPU's.
-struct NodeFlattener {
-    const Bvh& bvh;
-    std::vector<Node>& out;
-    uint32_t maxDepth = 0;
-
-    uint32_t interior(uint32_t cpuIndex, uint32_t depth) {
-        maxDepth = std::max(maxDepth, depth);
-        uint32_t index = uint32_t(out.size());
-        out.emplace_back();
-        const BvhNode& node = bvh.nodes[cpuIndex];
-        setChild(index, 0, cpuIndex + 1, depth);
-        setChild(index, 1, node.first, depth);
-        return index;
-    }
-
-    void setChild(uint32_t index, int side, uint32_t cpuIndex, uint32_t depth) {
-        const BvhNode& c = bvh.nodes[cpuIndex];
-        uint32_t first = c.isLeaf() ? c.first : interior(cpuIndex, depth + 1);
-        Node& n = out[index];  // after interior(), which may reallocate
-        n.child[side] = c.bounds;
-        n.first[side] = first;
-        n.count[side] = c.count;
-    }
-};
 
 }  // namespace
 
@@ -81,16 +57,25 @@ Scene buildScene(const fp::Scene& scene, const BvhBuildOptions& options) {
     }
     if (!out.lights.empty()) out.lights.back().cdf = 1.0f;
 
-    NodeFlattener flatten{bvh, out.nodes};
-    if (bvh.nodes[0].isLeaf()) {
-        const BvhNode& root = bvh.nodes[0];
-        out.nodes.push_back({{root.bounds, root.bounds}, {root.first, root.first}, {root.count, root.count}});
-    } else {
-        flatten.interior(0, 0);
+    // The same wide tree, in the same order, as gpu/pack.cpp stores.
+    WideBvh wide = collapseToWide(bvh);
+    for (const WideBvhNode& w : wide.nodes) {
+        Node n{};
+        for (int axis = 0; axis < 3; ++axis)
+            for (int i = 0; i < kWideBvhWidth; ++i) {
+                bool used = i < w.childCount;
+                n.lo[axis][i] = used ? w.bounds[i].lo[axis] : layout::kEmptyChildCoordinate;
+                n.hi[axis][i] = used ? w.bounds[i].hi[axis] : layout::kEmptyChildCoordinate;
+            }
+        for (int i = 0; i < kWideBvhWidth; ++i) {
+            n.first[i] = i < w.childCount ? w.first[i] : 0;
+            n.count[i] = i < w.childCount ? w.count[i] : 0;
+        }
+        out.nodes.push_back(n);
     }
-    // The traversal stack holds at most one entry per level below the root.
-    if (flatten.maxDepth + 2 > kStackSize)
-        throw Error(scene.source + ": the BVH is " + std::to_string(flatten.maxDepth) +
+    // The traversal stack holds at most three entries per level above the deepest node.
+    if (3 * wide.depth + 1 > kStackSize)
+        throw Error(scene.source + ": the BVH is " + std::to_string(wide.depth) +
                     " levels deep, more than the native reference's stack holds");
 
     Aabb box = scene.bounds();

@@ -20,11 +20,14 @@ namespace fp::native {
 
 constexpr uint32_t kStackSize = 64;  // traversal stack entries
 
-// An interior node with both children's boxes, as in the GPU layout: one node decides both children.
+// A node of the 4-wide BVH (bvh/wide_bvh.h) with its four children's boxes, as in the GPU layout: one
+// bound of all four children per vector, so that the slab test of four boxes is a few vector operations
+// (what a native SIMD tracer does; Wald, Benthin & Boulos 2008). Empty slots are the unreachable box of
+// gpu/layout.h.
 struct Node {
-    Aabb child[2];
-    uint32_t first[2];  // count > 0: triangles [first, first + count); count == 0: interior node `first`
-    uint32_t count[2];
+    glm::vec4 lo[3], hi[3];  // lo[axis][i]: child i's lower bound on that axis
+    uint32_t first[4];       // count > 0: triangles [first, first + count); count == 0: interior node `first`
+    uint32_t count[4];
 };
 
 struct Tri {

@@ -23,13 +23,27 @@ bool intersectTriangle(const Ray& ray, const Tri& tri, float tMax, float& t, glm
     return t > 0.0f && t < tMax;
 }
 
-// Slab test, as boxEntry in intersect.glsl: entry distance, or kInf when missed within (0, tMax).
-float boxEntry(const glm::vec3& origin, const glm::vec3& invDir, const Aabb& box, float tMax) {
-    glm::vec3 t0 = (box.lo - origin) * invDir, t1 = (box.hi - origin) * invDir;
-    glm::vec3 tNear = glm::min(t0, t1), tFar = glm::max(t0, t1);
-    float enter = std::max(std::max(tNear.x, tNear.y), std::max(tNear.z, 0.0f));
-    float exit = std::min(std::min(std::min(tFar.x, tFar.y), tFar.z) * 1.0000004f, tMax);
-    return enter <= exit ? enter : kInf;
+// Slab test of a node's four children at once, as boxEntries in intersect.glsl: entry distances,
+// kInf where a box is missed within (0, tMax).
+glm::vec4 boxEntries(const glm::vec3& origin, const glm::vec3& invDir, const Node& n, float tMax) {
+    glm::vec4 enter(0.0f), exit(tMax);
+    glm::vec4 tFar(kInf * 4.0f);  // above any distance, so the first min takes the axis' value
+    for (int axis = 0; axis < 3; ++axis) {
+        glm::vec4 t0 = (n.lo[axis] - origin[axis]) * invDir[axis],
+                  t1 = (n.hi[axis] - origin[axis]) * invDir[axis];
+        enter = glm::max(enter, glm::min(t0, t1));
+        tFar = glm::min(tFar, glm::max(t0, t1));
+    }
+    exit = glm::min(tFar * 1.0000004f, exit);
+    return glm::mix(glm::vec4(kInf), enter, glm::lessThanEqual(enter, exit));
+}
+
+// One compare-exchange of intersect.glsl's sorting network.
+void orderPair(float& ta, uint32_t& la, float& tb, uint32_t& lb) {
+    if (tb < ta) {
+        std::swap(ta, tb);
+        std::swap(la, lb);
+    }
 }
 
 bool intersectLeaf(const Scene& scene, const Ray& ray, uint32_t first, uint32_t count, bool anyHit,
@@ -58,24 +72,27 @@ bool traverse(const Scene& scene, const Ray& ray, float tMax, bool anyHit, Hit& 
     uint32_t node = 0;
     for (;;) {
         const Node& n = scene.nodes[node];
-        float tLeft = boxEntry(ray.origin, invDir, n.child[0], hit.t);
-        float tRight = boxEntry(ray.origin, invDir, n.child[1], hit.t);
-        if (tLeft < kInf && n.count[0] > 0) {
-            if (intersectLeaf(scene, ray, n.first[0], n.count[0], anyHit, hit)) return true;
-            tLeft = kInf;
-        }
-        if (tRight < kInf && n.count[1] > 0) {
-            if (intersectLeaf(scene, ray, n.first[1], n.count[1], anyHit, hit)) return true;
-            tRight = kInf;
-        }
-        if (tLeft < kInf && tRight < kInf) {
-            bool leftFirst = tLeft <= tRight;
-            stack[size++] = leftFirst ? n.first[1] : n.first[0];
-            node = leftFirst ? n.first[0] : n.first[1];
-        } else if (tLeft < kInf) {
-            node = n.first[0];
-        } else if (tRight < kInf) {
-            node = n.first[1];
+        glm::vec4 t = boxEntries(ray.origin, invDir, n, hit.t);
+        // The leaf children hit, in child order, then the interior ones nearest first, as the shader.
+        for (int i = 0; i < 4; ++i)
+            if (n.count[i] > 0) {
+                if (t[i] < kInf && intersectLeaf(scene, ray, n.first[i], n.count[i], anyHit, hit))
+                    return true;
+                t[i] = kInf;
+            }
+        t = glm::mix(t, glm::vec4(kInf), glm::greaterThan(t, glm::vec4(hit.t)));
+        float t0 = t.x, t1 = t.y, t2 = t.z, t3 = t.w;
+        uint32_t l0 = n.first[0], l1 = n.first[1], l2 = n.first[2], l3 = n.first[3];
+        orderPair(t0, l0, t1, l1);
+        orderPair(t2, l2, t3, l3);
+        orderPair(t0, l0, t2, l2);
+        orderPair(t1, l1, t3, l3);
+        orderPair(t1, l1, t2, l2);
+        if (t3 < kInf) stack[size++] = l3;
+        if (t2 < kInf) stack[size++] = l2;
+        if (t1 < kInf) stack[size++] = l1;
+        if (t0 < kInf) {
+            node = l0;
         } else {
             if (size == 0) break;
             node = stack[--size];

@@ -1,6 +1,7 @@
 #pragma once
-// Ray queries of the native reference: the same traversal as glsl/common/intersect.glsl (both child
-// boxes in the parent, leaves tested at once, nearer interior child first, any-hit exit for shadows).
+// Ray queries of the native reference: the same traversal as glsl/common/intersect.glsl (4-wide nodes
+// with the children's boxes, leaves tested in child order, interior children nearest first, any-hit
+// exit for shadows).
 #include <cstdint>
 
 #include <glm/glm.hpp>

@@ -48,8 +48,9 @@ Renderer::Renderer(const Scene& scene, ShaderLibrary shaders, const BvhBuildOpti
     stats_.gpuGeometryBytes = packed.geometryBytes();
     stats_.gpuTextureBytes = packed.textureBytes();
     surfaceTextures_ = packed.hasTextures();
-    // The traversal stack holds at most one entry per level below the root.
-    stats_.stackSize = std::max<uint32_t>(32, packed.bvhDepth + 2);
+    // The traversal stack holds at most three entries (the hit siblings of the child it descends to)
+    // for each node on the way down from the root.
+    stats_.stackSize = std::max<uint32_t>(32, 3 * packed.bvhDepth + 1);
     lightCount_ = packed.lightCount;
 
     // A self-intersection offset relative to the scene's size and distance from the origin, where

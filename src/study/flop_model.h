@@ -18,9 +18,11 @@ struct FlopCount {
 };
 
 // The per-operation table, as it appears in the report.
-// - Visiting a BVH node (intersect.glsl traverse): two slab tests boxEntry, 26 each: two vec3
-//   (lo - origin) * invDir (12), per-axis min and max (6), entry max (3), exit min, ulp scale, min
-//   with tMax (4), enter <= exit (1). Control flow and the stack are integer work.
+// - Visiting a node of the 4-wide BVH (intersect.glsl traverse): four slab tests in boxEntries, 26
+//   each: per box two vec3 (lo - origin) * invDir (12), per-axis min and max (6), entry max (3), exit
+//   min, ulp scale, min with tMax (4), enter <= exit (1); then which leaf children were hit (4), the
+//   cull of children beyond the hit (4), the sorting network (5) and which children remain (4): 121.
+//   Control flow and the stack are integer work.
 // - One ray-triangle test (intersectTriangle, Moller-Trumbore): cross p (9), det (5), det == 0 (1),
 //   1 / det (1), s (3), u (6), cross q (9), v (6), t (6), the six comparisons and u + v (6): 52.
 // - Per ray (traverse set-up): |dir| < 1e-20 test (6) and 1 / dir (3): 9.
@@ -30,7 +32,7 @@ struct FlopCount {
 //   other BSDFs cost more, so this is a lower bound for glossy scenes); see shadingFlops().
 std::vector<FlopCount> operationTable();
 
-constexpr double kFlopsPerNode = 52.0;
+constexpr double kFlopsPerNode = 121.0;
 constexpr double kFlopsPerTriangleTest = 52.0;
 constexpr double kFlopsPerRay = 9.0;
 constexpr double kFlopsPerCameraRay = 27.0;
@@ -59,7 +61,7 @@ struct PathCounts {
     double nodesVisited = 0.0, trianglesTested = 0.0, surfacesShaded = 0.0, rays = 0.0;
 };
 
-// nodes * 52 + triangles * 52 + rays * 9 + camera ray 27 + surfaces * shadingFlops(integrator).
+// nodes * 121 + triangles * 52 + rays * 9 + camera ray 27 + surfaces * shadingFlops(integrator).
 double flopsPerPath(const PathCounts& counts, Integrator integrator);
 
 }  // namespace fp::study

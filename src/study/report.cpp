@@ -173,7 +173,7 @@ std::string reportMarkdown(const ReportInput& in) {
     for (const FlopCount& f : operationTable())
         md += format("| %s | %.0f | %s |\n", f.operation, f.flops, f.breakdown);
     md +=
-        "\nFLOPs per path = 52 x nodes + 52 x triangle tests + 9 x rays + 27 (camera ray) + surfaces x (the "
+        "\nFLOPs per path = 121 x nodes + 52 x triangle tests + 9 x rays + 27 (camera ray) + surfaces x (the "
         "integrator's surface interaction).\n\n";
 
     md +=
