@@ -1,8 +1,6 @@
 // The binned SAH of one node, step by step (see binned_sah_split.h).
 #include "bvh/binned_sah_split.h"
 
-#include "bvh/large_prim_planes.h"
-
 #include <algorithm>
 #include <cmath>
 
