@@ -1,11 +1,13 @@
 // The binned SAH builder on several threads. Nodes larger than a threshold are split level by level,
 // each level's binning and partitioning spread over the threads; the subtrees below the threshold are
 // then built whole, one thread job each, and spliced into the depth-first node array. Every node is
-// split by the same steps (binned_sah_split.h) on the same primitives in the same order, whichever
-// thread runs them, and partial bins and bounds are merged in index order (min and max keep the first
-// of equal values, so even the sign of a zero is as one pass would give it): the tree is the same,
-// bit for bit, for any thread count.
+// split by the same steps (binned_sah_split.h, and large_prim_planes.h for the exact planes at large
+// primitives, whose passes are chunked as binning is) on the same primitives in the same order,
+// whichever thread runs them, and partial bins and bounds are merged in index order (min and max keep
+// the first of equal values, so even the sign of a zero is as one pass would give it): the tree is the
+// same, bit for bit, for any thread count.
 #include <algorithm>
+#include <optional>
 #include <thread>
 
 #include "bvh/binned_sah_split.h"
@@ -16,11 +18,13 @@ namespace {
 
 using detail::Bin;
 using detail::BinnedSah;
+using detail::LargePrims;
 using detail::NodeMapping;
 using detail::parallelFor;
 using detail::PlaneChoice;
 using detail::PrimRef;
 using detail::RangeBounds;
+using detail::SlotMapping;
 
 // Subtrees of at most max(kMinSubtree, n / (threads * kJobsPerThread)) primitives are thread jobs: enough
 // jobs to balance the threads, few enough levels above them.
@@ -107,20 +111,35 @@ class ParallelBuild {
                              mappings[binnedNode[chunks[c].range]], &chunkBins[c * binsPerSet], binCount);
         });
         std::vector<PlaneChoice> choices(level.size());
+        std::vector<Range> searched;  // the nodes that may have large primitives (large_prim_planes.h)
+        std::vector<size_t> searchedNode;
         for (size_t c = 0; c < chunks.size(); ++c) {
             detail::mergeBins(&chunkBins[c * binsPerSet], sah_.bins(), binCount);  // in order
             if (c + 1 == chunks.size() || chunks[c + 1].range != chunks[c].range) {
                 const size_t i = binnedNode[chunks[c].range];
                 const TopNode& node = top_[level[i]];
-                choices[i] = sah_.choosePlane(mappings[i], node.count(), node.rb);
+                if (detail::searchLargePrims(node.count(), node.rb.bounds.area(), rootArea()) &&
+                    detail::mayHoldLargePrim(sah_.bins(), binCount, detail::largePrimMinArea(node.rb))) {
+                    searched.push_back(node.range);
+                    searchedNode.push_back(i);
+                }
+                choices[i] = sah_.cheapestPlane(mappings[i]);
             }
         }
+        std::vector<std::optional<SlotMapping>> slotMappings(level.size());
+        addExactPlanes(level, searched, searchedNode, choices, slotMappings);
+        for (size_t i = 0; i < level.size(); ++i)
+            choices[i] =
+                detail::applyLeafRule(choices[i], top_[level[i]].count(), top_[level[i]].rb, options_);
         std::vector<uint32_t> mids(level.size());
         parallelFor(threads_, level.size(), [&](size_t i) {
             const Range r = top_[level[i]].range;
-            mids[i] = choices[i].axis < 0
-                          ? r.begin
-                          : detail::partition(refs_.data(), r.begin, r.end, mappings[i], choices[i]);
+            if (choices[i].axis < 0)
+                mids[i] = r.begin;
+            else if (choices[i].exact)
+                mids[i] = detail::partitionSlots(refs_.data(), r.begin, r.end, *slotMappings[i], choices[i]);
+            else
+                mids[i] = detail::partition(refs_.data(), r.begin, r.end, mappings[i], choices[i]);
         });
 
         std::vector<uint32_t> next;
@@ -150,6 +169,48 @@ class ParallelBuild {
         return next;
     }
 
+    // BinnedSah::choose's search for exact planes at large primitives, for the nodes `searched` (level
+    // indices searchedNode) with their chunks on all threads, merged in order as the bins are.
+    void addExactPlanes(const std::vector<uint32_t>& level, const std::vector<Range>& searched,
+                        const std::vector<size_t>& searchedNode, std::vector<PlaneChoice>& choices,
+                        std::vector<std::optional<SlotMapping>>& slotMappings) {
+        std::vector<Chunk> chunks = chunksOf(searched);
+        std::vector<LargePrims> chunkLarge(chunks.size());
+        parallelFor(threads_, chunks.size(), [&](size_t c) {
+            const TopNode& node = top_[level[searchedNode[chunks[c].range]]];
+            detail::findLargePrims(refs_.data(), chunks[c].begin, chunks[c].end,
+                                   detail::largePrimMinArea(node.rb), chunkLarge[c]);
+        });
+        std::vector<LargePrims> large(searched.size());
+        for (size_t c = 0; c < chunks.size(); ++c) large[chunks[c].range].merge(chunkLarge[c]);  // in order
+
+        std::vector<Range> slotted;  // the nodes with large primitives
+        std::vector<size_t> slottedNode;
+        for (size_t s = 0; s < searched.size(); ++s) {
+            if (large[s].count == 0) continue;
+            slotMappings[searchedNode[s]].emplace(large[s]);
+            slotted.push_back(searched[s]);
+            slottedNode.push_back(searchedNode[s]);
+        }
+        chunks = chunksOf(slotted);
+        const size_t slotsPerSet = 3 * size_t(detail::kMaxSlots);
+        std::vector<Bin> chunkSlots(chunks.size() * slotsPerSet);
+        parallelFor(threads_, chunks.size(), [&](size_t c) {
+            detail::slotRange(refs_.data(), chunks[c].begin, chunks[c].end,
+                              *slotMappings[slottedNode[chunks[c].range]], &chunkSlots[c * slotsPerSet]);
+        });
+        std::vector<Bin> slots(slotsPerSet);
+        for (size_t c = 0; c < chunks.size(); ++c) {
+            detail::mergeBins(&chunkSlots[c * slotsPerSet], slots.data(), detail::kMaxSlots);  // in order
+            if (c + 1 == chunks.size() || chunks[c + 1].range != chunks[c].range) {
+                const size_t i = slottedNode[chunks[c].range];
+                choices[i] = detail::cheaperPlane(choices[i], detail::chooseSlotPlane(slots.data()));
+            }
+        }
+    }
+
+    float rootArea() const { return top_[0].rb.bounds.area(); }
+
     void buildSubtrees() {
         subtreeNodes_.resize(subtreeRoots_.size());
         std::vector<size_t> largestFirst(subtreeRoots_.size());
@@ -160,7 +221,7 @@ class ParallelBuild {
         parallelFor(threads_, largestFirst.size(), [&](size_t j) {
             const size_t s = largestFirst[j];
             const Range r = top_[subtreeRoots_[s]].range;
-            BinnedSah sah(options_);
+            BinnedSah sah(options_, rootArea());
             detail::buildSubtree(refs_.data(), r.begin, r.end, options_, sah, subtreeNodes_[s]);
         });
     }
@@ -211,7 +272,7 @@ class ParallelBuild {
     HugePageVector<PrimRef>& refs_;
     const BvhBuildOptions& options_;
     int threads_;
-    BinnedSah sah_{options_};             // for the top nodes: their bins are merged here
+    BinnedSah sah_{options_, 0.0f};       // for the top nodes: their bins are merged here
     std::vector<TopNode> top_;            // top_[0] is the root; children are pushed in pairs
     std::vector<uint32_t> subtreeRoots_;  // top node of each subtree job
     std::vector<HugePageVector<BvhNode>> subtreeNodes_;
@@ -234,7 +295,8 @@ Bvh buildBinnedSah(const AabbArray& primBounds, const BvhBuildOptions& options) 
     const uint32_t subtreeLimit = std::max(kMinSubtree, n / (uint32_t(threads) * kJobsPerThread));
     if (threads > 1 && n > subtreeLimit) return ParallelBuild(refs, options, threads).build(subtreeLimit);
 
-    BinnedSah sah(options);
+    // One more pass over the primitives, which the threaded build's root needs anyway.
+    BinnedSah sah(options, detail::rangeBounds(refs.data(), 0, n).bounds.area());
     detail::buildSubtree(refs.data(), 0, n, options, sah, bvh.nodes);
     bvh.primIndex = detail::primIndexOf(refs);
     return bvh;

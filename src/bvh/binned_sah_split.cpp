@@ -63,20 +63,21 @@ void mergeBins(const Bin* from, Bin* to, int binCount) {
     }
 }
 
-BinnedSah::BinnedSah(const BvhBuildOptions& options)
+BinnedSah::BinnedSah(const BvhBuildOptions& options, float rootArea)
     : options_(options),
+      rootArea_(rootArea),
       binCount_(options.binCount),
       bins_(3 * size_t(binCount_)),
       used_(binCount_),
       rightArea_(binCount_),
-      rightCount_(binCount_) {}
+      rightCount_(binCount_),
+      slots_(3 * size_t(kMaxSlots)) {}
 
-PlaneChoice BinnedSah::choosePlane(const NodeMapping& mapping, uint32_t count, const RangeBounds& rb) {
+PlaneChoice BinnedSah::cheapestPlane(const NodeMapping& mapping) {
     // A plane between bins p - 1 and p splits them into [0, p) and [p, binCount). Its SAH cost is
     // traversalCost + intersectCost * (A_L N_L + A_R N_R) / A; only the bracket is compared here.
     // Only planes right after an occupied bin are evaluated: the others repeat the split of the
     // plane before them, and on equal costs the first plane (lowest axis, then lowest p) wins.
-    float bestCost = std::numeric_limits<float>::infinity();
     PlaneChoice best;
     for (int axis = 0; axis < 3; ++axis) {
         Bin* bins = &bins_[size_t(axis) * binCount_];
@@ -102,17 +103,33 @@ PlaneChoice BinnedSah::choosePlane(const NodeMapping& mapping, uint32_t count, c
                 acc.grow(bins[used_[i]].bounds);
                 n += bins[used_[i]].count;
                 const float cost = acc.area() * float(n) + rightArea_[i + 1] * float(rightCount_[i + 1]);
-                if (cost < bestCost) {
-                    bestCost = cost;
-                    best = {axis, used_[i] + 1};
-                }
+                if (cost < best.cost) best = {axis, used_[i] + 1, cost};
             }
         }
         for (int i = 0; i < used; ++i) bins[used_[i]] = Bin{};
     }
-    // No axis: only when every cost overflowed to inf.
-    if (best.axis >= 0 && preferLeaf(bestCost, count, rb, options_)) return {};
-    return best;
+    return best;  // no axis: only when every cost overflowed to inf
+}
+
+// The binned plane, or the exact plane of a large primitive when that is strictly cheaper; then the leaf
+// rule. The steps and their order are those of the threaded top of the build (binned_sah.cpp).
+PlaneChoice BinnedSah::choose(const PrimRef* refs, uint32_t begin, uint32_t end, const NodeMapping& mapping,
+                              const RangeBounds& rb) {
+    const uint32_t count = end - begin;
+    const float minArea = largePrimMinArea(rb);
+    const bool search =
+        searchLargePrims(count, rb.bounds.area(), rootArea_) && mayHoldLargePrim(bins(), binCount_, minArea);
+    PlaneChoice choice = cheapestPlane(mapping);
+    if (search) {
+        LargePrims large;
+        findLargePrims(refs, begin, end, minArea, large);
+        if (large.count > 0) {
+            slotMapping_.emplace(large);
+            slotRange(refs, begin, end, *slotMapping_, slots_.data());
+            choice = cheaperPlane(choice, chooseSlotPlane(slots_.data()));
+        }
+    }
+    return applyLeafRule(choice, count, rb, options_);
 }
 
 uint32_t BinnedSah::operator()(PrimRef* refs, uint32_t begin, uint32_t end, const RangeBounds& rb) {
@@ -120,8 +137,9 @@ uint32_t BinnedSah::operator()(PrimRef* refs, uint32_t begin, uint32_t end, cons
     if (mapping.flat()) return begin;
     if (end - begin == 2) return splitPair(refs, begin, rb, mapping);
     binRange(refs, begin, end, mapping, bins(), binCount_);
-    const PlaneChoice choice = choosePlane(mapping, end - begin, rb);
+    const PlaneChoice choice = choose(refs, begin, end, mapping, rb);
     if (choice.axis < 0) return begin;
+    if (choice.exact) return partitionSlots(refs, begin, end, *slotMapping_, choice);
     return partition(refs, begin, end, mapping, choice);
 }
 

@@ -3,9 +3,12 @@
 // hierarchies"), in the steps that the binned builder runs on one thread for small nodes and spreads
 // over threads for large ones (internal to src/bvh): bin, choose a plane, partition.
 #include <cstdint>
+#include <limits>
+#include <optional>
 #include <vector>
 
 #include "bvh/build_common.h"
+#include "bvh/large_prim_planes.h"
 
 namespace fp::detail {
 
@@ -49,8 +52,23 @@ void mergeBins(const Bin* from, Bin* to, int binCount);
 
 struct PlaneChoice {
     int axis = -1;  // -1: make a leaf, if allowed
-    int plane = 0;  // the left side is bins [0, plane) along `axis`
+    int plane = 0;  // the left side is bins [0, plane) along `axis` (slots, if `exact`)
+    // The plane's A_L N_L + A_R N_R; infinite for none.
+    float cost = std::numeric_limits<float>::infinity();
+    bool exact = false;  // a plane at a large primitive's centroid (large_prim_planes.h), not between bins
 };
+
+// `exact` if it is strictly cheaper, else `binned`: on equal costs the binned plane wins, so nodes without
+// large primitives split as they did before exact planes were added.
+inline PlaneChoice cheaperPlane(const PlaneChoice& binned, const PlaneChoice& exact) {
+    return exact.cost < binned.cost ? exact : binned;
+}
+// The SAH leaf rule (preferLeaf) applied to a node's cheapest plane: axis -1 for a leaf.
+inline PlaneChoice applyLeafRule(const PlaneChoice& choice, uint32_t count, const RangeBounds& rb,
+                                 const BvhBuildOptions& options) {
+    if (choice.axis >= 0 && preferLeaf(choice.cost, count, rb, options)) return {};
+    return choice;
+}
 
 // In-place partition of refs[begin, end) into those binned left of the chosen plane and the rest;
 // returns the first index of the rest.
@@ -60,30 +78,36 @@ uint32_t partition(PrimRef* refs, uint32_t begin, uint32_t end, const NodeMappin
 // The binned SAH's state for one thread: bins and sweep scratch, reused from node to node.
 class BinnedSah {
   public:
-    explicit BinnedSah(const BvhBuildOptions& options);
+    // rootArea: the area of the whole tree's root box (large_prim_planes.h).
+    BinnedSah(const BvhBuildOptions& options, float rootArea);
 
     int binCount() const { return binCount_; }
-    // Empty between calls: binRange() fills them, choosePlane() empties them.
+    // Empty between calls: binRange() fills them, cheapestPlane() empties them.
     Bin* bins() { return bins_.data(); }
 
-    // The cheapest plane in bins(), or axis -1 when a leaf is strictly cheaper (and allowed) or no plane
-    // has a finite cost. Empties bins().
-    PlaneChoice choosePlane(const NodeMapping& mapping, uint32_t count, const RangeBounds& rb);
+    // The cheapest plane in bins(), with its cost, or axis -1 when no plane has a finite cost. Empties
+    // bins().
+    PlaneChoice cheapestPlane(const NodeMapping& mapping);
 
     // The whole split of one node, as detail::buildSubtree wants it: partitions refs[begin, end) and
     // returns the first index of the right side, or `begin` for a leaf.
     uint32_t operator()(PrimRef* refs, uint32_t begin, uint32_t end, const RangeBounds& rb);
 
   private:
+    PlaneChoice choose(const PrimRef* refs, uint32_t begin, uint32_t end, const NodeMapping& mapping,
+                       const RangeBounds& rb);
     uint32_t splitPair(PrimRef* refs, uint32_t begin, const RangeBounds& rb,
                        const NodeMapping& mapping) const;
 
     const BvhBuildOptions& options_;
+    float rootArea_;
     int binCount_;
-    std::vector<Bin> bins_;             // axis-major: bins_[axis * binCount + bin]; empty between calls
-    std::vector<int> used_;             // scratch: one axis's occupied bins, in order
-    std::vector<float> rightArea_;      // scratch: area of the union of bins used_[i..]
-    std::vector<uint32_t> rightCount_;  // scratch: primitives in them
+    std::vector<Bin> bins_;                   // axis-major: bins_[axis * binCount + bin]; empty between calls
+    std::vector<int> used_;                   // scratch: one axis's occupied bins, in order
+    std::vector<float> rightArea_;            // scratch: area of the union of bins used_[i..]
+    std::vector<uint32_t> rightCount_;        // scratch: primitives in them
+    std::vector<Bin> slots_;                  // large_prim_planes.h: empty between calls
+    std::optional<SlotMapping> slotMapping_;  // of the last node that had large primitives
 };
 
 }  // namespace fp::detail

@@ -44,7 +44,10 @@ struct BvhBuildOptions {
 
 // Binned SAH (Wald 2007, "On fast construction of SAH-based bounding volume hierarchies"): each node
 // is split at the lowest-cost of the binCount - 1 planes per axis between equal-width bins over its
-// centroid bounds, or made a leaf when that is strictly cheaper and it holds at most maxLeafSize.
+// centroid bounds, or made a leaf when that is strictly cheaper and it holds at most maxLeafSize. Near
+// the top of the tree, planes at the centroids of the node's few largest primitives are also evaluated
+// exactly, so that huge triangles among many small ones (walls around an object) are split off with one
+// plane, as a full sweep would (src/bvh/large_prim_planes.h).
 Bvh buildBinnedSah(const AabbArray& primBounds, const BvhBuildOptions& options = {});
 // The threads buildBinnedSah may use with these options (threadCount, or the hardware's if 0).
 int buildThreadCount(const BvhBuildOptions& options);

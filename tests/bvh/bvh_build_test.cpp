@@ -135,6 +135,34 @@ TEST(BvhBuild, SahSeparatesADistantSmallClusterAtTheRoot) {
     EXPECT_EQ(median.nodes[0].first - 1, median.nodes.size() - median.nodes[0].first);  // balanced halves
 }
 
+TEST(BvhBuild, OnePlaneSeparatesLargePrimitivesWhoseCentroidsShareABinWithSmallOnes) {
+    // 2000 small boxes with centroids spread over x in [0, 1], and two huge slabs with centroids at
+    // x = 1.01: with 16 bins over [0, 1.01] the last bin also holds about 30 small boxes, so no bin
+    // boundary separates the slabs from them. The exact plane at a slab's centroid does
+    // (large_prim_planes.h), and the sweep agrees: at the root, one child is exactly the two slabs.
+    std::mt19937 rng(41);
+    AabbArray bounds;
+    for (int i = 0; i < 2000; ++i) {
+        const glm::vec3 c = test::uniformIn(rng, Aabb{{0.0f, 0.0f, 0.0f}, {1.0f, 1.0f, 1.0f}});
+        bounds.push_back({c - glm::vec3(0.005f), c + glm::vec3(0.005f)});
+    }
+    bounds.push_back({{1.0f, -5.0f, -5.0f}, {1.02f, 5.0f, 5.0f}});
+    bounds.push_back({{1.0f, -5.0f, -4.0f}, {1.02f, 5.0f, 6.0f}});
+    for (const test::NamedBuilder& b : {builders()[0], builders()[1]}) {  // binned, sweep
+        Bvh bvh = b.build(bounds, {});
+        ASSERT_TRUE(checkStructure(bvh, bounds, {})) << b.name;
+        const BvhNode& root = bvh.nodes[0];
+        ASSERT_FALSE(root.isLeaf()) << b.name;
+        const BvhNode& right = bvh.nodes[root.first];
+        ASSERT_TRUE(right.isLeaf()) << b.name;
+        ASSERT_EQ(right.count, 2u) << b.name;
+        EXPECT_EQ(
+            std::set<uint32_t>(bvh.primIndex.begin() + right.first, bvh.primIndex.begin() + right.first + 2),
+            (std::set<uint32_t>{2000, 2001}))
+            << b.name;
+    }
+}
+
 TEST(BvhBuild, SameInputGivesSameTree) {
     const AabbArray bounds = triangleBounds(test::randomSoup(5000, 9));
     for (const test::NamedBuilder& b : builders()) {
