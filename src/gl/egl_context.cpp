@@ -21,22 +21,27 @@ namespace {
 class EglContext : public GlContext {
   public:
     EglContext(EGLDisplay display, bool hardware) : display_(display), hardware_(hardware) {
-        const EGLint configAttribs[] = {EGL_SURFACE_TYPE, EGL_PBUFFER_BIT, EGL_RENDERABLE_TYPE, EGL_OPENGL_BIT,
-                                        EGL_NONE};
+        const EGLint configAttribs[] = {EGL_SURFACE_TYPE, EGL_PBUFFER_BIT, EGL_RENDERABLE_TYPE,
+                                        EGL_OPENGL_BIT, EGL_NONE};
         EGLConfig config;
         EGLint count = 0;
         if (!eglChooseConfig(display_, configAttribs, &config, 1, &count) || count < 1)
             fail("no EGL configuration for offscreen OpenGL");
         if (!eglBindAPI(EGL_OPENGL_API)) fail("EGL cannot bind the desktop OpenGL API");
-        const EGLint contextAttribs[] = {EGL_CONTEXT_MAJOR_VERSION, 4, EGL_CONTEXT_MINOR_VERSION, 1,
-                                         EGL_CONTEXT_OPENGL_PROFILE_MASK, EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT,
+        const EGLint contextAttribs[] = {EGL_CONTEXT_MAJOR_VERSION,
+                                         4,
+                                         EGL_CONTEXT_MINOR_VERSION,
+                                         1,
+                                         EGL_CONTEXT_OPENGL_PROFILE_MASK,
+                                         EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT,
                                          EGL_NONE};
         context_ = eglCreateContext(display_, config, EGL_NO_CONTEXT, contextAttribs);
         if (context_ == EGL_NO_CONTEXT) fail("could not create an OpenGL 4.1 core context");
         // All rendering goes to framebuffer objects, but not every driver allows no surface at all.
         const EGLint pbufferAttribs[] = {EGL_WIDTH, 16, EGL_HEIGHT, 16, EGL_NONE};
         surface_ = eglCreatePbufferSurface(display_, config, pbufferAttribs);
-        if (!eglMakeCurrent(display_, surface_, surface_, context_)) fail("could not make the context current");
+        if (!eglMakeCurrent(display_, surface_, surface_, context_))
+            fail("could not make the context current");
         loadGlFunctions(reinterpret_cast<GlProcLoader>(eglGetProcAddress), "EGL");
     }
     ~EglContext() override { release(); }
@@ -96,7 +101,8 @@ std::vector<Device> eglDevices() {
 std::unique_ptr<GlContext> createEglContext(bool requireHardware) {
     auto getPlatformDisplay =
         reinterpret_cast<PFNEGLGETPLATFORMDISPLAYEXTPROC>(eglGetProcAddress("eglGetPlatformDisplayEXT"));
-    if (!getPlatformDisplay) throw Error("EGL: eglGetPlatformDisplayEXT is not available (is libEGL installed?)");
+    if (!getPlatformDisplay)
+        throw Error("EGL: eglGetPlatformDisplayEXT is not available (is libEGL installed?)");
     std::string tried;
     for (const Device& d : eglDevices()) {
         if (requireHardware && !d.hardware) continue;
@@ -112,7 +118,8 @@ std::unique_ptr<GlContext> createEglContext(bool requireHardware) {
             tried += std::string(" ") + e.what() + ";";
         }
     }
-    throw Error(std::string("EGL: no ") + (requireHardware ? "GPU " : "") + "device gave an OpenGL 4.1 core context" +
+    throw Error(std::string("EGL: no ") + (requireHardware ? "GPU " : "") +
+                "device gave an OpenGL 4.1 core context" +
                 (tried.empty() ? " (no EGL devices found)" : ":" + tried));
 }
 

@@ -74,7 +74,8 @@ struct Expander {
 ExpandedShader ShaderLibrary::expand(const std::string& path, const ShaderDefines& defines) const {
     Expander expander{*this, defines, {}, {}};
     expander.emit("#version 410 core", "(generated)", 1);
-    for (const auto& [name, value] : defines) expander.emit("#define " + name + " " + value, "(generated)", 1);
+    for (const auto& [name, value] : defines)
+        expander.emit("#define " + name + " " + value, "(generated)", 1);
     expander.include(path);
     return expander.out;
 }

@@ -1,8 +1,8 @@
 // writeImage / readImage from image.h: pick the format by the file name's extension.
 #include "core/error.h"
 #include "image/exr.h"
-#include "image/hdr.h"
 #include "image/file_io.h"
+#include "image/hdr.h"
 #include "image/image.h"
 #include "image/pfm.h"
 #include "image/png.h"

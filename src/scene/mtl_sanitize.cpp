@@ -57,8 +57,8 @@ struct MtlRepairs {
 // Statements we read (re-spelled below) or accept without using them. Anything else is reported once.
 bool isKnownStatement(std::string_view key) {
     static const std::string_view kKnown[] = {
-        "newmtl", "Ka",   "Kd",        "Ks",   "Ke",   "Kt",    "Tf",  "Ni",  "Ns",
-        "d",      "Tr",   "illum",     "Pr",   "Pm",   "Ps",    "Pc",  "Pcr", "aniso",
+        "newmtl", "Ka",   "Kd",        "Ks",   "Ke",   "Kt",    "Tf",   "Ni",  "Ns",
+        "d",      "Tr",   "illum",     "Pr",   "Pm",   "Ps",    "Pc",   "Pcr", "aniso",
         "anisor", "norm", "sharpness", "bump", "disp", "decal", "refl", "Vd"};
     if (key.substr(0, 4) == "map_") return true;
     return std::find(std::begin(kKnown), std::end(kKnown), key) != std::end(kKnown);

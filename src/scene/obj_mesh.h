@@ -14,8 +14,8 @@
 namespace fp {
 
 struct ObjCorner {
-    uint32_t vertex;  // 0-based
-    int32_t normal;   // 0-based, -1 if the face gives none
+    uint32_t vertex;   // 0-based
+    int32_t normal;    // 0-based, -1 if the face gives none
     int32_t texcoord;  // 0-based, -1 if the face gives none
 };
 
@@ -43,9 +43,9 @@ struct ObjMesh {
 ObjMesh readObjMesh(const ObjScan& scan, const std::string& name);
 
 struct MeshRepairs {
-    RepairTally nonFinite;   // triangles dropped for NaN/infinite vertices
-    RepairTally degenerate;  // zero-area triangles dropped
-    RepairTally badNormals;  // faces whose zero/NaN vertex normals were replaced by the geometric normal
+    RepairTally nonFinite;     // triangles dropped for NaN/infinite vertices
+    RepairTally degenerate;    // zero-area triangles dropped
+    RepairTally badNormals;    // faces whose zero/NaN vertex normals were replaced by the geometric normal
     RepairTally badTexcoords;  // faces with NaN/infinite texture coordinates, taken as having none
 };
 

@@ -26,12 +26,12 @@ enum class MaterialType : uint32_t {
 struct Material {
     std::string name = "default";
     MaterialType type = MaterialType::Diffuse;
-    glm::vec3 diffuse{0.8f};        // MTL Kd: Lambertian reflectance, each channel in [0, 1]
-    glm::vec3 emission{0.0f};       // MTL Ke: radiance of a one-sided Lambertian emitter (front face only)
-    glm::vec3 specular{0.0f};       // MTL Ks: conductor reflectance at normal incidence, or coat tint
-    glm::vec3 transmission{1.0f};   // MTL Tf: dielectric transmission tint, each channel in [0, 1]
-    float roughness = 0.0f;         // MTL Pr (or from Ns): perceptual roughness in [0, 1]; GGX alpha = roughness^2
-    float ior = 1.5f;               // MTL Ni: index of refraction of dielectrics and coats, in [1, 4]
+    glm::vec3 diffuse{0.8f};       // MTL Kd: Lambertian reflectance, each channel in [0, 1]
+    glm::vec3 emission{0.0f};      // MTL Ke: radiance of a one-sided Lambertian emitter (front face only)
+    glm::vec3 specular{0.0f};      // MTL Ks: conductor reflectance at normal incidence, or coat tint
+    glm::vec3 transmission{1.0f};  // MTL Tf: dielectric transmission tint, each channel in [0, 1]
+    float roughness = 0.0f;  // MTL Pr (or from Ns): perceptual roughness in [0, 1]; GGX alpha = roughness^2
+    float ior = 1.5f;        // MTL Ni: index of refraction of dielectrics and coats, in [1, 4]
     // MTL Vd (our extension): the Abbe number of a dispersive glass, 0 for none. Ni is then the index at
     // the Fraunhofer d line (587.6 nm) and the index follows Cauchy's equation n = A + B / lambda^2.
     float abbeNumber = 0.0f;

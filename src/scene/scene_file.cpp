@@ -9,8 +9,8 @@
 #include <nlohmann/json.hpp>
 
 #include "core/error.h"
-#include "image/image.h"
 #include "core/log.h"
+#include "image/image.h"
 #include "scene/load.h"
 #include "scene/text_file.h"
 
@@ -179,7 +179,8 @@ EnvironmentSpec parseEnvironment(const json& environment, Fields& fields) {
         fields.fail("environment needs either a \"color\" ([r, g, b] radiance) or a \"map\" (an .hdr file)");
     if (hasColor) {
         glm::vec3 color = fields.vec3(environment["color"], "environment.color");
-        if (color.x < 0.0f || color.y < 0.0f || color.z < 0.0f) fields.fail("environment.color must not be negative");
+        if (color.x < 0.0f || color.y < 0.0f || color.z < 0.0f)
+            fields.fail("environment.color must not be negative");
         spec.environment.color = color;
     } else {
         spec.mapPath = fields.string(environment["map"], "environment.map");
@@ -231,7 +232,8 @@ Scene parseSceneFile(std::string_view bytes, const std::string& name, const Mesh
     scene.camera = camera;
     scene.defaults = defaults;
     scene.environment = environment.environment;
-    if (!environment.mapPath.empty()) scene.environment.map = (loadMap ? loadMap : noMaps)(environment.mapPath);
+    if (!environment.mapPath.empty())
+        scene.environment.map = (loadMap ? loadMap : noMaps)(environment.mapPath);
     scene.source = name;
     return scene;
 }
@@ -247,21 +249,23 @@ static std::string lowercaseExtension(const fs::path& path) {
 Scene loadSceneFile(const std::string& path) {
     std::string bytes = readFileBytes(path);
     fs::path directory = fs::path(path).parent_path();
-    return parseSceneFile(bytes, path, [&](const std::string& mesh) {
-        fs::path meshPath = fs::path(mesh).is_absolute() ? fs::path(mesh) : directory / mesh;
-        if (lowercaseExtension(meshPath) != ".obj")
-            throw Error(path + ": mesh '" + mesh + "' must be an .obj file");
-        std::error_code ec;
-        if (!fs::exists(meshPath, ec))
-            throw Error(path + ": mesh '" + mesh + "' not found (looked for " + meshPath.string() + ")");
-        return loadObj(meshPath.string());
-    },
-    [&](const std::string& map) {
-        fs::path mapPath = fs::path(map).is_absolute() ? fs::path(map) : directory / map;
-        if (lowercaseExtension(mapPath) != ".hdr")
-            throw Error(path + ": environment map '" + map + "' must be a Radiance .hdr file");
-        return readImage(mapPath.string());
-    });
+    return parseSceneFile(
+        bytes, path,
+        [&](const std::string& mesh) {
+            fs::path meshPath = fs::path(mesh).is_absolute() ? fs::path(mesh) : directory / mesh;
+            if (lowercaseExtension(meshPath) != ".obj")
+                throw Error(path + ": mesh '" + mesh + "' must be an .obj file");
+            std::error_code ec;
+            if (!fs::exists(meshPath, ec))
+                throw Error(path + ": mesh '" + mesh + "' not found (looked for " + meshPath.string() + ")");
+            return loadObj(meshPath.string());
+        },
+        [&](const std::string& map) {
+            fs::path mapPath = fs::path(map).is_absolute() ? fs::path(map) : directory / map;
+            if (lowercaseExtension(mapPath) != ".hdr")
+                throw Error(path + ": environment map '" + map + "' must be a Radiance .hdr file");
+            return readImage(mapPath.string());
+        });
 }
 
 Scene loadScene(const std::string& path) {

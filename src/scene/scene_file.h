@@ -18,7 +18,8 @@ using MeshLoader = std::function<Scene(const std::string& mesh)>;
 using MapLoader = std::function<Image(const std::string& map)>;
 
 // Parses scene-file `bytes`, naming the file `name` in messages, and loads its mesh and environment map
-// through the loaders. Throws fp::Error on anything invalid; warns about unknown keys. Scene::source is `name`.
+// through the loaders. Throws fp::Error on anything invalid; warns about unknown keys. Scene::source is
+// `name`.
 Scene parseSceneFile(std::string_view bytes, const std::string& name, const MeshLoader& loadMesh,
                      const MapLoader& loadMap = nullptr);
 

@@ -31,10 +31,15 @@ TEST_F(ShaderDir, IncludesAreExpandedOnceAndEveryLineKnowsItsOrigin) {
     write("common/b.glsl", "#include \"common/a.glsl\"\nfloat b() { return a(); }\n");
     write("main.glsl", "#include \"common/a.glsl\"\n#include \"common/b.glsl\"\nvoid main() {}\n");
     ExpandedShader e = ShaderLibrary(dir_.string()).expand("main.glsl", {{"N", "3"}});
-    EXPECT_EQ(e.text, "#version 410 core\n#define N 3\nfloat a() { return 1.0; }\nfloat b() { return a(); }\nvoid main() {}\n");
+    EXPECT_EQ(e.text,
+              "#version 410 core\n#define N 3\nfloat a() { return 1.0; }\nfloat b() { return a(); }\nvoid "
+              "main() {}\n");
     using Origin = std::pair<std::string, int>;
-    EXPECT_EQ(e.origins, (std::vector<Origin>{{"(generated)", 1}, {"(generated)", 1}, {"common/a.glsl", 1},
-                                              {"common/b.glsl", 2}, {"main.glsl", 3}}));
+    EXPECT_EQ(e.origins, (std::vector<Origin>{{"(generated)", 1},
+                                              {"(generated)", 1},
+                                              {"common/a.glsl", 1},
+                                              {"common/b.glsl", 2},
+                                              {"main.glsl", 3}}));
 }
 
 TEST_F(ShaderDir, IncludeThroughADefineNamingAPath) {
@@ -57,11 +62,15 @@ TEST_F(ShaderDir, MissingIncludeNamesTheIncludingFileAndLine) {
 
 TEST(CompileLog, DriverReferencesBecomeFileAndLine) {
     ExpandedShader e;
-    e.origins = {{"(generated)", 1}, {"passes/trace.frag.glsl", 1}, {"common/rng.glsl", 12}, {"common/rng.glsl", 13}};
+    e.origins = {
+        {"(generated)", 1}, {"passes/trace.frag.glsl", 1}, {"common/rng.glsl", 12}, {"common/rng.glsl", 13}};
     // The source-string number is ignored: Mesa reports 0 for some errors whatever the file.
-    EXPECT_EQ(mapCompileLog("0:3(5): error: `x' undeclared", e), "glsl/common/rng.glsl:12: error: `x' undeclared");
-    EXPECT_EQ(mapCompileLog("ERROR: 0:2: 'y' : undeclared", e), "ERROR: glsl/passes/trace.frag.glsl:1: 'y' : undeclared");
-    EXPECT_EQ(mapCompileLog("0(4) : error C1008: undefined", e), "glsl/common/rng.glsl:13 : error C1008: undefined");
+    EXPECT_EQ(mapCompileLog("0:3(5): error: `x' undeclared", e),
+              "glsl/common/rng.glsl:12: error: `x' undeclared");
+    EXPECT_EQ(mapCompileLog("ERROR: 0:2: 'y' : undeclared", e),
+              "ERROR: glsl/passes/trace.frag.glsl:1: 'y' : undeclared");
+    EXPECT_EQ(mapCompileLog("0(4) : error C1008: undefined", e),
+              "glsl/common/rng.glsl:13 : error C1008: undefined");
     EXPECT_EQ(mapCompileLog("0:99(1): beyond the text", e), "0:99(1): beyond the text");
 }
 
@@ -83,7 +92,8 @@ TEST_F(ShaderDir, RealCompileErrorReportsTheOriginalFileAndLine) {
         FAIL() << "expected a compile error";
     } catch (const Error& e) {
         std::string message = e.what();
-        EXPECT_NE(message.find("glsl/common/broken.glsl:3: error: `undeclaredThing' undeclared"), std::string::npos)
+        EXPECT_NE(message.find("glsl/common/broken.glsl:3: error: `undeclaredThing' undeclared"),
+                  std::string::npos)
             << message;
         EXPECT_EQ(message.find("frag.glsl:3"), std::string::npos) << message;
     }

@@ -17,7 +17,8 @@ namespace {
 Image skyWithSun(int width, int height) {
     Image map(width, height);
     for (int y = 0; y < height; ++y)
-        for (int x = 0; x < width; ++x) map.at(x, y) = glm::vec3(0.2f, 0.3f, 0.5f) * (y < height / 2 ? 1.0f : 0.3f);
+        for (int x = 0; x < width; ++x)
+            map.at(x, y) = glm::vec3(0.2f, 0.3f, 0.5f) * (y < height / 2 ? 1.0f : 0.3f);
     // A small, very bright sun: the case where sampling the map by luminance matters.
     for (int y = 3; y < 5; ++y)
         for (int x = 10; x < 12; ++x) map.at(x, y) = glm::vec3(400.0f, 300.0f, 200.0f);
@@ -66,7 +67,8 @@ TEST(EnvironmentMap, LightSamplingAndBsdfSamplingAgree) {
     Accumulation bsdf = renderScene(renderer, view(), Integrator::Bsdf, 24, 1024, 3);
     ImageEstimate a = estimate(nee), b = estimate(bsdf);
     for (int c = 0; c < 3; ++c) {
-        float se = std::sqrt(a.standardError[c] * a.standardError[c] + b.standardError[c] * b.standardError[c]);
+        float se =
+            std::sqrt(a.standardError[c] * a.standardError[c] + b.standardError[c] * b.standardError[c]);
         EXPECT_NEAR(a.mean[c], b.mean[c], 5.0f * se) << "channel " << c;
         EXPECT_LT(se, 0.03f * a.mean[c]);
     }
@@ -110,7 +112,8 @@ class EnvironmentFiles : public ::testing::Test {
     }
     void TearDown() override { std::filesystem::remove_all(dir_); }
     std::string scene(const std::string& environment) {
-        std::ofstream(dir_ / "scene.json") << "{\"mesh\": \"box.obj\", \"environment\": " << environment << "}";
+        std::ofstream(dir_ / "scene.json")
+            << "{\"mesh\": \"box.obj\", \"environment\": " << environment << "}";
         return (dir_ / "scene.json").string();
     }
     std::filesystem::path dir_;

@@ -64,7 +64,8 @@ void expectFurnace(const Scene& scene, Integrator integrator, float onSphere, in
     ASSERT_GT(count, 100);
     for (int c = 0; c < 3; ++c) {
         double average = sum[c] / count, standardError = std::sqrt(var[c]) / count;
-        EXPECT_NEAR(average, onSphere, 5.0 * standardError + 1e-5) << integratorName(integrator) << " channel " << c;
+        EXPECT_NEAR(average, onSphere, 5.0 * standardError + 1e-5)
+            << integratorName(integrator) << " channel " << c;
         EXPECT_LT(standardError, 0.01) << "too noisy to mean anything";
     }
     EXPECT_EQ(acc.droppedSamples(), 0u);
