@@ -73,6 +73,30 @@ BinnedSah::BinnedSah(const BvhBuildOptions& options, float rootArea)
       rightCount_(binCount_),
       slots_(3 * size_t(kMaxSlots)) {}
 
+void sweepOccupiedBins(const Bin* bins, const int* used, int n, int axis, float* rightArea,
+                       uint32_t* rightCount, PlaneChoice& best) {
+    LaneBox acc;
+    uint32_t count = 0;
+    for (int i = n - 1; i > 0; --i) {  // sweep from the right...
+        acc.grow(bins[used[i]].bounds);
+        count += bins[used[i]].count;
+        rightArea[i] = acc.area();
+        rightCount[i] = count;
+    }
+    acc = LaneBox{};
+    count = 0;
+    for (int i = 0; i + 1 < n; ++i) {  // ...then from the left, evaluating each plane
+        acc.grow(bins[used[i]].bounds);
+        count += bins[used[i]].count;
+        const float cost = acc.area() * float(count) + rightArea[i + 1] * float(rightCount[i + 1]);
+        if (cost < best.cost) {
+            best.axis = axis;
+            best.plane = used[i] + 1;
+            best.cost = cost;
+        }
+    }
+}
+
 PlaneChoice BinnedSah::cheapestPlane(const NodeMapping& mapping) {
     // A plane between bins p - 1 and p splits them into [0, p) and [p, binCount). Its SAH cost is
     // traversalCost + intersectCost * (A_L N_L + A_R N_R) / A; only the bracket is compared here.
@@ -88,24 +112,8 @@ PlaneChoice BinnedSah::cheapestPlane(const NodeMapping& mapping) {
             used_[used] = k;
             used += bins[k].count != 0;
         }
-        if (mapping.axis[axis].scale != 0.0f) {
-            LaneBox acc;
-            uint32_t n = 0;
-            for (int i = used - 1; i > 0; --i) {  // sweep from the right...
-                acc.grow(bins[used_[i]].bounds);
-                n += bins[used_[i]].count;
-                rightArea_[i] = acc.area();
-                rightCount_[i] = n;
-            }
-            acc = LaneBox{};
-            n = 0;
-            for (int i = 0; i + 1 < used; ++i) {  // ...then from the left, evaluating each plane
-                acc.grow(bins[used_[i]].bounds);
-                n += bins[used_[i]].count;
-                const float cost = acc.area() * float(n) + rightArea_[i + 1] * float(rightCount_[i + 1]);
-                if (cost < best.cost) best = {axis, used_[i] + 1, cost};
-            }
-        }
+        if (mapping.axis[axis].scale != 0.0f)
+            sweepOccupiedBins(bins, used_.data(), used, axis, rightArea_.data(), rightCount_.data(), best);
         for (int i = 0; i < used; ++i) bins[used_[i]] = Bin{};
     }
     return best;  // no axis: only when every cost overflowed to inf

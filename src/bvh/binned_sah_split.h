@@ -58,6 +58,13 @@ struct PlaneChoice {
     bool exact = false;  // a plane at a large primitive's centroid (large_prim_planes.h), not between bins
 };
 
+// The SAH sweep over one axis's occupied bins (or slots) used[0 .. n), in order: for each plane right
+// after used[i] (i + 1 < n), the bracket A_L N_L + A_R N_R of the bins on either side. The cheapest
+// replaces best's axis, plane (used[i] + 1) and cost when strictly cheaper, so on equal costs the first
+// plane evaluated wins. rightArea and rightCount are scratch of n entries.
+void sweepOccupiedBins(const Bin* bins, const int* used, int n, int axis, float* rightArea,
+                       uint32_t* rightCount, PlaneChoice& best);
+
 // `exact` if it is strictly cheaper, else `binned`: on equal costs the binned plane wins, so nodes without
 // large primitives split as they did before exact planes were added.
 inline PlaneChoice cheaperPlane(const PlaneChoice& binned, const PlaneChoice& exact) {

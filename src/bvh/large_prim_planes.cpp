@@ -95,26 +95,7 @@ PlaneChoice chooseSlotPlane(Bin* slots) {
             if (s[k].count != 0) used[n++] = k;
         float rightArea[kMaxSlots];
         uint32_t rightCount[kMaxSlots];
-        LaneBox acc;
-        uint32_t count = 0;
-        for (int i = n - 1; i > 0; --i) {
-            acc.grow(s[used[i]].bounds);
-            count += s[used[i]].count;
-            rightArea[i] = acc.area();
-            rightCount[i] = count;
-        }
-        acc = LaneBox{};
-        count = 0;
-        for (int i = 0; i + 1 < n; ++i) {
-            acc.grow(s[used[i]].bounds);
-            count += s[used[i]].count;
-            const float cost = acc.area() * float(count) + rightArea[i + 1] * float(rightCount[i + 1]);
-            if (cost < best.cost) {
-                best.cost = cost;
-                best.axis = axis;
-                best.plane = used[i] + 1;
-            }
-        }
+        sweepOccupiedBins(s, used, n, axis, rightArea, rightCount, best);
         for (int k = 0; k < kMaxSlots; ++k) s[k] = Bin{};
     }
     return best;
