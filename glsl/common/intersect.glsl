@@ -34,16 +34,31 @@ bool intersectTriangle(Ray ray, vec3 v0, vec3 e1, vec3 e2, float tMax, out float
     return uv.x >= 0.0 && uv.y >= 0.0 && uv.x + uv.y <= 1.0 && t > 0.0 && t < tMax;
 }
 
+// Child i's quantised planes, q = byte i of a plane's uint (gpu/quantised_node.h), as floats.
+vec4 planeSteps(uint plane) { return vec4((uvec4(plane) >> uvec4(0u, 8u, 16u, 24u)) & 255u); }
+
 // Slab test (Kay & Kajiya 1986) of the four children of a wide node at once, channel i for child i:
-// entry distances, INF where a box is missed within (0, tMax). The exit distance is widened by a few
-// ulps (Ize 2013, "Robust BVH Ray Traversal") so that rounding never culls a box the ray grazes.
-vec4 boxEntries(vec3 origin, vec3 invDir, vec4 loX, vec4 hiX, vec4 loY, vec4 hiY, vec4 loZ, vec4 hiZ, float tMax) {
-    vec4 x0 = (loX - origin.x) * invDir.x, x1 = (hiX - origin.x) * invDir.x;
-    vec4 y0 = (loY - origin.y) * invDir.y, y1 = (hiY - origin.y) * invDir.y;
-    vec4 z0 = (loZ - origin.z) * invDir.z, z1 = (hiZ - origin.z) * invDir.z;
-    vec4 enter = max(max(min(x0, x1), min(y0, y1)), max(min(z0, z1), vec4(0.0)));
-    vec4 exit = min(min(min(max(x0, x1), max(y0, y1)), max(z0, z1)) * 1.0000004, vec4(tMax));
-    return mix(vec4(INF), enter, lessThanEqual(enter, exit));
+// entry distances, INF where a box is missed within (0, tMax) or the slot is empty (link 0). The boxes
+// are quantised to the node's grid (Ylitie, Karras & Laine 2017): a plane at p + s q along an axis is
+// reached at t = q (s / d) + (p - o) / d, one multiply-add per plane once the node's two per-axis
+// terms are known. The sign of the direction picks each axis' near and far plane, so no min and max
+// per plane; the quantiser's margin keeps near <= far for every used slot. The exit distance is
+// widened by a few ulps (Ize 2013, "Robust BVH Ray Traversal") so that rounding never culls a box the
+// ray grazes; the quantiser's margin covers the rest of this form's rounding.
+vec4 boxEntries(vec3 origin, vec3 invDir, uvec4 grid, uvec4 planesXY, uvec4 planesZ, uvec4 link, float tMax) {
+    vec3 scale = uintBitsToFloat(((uvec3(grid.w) >> uvec3(0u, 8u, 16u)) & 255u) << 23u) * invDir;
+    vec3 offset = (uintBitsToFloat(grid.xyz) - origin) * invDir;
+    bvec3 back = lessThan(invDir, vec3(0.0));
+    vec4 x0 = planeSteps(back.x ? planesXY.y : planesXY.x) * scale.x + offset.x;
+    vec4 x1 = planeSteps(back.x ? planesXY.x : planesXY.y) * scale.x + offset.x;
+    vec4 y0 = planeSteps(back.y ? planesXY.w : planesXY.z) * scale.y + offset.y;
+    vec4 y1 = planeSteps(back.y ? planesXY.z : planesXY.w) * scale.y + offset.y;
+    vec4 z0 = planeSteps(back.z ? planesZ.y : planesZ.x) * scale.z + offset.z;
+    vec4 z1 = planeSteps(back.z ? planesZ.x : planesZ.y) * scale.z + offset.z;
+    vec4 enter = max(max(x0, y0), max(z0, vec4(0.0)));
+    vec4 exit = min(min(x1, y1), z1) * 1.0000004;
+    bvec4 hit = bvec4(uvec4(lessThanEqual(enter, min(exit, vec4(tMax)))) & uvec4(notEqual(link, uvec4(0u))));
+    return mix(vec4(INF), enter, hit);
 }
 
 // Tests the triangles of up to four leaf ranges, [first.i, first.i + count.i) for i = x, y, z, w, in
@@ -98,11 +113,10 @@ bool traverse(Ray ray, float tMax, bool anyHit, out Hit hit) {
     uint node = 0u;
     while (true) {
         ++gNodesVisited;
-        int base = int(node) * NODE_BOUNDS_TEXELS;
-        vec4 t = boxEntries(ray.origin, invDir, texelFetch(uNodeBounds, base), texelFetch(uNodeBounds, base + 1),
-                            texelFetch(uNodeBounds, base + 2), texelFetch(uNodeBounds, base + 3),
-                            texelFetch(uNodeBounds, base + 4), texelFetch(uNodeBounds, base + 5), hit.t);
-        uvec4 link = texelFetch(uNodeLinks, int(node));  // child links, encoded as layout.h says
+        int base = int(node) * NODE_TEXELS;  // one 64-byte node, laid out as layout.h says
+        uvec4 link = texelFetch(uNodes, base + NODE_LINK_TEXEL);  // child links
+        vec4 t = boxEntries(ray.origin, invDir, texelFetch(uNodes, base), texelFetch(uNodes, base + 1),
+                            texelFetch(uNodes, base + 2), link, hit.t);
         bvec4 leaf = notEqual(link & LEAF_BIT, uvec4(0u));
         // The leaf children that were hit: their triangle counts, zero for the others.
         uvec4 count = (((link >> LEAF_COUNT_SHIFT) & 15u) + 1u) * uvec4(leaf) * uvec4(lessThan(t, vec4(INF)));

@@ -2,8 +2,7 @@
 // the *_TEXELS constants come from there as defines.
 uniform samplerBuffer uTriangles;
 uniform samplerBuffer uNormals;
-uniform samplerBuffer uNodeBounds;
-uniform usamplerBuffer uNodeLinks;  // RG32UI
+uniform usamplerBuffer uNodes;  // RGBA32UI, NODE_TEXELS per node
 uniform samplerBuffer uMaterials;
 uniform samplerBuffer uLights;
 uniform int uLightCount;

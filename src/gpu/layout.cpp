@@ -8,20 +8,14 @@ namespace fp::layout {
 
 ShaderDefines layoutDefines() {
     auto s = [](int v) { return std::to_string(v); };
-    return {{"TRIANGLE_TEXELS", s(kTriangleTexels)},
-            {"NORMAL_TEXELS", s(kNormalTexels)},
-            {"NODE_BOUNDS_TEXELS", s(kNodeBoundsTexels)},
-            {"MATERIAL_TEXELS", s(kMaterialTexels)},
-            {"TRIANGLES_UNIT", s(kTrianglesUnit)},
-            {"NORMALS_UNIT", s(kNormalsUnit)},
-            {"NODE_BOUNDS_UNIT", s(kNodeBoundsUnit)},
-            {"NODE_LINKS_UNIT", s(kNodeLinksUnit)},
-            {"MATERIALS_UNIT", s(kMaterialsUnit)},
-            {"LIGHTS_UNIT", s(kLightsUnit)},
-            {"TEXCOORD_TEXELS", s(kTexcoordTexels)},
-            {"LEAF_BIT", std::to_string(kLeafBit) + "u"},
-            {"LEAF_COUNT_SHIFT", s(kLeafCountShift)},
-            {"LEAF_FIRST_MASK", std::to_string(kMaxLeafFirst) + "u"}};
+    return {
+        {"TRIANGLE_TEXELS", s(kTriangleTexels)},  {"NORMAL_TEXELS", s(kNormalTexels)},
+        {"NODE_TEXELS", s(kNodeTexels)},          {"NODE_LINK_TEXEL", s(kNodeLinkTexel)},
+        {"MATERIAL_TEXELS", s(kMaterialTexels)},  {"TRIANGLES_UNIT", s(kTrianglesUnit)},
+        {"NORMALS_UNIT", s(kNormalsUnit)},        {"NODES_UNIT", s(kNodesUnit)},
+        {"MATERIALS_UNIT", s(kMaterialsUnit)},    {"LIGHTS_UNIT", s(kLightsUnit)},
+        {"TEXCOORD_TEXELS", s(kTexcoordTexels)},  {"LEAF_BIT", std::to_string(kLeafBit) + "u"},
+        {"LEAF_COUNT_SHIFT", s(kLeafCountShift)}, {"LEAF_FIRST_MASK", std::to_string(kMaxLeafFirst) + "u"}};
 }
 
 BvhBuildOptions bvhOptions() {

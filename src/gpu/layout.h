@@ -14,22 +14,26 @@
 //                                            normals, rendered the same image 10 % slower on llvmpipe:
 //                                            BENCHMARKS.md, optimisation log.)
 //  normals       RGBA32F    3 per triangle   (n0.xyz, 0) (n1.xyz, 0) (n2.xyz, 0)  unit shading normals
-//  nodeBounds    RGBA32F    6 per node       the 4-wide BVH (bvh/wide_bvh.h): its four children's boxes,
-//                                            one bound per texel, child i in channel i:
-//                                            (lo.x) (hi.x) (lo.y) (hi.y) (lo.z) (hi.z)
-//                                            so that one vec4 operation tests a bound of all four.
-//                                            An empty child slot is the point kEmptyChildCoordinate on
-//                                            every axis: no ray reaches it before INF (1e30).
-//  nodeLinks     RGBA32UI   1 per node       the four children's links, each one uint (encodeChild):
+//  nodes         RGBA32UI   4 per node       the 4-wide BVH (bvh/wide_bvh.h), one node in 64 bytes, so one
+//                                            cache line (llvmpipe allocates buffers 64-byte aligned):
+//                                            (grid origin.xyz as float bits, scale exponents)
+//                                            (lo.x, hi.x, lo.y, hi.y) (lo.z, hi.z, 0, 0) (links)
+//                                            the four children's boxes quantised to 8 bits per plane on
+//                                            a grid local to the node, child i in byte i of each plane's
+//                                            uint, rounded outwards so that each contains its exact box
+//                                            (Ylitie, Karras & Laine 2017; gpu/quantised_node.h has the
+//                                            details); then the four children's links, one uint each
+//                                            (encodeChild):
 //                                            bit 31 set: a leaf of triangles [first, first + count) with
 //                                            first in bits 0-26 and count - 1 in bits 27-30;
 //                                            bit 31 clear: the interior node of that index; 0 for an
-//                                            empty slot (node 0 is the root, never a child).
-//                                            A node is 112 bytes and there are about half as many as
-//                                            binary nodes. With bvhOptions() below, leaves hold about 4
-//                                            triangles and there is about one node per 9 to 10
-//                                            triangles, so positions + BVH come to about 48 + 12 = 60
-//                                            bytes per triangle (57.8-61.0 on the suite; BENCHMARKS.md).
+//                                            empty slot (node 0 is the root, never a child), whose box
+//                                            is inverted and which the traversal skips by its link.
+//                                            There are about half as many nodes as binary nodes. With
+//                                            bvhOptions() below, leaves hold about 4 triangles and there
+//                                            is about one node per 9 to 10 triangles, so positions + BVH
+//                                            come to about 48 + 7 = 55 bytes per triangle (the exact
+//                                            boxes of 112-byte nodes took 57.8-61.0; BENCHMARKS.md).
 //  materials     RGBA32F    5 per material   (Kd.rgb, type) (Ke.rgb, roughness) (Ks.rgb, ior) (Tf.rgb, B)
 //                                            (diffuse texture, 0, 0, 0)
 //                                            B: Cauchy coefficient in nm^2 of a dispersive glass, else 0
@@ -58,18 +62,15 @@
 
 #include "bvh/bvh.h"
 #include "gl/shader_source.h"
+#include "gpu/quantised_node.h"
 
 namespace fp::layout {
 
 constexpr int kTriangleTexels = 3;
 constexpr int kNormalTexels = 3;
-constexpr int kNodeBoundsTexels = 6;
-constexpr int kNodeLinkTexels = 1;
+// The nodes' texels: kNodeTexels and kNodeLinkTexel are in gpu/quantised_node.h.
 
-// Every coordinate of an empty child slot's box (see nodeBounds above).
-constexpr float kEmptyChildCoordinate = 1e30f;
-
-// A child link of nodeLinks (see above).
+// A child link of nodes (see above).
 constexpr uint32_t kLeafBit = 1u << 31;
 constexpr int kLeafCountShift = 27;
 constexpr uint32_t kMaxLeafFirst = (1u << kLeafCountShift) - 1;
@@ -90,8 +91,7 @@ constexpr uint32_t kMaxFloatIndex = 1u << 24;
 enum Unit : int {
     kTrianglesUnit = 0,
     kNormalsUnit,
-    kNodeBoundsUnit,
-    kNodeLinksUnit,
+    kNodesUnit,
     kMaterialsUnit,
     kLightsUnit,
     kTexcoordsUnit,

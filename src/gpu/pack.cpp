@@ -15,9 +15,8 @@ float luminance(const glm::vec3& rgb) {
 }
 
 size_t PackedScene::bytes() const {
-    return sizeof(glm::vec4) *
-               (triangles.size() + normals.size() + nodeBounds.size() + materials.size() + lights.size()) +
-           sizeof(glm::uvec4) * nodeLinks.size() + textureBytes();
+    return sizeof(glm::vec4) * (triangles.size() + normals.size() + materials.size() + lights.size()) +
+           sizeof(glm::uvec4) * nodes.size() + textureBytes();
 }
 
 size_t PackedScene::textureBytes() const {
@@ -26,25 +25,10 @@ size_t PackedScene::textureBytes() const {
 }
 
 size_t PackedScene::geometryBytes() const {
-    return sizeof(glm::vec4) * (triangles.size() + nodeBounds.size()) + sizeof(glm::uvec4) * nodeLinks.size();
+    return sizeof(glm::vec4) * triangles.size() + sizeof(glm::uvec4) * nodes.size();
 }
 
 namespace {
-
-// Stores wide node `index` as gpu/layout.h says: the children's boxes one axis bound per texel, and
-// their links; empty slots get the unreachable box and link 0.
-void storeNode(const WideBvhNode& node, uint32_t index, PackedScene& out) {
-    glm::vec4* b = &out.nodeBounds[size_t(index) * layout::kNodeBoundsTexels];
-    for (int axis = 0; axis < 3; ++axis)
-        for (int i = 0; i < kWideBvhWidth; ++i) {
-            bool used = i < node.childCount;
-            b[2 * axis][i] = used ? node.bounds[i].lo[axis] : layout::kEmptyChildCoordinate;
-            b[2 * axis + 1][i] = used ? node.bounds[i].hi[axis] : layout::kEmptyChildCoordinate;
-        }
-    for (int i = 0; i < kWideBvhWidth; ++i)
-        out.nodeLinks[index][i] =
-            i < node.childCount ? layout::encodeChild({node.first[i], node.count[i]}) : 0u;
-}
 
 // Texture coordinates in leaf order, and every texture's texels with its table entry (gpu/layout.h).
 void packTextures(const Scene& scene, const Bvh& bvh, PackedScene* out) {
@@ -125,9 +109,11 @@ PackedScene packScene(const Scene& scene, const Bvh& bvh) {
     WideBvh wide = collapseToWide(bvh);
     out.nodeCount = uint32_t(wide.nodes.size());
     out.bvhDepth = wide.depth;
-    out.nodeBounds.resize(size_t(out.nodeCount) * layout::kNodeBoundsTexels);
-    out.nodeLinks.resize(out.nodeCount);
-    for (uint32_t i = 0; i < out.nodeCount; ++i) storeNode(wide.nodes[i], i, out);
+    out.nodes.resize(size_t(out.nodeCount) * layout::kNodeTexels);
+    for (uint32_t i = 0; i < out.nodeCount; ++i) {
+        layout::QuantisedNode q = layout::quantiseNode(wide.nodes[i]);
+        std::copy(q.begin(), q.end(), &out.nodes[size_t(i) * layout::kNodeTexels]);
+    }
     return out;
 }
 

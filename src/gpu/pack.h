@@ -14,9 +14,9 @@ namespace fp {
 
 struct PackedScene {
     // The per-triangle and per-node arrays are large for large scenes: see core/huge_page_allocator.h.
-    HugePageVector<glm::vec4> triangles, normals, nodeBounds;
+    HugePageVector<glm::vec4> triangles, normals;
     std::vector<glm::vec4> materials, lights;
-    HugePageVector<glm::uvec4> nodeLinks;
+    HugePageVector<glm::uvec4> nodes;  // layout::kNodeTexels per node
     // Empty unless some material has a texture (hasTextures()).
     HugePageVector<glm::vec2> texcoords;
     HugePageVector<uint8_t> textureTexels;  // 4 bytes per texel

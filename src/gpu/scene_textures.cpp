@@ -33,13 +33,11 @@ SceneTextures::SceneTextures(const PackedScene& s, size_t maxTexels) {
                           format,
                           unit};
     };
-    std::vector<BufferSpec> specs = {
-        spec("triangles", s.triangles, GL_RGBA32F, layout::kTrianglesUnit),
-        spec("normals", s.normals, GL_RGBA32F, layout::kNormalsUnit),
-        spec("BVH node bounds", s.nodeBounds, GL_RGBA32F, layout::kNodeBoundsUnit),
-        spec("BVH node links", s.nodeLinks, GL_RGBA32UI, layout::kNodeLinksUnit),
-        spec("materials", s.materials, GL_RGBA32F, layout::kMaterialsUnit),
-        spec("lights", s.lights, GL_RGBA32F, layout::kLightsUnit)};
+    std::vector<BufferSpec> specs = {spec("triangles", s.triangles, GL_RGBA32F, layout::kTrianglesUnit),
+                                     spec("normals", s.normals, GL_RGBA32F, layout::kNormalsUnit),
+                                     spec("BVH nodes", s.nodes, GL_RGBA32UI, layout::kNodesUnit),
+                                     spec("materials", s.materials, GL_RGBA32F, layout::kMaterialsUnit),
+                                     spec("lights", s.lights, GL_RGBA32F, layout::kLightsUnit)};
     if (s.hasTextures()) {
         specs.push_back(spec("texture coordinates", s.texcoords, GL_RG32F, layout::kTexcoordsUnit));
         specs.push_back(spec("texture texels", s.textureTexels, GL_RGBA8, layout::kTextureTexelsUnit, 4));

@@ -14,20 +14,20 @@
 
 #include "bvh/bvh.h"
 #include "core/aabb.h"
+#include "gpu/quantised_node.h"
 #include "scene/scene.h"
 
 namespace fp::native {
 
 constexpr uint32_t kStackSize = 64;  // traversal stack entries
 
-// A node of the 4-wide BVH (bvh/wide_bvh.h) with its four children's boxes, as in the GPU layout: one
-// bound of all four children per vector, so that the slab test of four boxes is a few vector operations
-// (what a native SIMD tracer does; Wald, Benthin & Boulos 2008). Empty slots are the unreachable box of
-// gpu/layout.h.
-struct Node {
-    glm::vec4 lo[3], hi[3];  // lo[axis][i]: child i's lower bound on that axis
-    uint32_t first[4];       // count > 0: triangles [first, first + count); count == 0: interior node `first`
-    uint32_t count[4];
+// A node of the 4-wide BVH (bvh/wide_bvh.h) exactly as the GPU layout stores it: 64 bytes, one cache
+// line, with the four children's boxes quantised to the node's grid and their links
+// (gpu/quantised_node.h). The reference tests the same quantised boxes as the shader, so that both
+// visit the same nodes (quantised boxes are a little larger than the exact ones, so exact boxes would
+// visit fewer) and read the same bytes per node.
+struct alignas(64) Node {
+    layout::QuantisedNode texels;
 };
 
 struct Tri {

@@ -201,8 +201,7 @@ void Renderer::setTraceUniforms(Program& p, int maxDepth) {
     p.use();
     p.set("uTriangles", int(layout::kTrianglesUnit));
     p.set("uNormals", int(layout::kNormalsUnit));
-    p.set("uNodeBounds", int(layout::kNodeBoundsUnit));
-    p.set("uNodeLinks", int(layout::kNodeLinksUnit));
+    p.set("uNodes", int(layout::kNodesUnit));
     p.set("uMaterials", int(layout::kMaterialsUnit));
     p.set("uLights", int(layout::kLightsUnit));
     p.set("uLightCount", int(lightCount_));

@@ -2,6 +2,7 @@
 // once through the node links, boxes that contain what they point to, and a light CDF that ends at 1.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <random>
 
 #include "core/error.h"
@@ -36,12 +37,28 @@ Bvh buildFor(const Scene& s) {
     return buildBinnedSah(bounds);
 }
 
-// Unpacks child `slot` (0 to 3) of node `i`.
+layout::QuantisedNode nodeAt(const PackedScene& p, uint32_t i) {
+    layout::QuantisedNode q;
+    for (int k = 0; k < layout::kNodeTexels; ++k)
+        q[size_t(k)] = p.nodes[size_t(i) * layout::kNodeTexels + size_t(k)];
+    return q;
+}
+
+uint32_t linkOf(const PackedScene& p, uint32_t node, int slot) {
+    return p.nodes[size_t(node) * layout::kNodeTexels + layout::kNodeLinkTexel][slot];
+}
+
+// Unpacks child `slot` (0 to 3) of node `i`: its quantised box.
 Aabb childBounds(const PackedScene& p, uint32_t i, int slot) {
-    const glm::vec4* t = &p.nodeBounds[size_t(i) * layout::kNodeBoundsTexels];
+    layout::QuantisedBox q = layout::decodeChildBox(nodeAt(p, i), slot);
     Aabb b;
-    b.lo = glm::vec3(t[0][slot], t[2][slot], t[4][slot]);
-    b.hi = glm::vec3(t[1][slot], t[3][slot], t[5][slot]);
+    // Rounded outwards to floats, so that containment below is never lost to the conversion.
+    for (int a = 0; a < 3; ++a) {
+        b.lo[a] = float(q.lo[a]);
+        if (double(b.lo[a]) > q.lo[a]) b.lo[a] = std::nextafter(b.lo[a], -INFINITY);
+        b.hi[a] = float(q.hi[a]);
+        if (double(b.hi[a]) < q.hi[a]) b.hi[a] = std::nextafter(b.hi[a], INFINITY);
+    }
     return b;
 }
 
@@ -60,42 +77,40 @@ Aabb packedTriangleBounds(const PackedScene& p, uint32_t i) {
     return b;
 }
 
-void walk(const PackedScene& p, uint32_t node, std::vector<int>& visits, uint32_t& nodesSeen) {
+// Walks the subtree of `node`, growing `reached` by the bounds of every triangle in it. Each child's
+// (quantised) box must contain every triangle of its subtree; the boxes of a subtree need not nest, as
+// each is rounded outwards on its own parent's grid.
+void walk(const PackedScene& p, uint32_t node, std::vector<int>& visits, uint32_t& nodesSeen, Aabb& reached) {
     ++nodesSeen;
     ASSERT_LT(node, p.nodeCount);
     for (int side = 0; side < 4; ++side) {
-        if (p.nodeLinks[node][side] == 0u) {
-            // An empty slot: a point no ray reaches before the shader's INF.
+        if (linkOf(p, node, side) == 0u) {
+            // An empty slot: an inverted box (the traversal skips it by its link).
             Aabb box = childBounds(p, node, side);
-            EXPECT_EQ(box.lo, glm::vec3(layout::kEmptyChildCoordinate))
-                << "node " << node << " slot " << side;
-            EXPECT_EQ(box.hi, glm::vec3(layout::kEmptyChildCoordinate))
-                << "node " << node << " slot " << side;
+            EXPECT_TRUE(box.empty()) << "node " << node << " slot " << side;
             continue;
         }
-        layout::ChildLink link = layout::decodeChild(p.nodeLinks[node][side]);
+        layout::ChildLink link = layout::decodeChild(linkOf(p, node, side));
         uint32_t first = link.first, count = link.count;
         Aabb box = childBounds(p, node, side);
+        Aabb subtree;
         if (count > 0) {
             for (uint32_t t = first; t < first + count; ++t) {
                 ASSERT_LT(t, p.triangleCount);
                 ++visits[t];
-                // Bounds are exact copies of the builder's floats; the packed v0 + e is recomputed, so
-                // allow one rounding of slack.
+                // The packed v0 + e is recomputed, so allow one rounding of slack.
                 Aabb tb = packedTriangleBounds(p, t);
                 glm::vec3 slack = 1e-5f * (glm::abs(tb.lo) + glm::abs(tb.hi));
                 tb.lo += slack;
                 tb.hi -= slack;
-                EXPECT_TRUE(contains(box, tb)) << "node " << node << " side " << side << " triangle " << t;
+                subtree.grow(tb);
             }
         } else {
             EXPECT_GT(first, node) << "children after their parent, and never the root";
-            for (int s = 0; s < 4; ++s) {
-                if (p.nodeLinks[first][s] == 0u) continue;
-                EXPECT_TRUE(contains(box, childBounds(p, first, s)));
-            }
-            walk(p, first, visits, nodesSeen);
+            walk(p, first, visits, nodesSeen, subtree);
         }
+        EXPECT_TRUE(contains(box, subtree)) << "node " << node << " side " << side;
+        reached.grow(subtree);
     }
 }
 
@@ -104,10 +119,11 @@ TEST(PackScene, EveryTriangleReachableOnceAndBoxesContainTheirContents) {
         Scene s = randomScene(n, uint32_t(n));
         PackedScene p = packScene(s, buildFor(s));
         ASSERT_EQ(p.triangles.size(), size_t(n) * layout::kTriangleTexels);
-        ASSERT_EQ(p.nodeBounds.size(), size_t(p.nodeCount) * layout::kNodeBoundsTexels);
+        ASSERT_EQ(p.nodes.size(), size_t(p.nodeCount) * layout::kNodeTexels);
         std::vector<int> visits(size_t(n), 0);
         uint32_t nodesSeen = 0;
-        walk(p, 0, visits, nodesSeen);
+        Aabb all;
+        walk(p, 0, visits, nodesSeen, all);
         EXPECT_EQ(nodesSeen, p.nodeCount) << n << " triangles";
         for (int v : visits) EXPECT_EQ(v, 1) << n << " triangles";
     }
@@ -140,7 +156,7 @@ TEST(PackScene, LightCdfIsPowerProportionalAndEndsAtOne) {
 TEST(PackScene, BytesPerTriangleAreReported) {
     Scene s = randomScene(1000, 3);
     PackedScene p = packScene(s, buildFor(s));
-    EXPECT_EQ(p.geometryBytes(), 16 * (p.triangles.size() + p.nodeBounds.size() + p.nodeLinks.size()));
+    EXPECT_EQ(p.geometryBytes(), 16 * p.triangles.size() + 64 * size_t(p.nodeCount));
     EXPECT_GT(p.bytes(), p.geometryBytes());
 }
 

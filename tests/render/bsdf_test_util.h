@@ -117,8 +117,8 @@ class BsdfProbe {
         // Every sampler the included files declare gets a unit of its own: a draw fails when two active
         // samplers of different types share a unit, and which samplers stay active is the compiler's
         // choice.
-        const char* sceneSamplers[] = {"uTriangles", "uNormals", "uNodeBounds", "uNodeLinks", "uLights"};
-        for (int i = 0; i < 5; ++i) program_.set(sceneSamplers[i], firstUnit_ - 1 - i);
+        const char* sceneSamplers[] = {"uTriangles", "uNormals", "uNodes", "uLights"};
+        for (int i = 0; i < 4; ++i) program_.set(sceneSamplers[i], firstUnit_ - 1 - i);
         program_.set("uMaterials", firstUnit_);
         program_.set("uWoEta", firstUnit_ + 1);
         program_.set("uWi", firstUnit_ + 2);

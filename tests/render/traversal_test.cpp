@@ -86,5 +86,40 @@ TEST(GpuTraversal, OverlappingLongTrianglesFromInsideMatchBruteForce) {
     expectDepthMatchesBruteForce(randomSoup(600, 0.9f, 2), c);
 }
 
+TEST(GpuTraversal, SmallTrianglesFarFromTheOriginMatchBruteForce) {
+    // Quantised boxes (gpu/quantised_node.h) on nodes whose coordinates are 10^4 times their size:
+    // the plane distances are differences of large terms, which the quantiser's margin must cover.
+    Scene s = randomSoup(3000, 0.08f, 3);
+    const glm::vec3 offset(4000.0f, -3000.0f, 2500.0f);
+    for (Triangle& t : s.triangles)
+        for (glm::vec3& p : t.p) p = offset + 0.25f * p;
+    Camera c;
+    c.eye = offset + glm::vec3(0.05f, 0.1f, -0.8f);
+    c.target = offset;
+    c.fovY = 35.0f;
+    expectDepthMatchesBruteForce(s, c);
+}
+
+TEST(GpuTraversal, EmptyChildSlotsAreNeverEntered) {
+    // One triangle: the root has one leaf child and three empty slots. An entered empty slot would
+    // push its link 0, the root, so some ray would count more than the one node.
+    ensureGlContext();
+    Scene s = randomSoup(1, 0.5f, 4);
+    s.triangles[0].p = {glm::vec3(-1.0f, -1.0f, 0.0f), glm::vec3(1.0f, -1.0f, 0.0f),
+                        glm::vec3(0.0f, 1.0f, 0.0f)};
+    Camera c;
+    c.eye = glm::vec3(0.0f, 0.0f, -3.0f);
+    c.target = glm::vec3(0.0f);
+    c.fovY = 60.0f;
+    Renderer renderer(s);
+    RenderSettings settings;
+    settings.width = settings.height = 32;
+    settings.view = View::Nodes;
+    renderer.configure(settings, c);
+    renderer.render(1);
+    Image nodes = renderer.readback().mean();
+    for (const glm::vec3& p : nodes.pixels) ASSERT_EQ(p.x, 1.0f);
+}
+
 }  // namespace
 }  // namespace fp::test
