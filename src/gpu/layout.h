@@ -32,8 +32,10 @@
 //                                            There are about half as many nodes as binary nodes. With
 //                                            bvhOptions() below, leaves hold about 4 triangles and there
 //                                            is about one node per 9 to 10 triangles, so positions + BVH
-//                                            come to about 48 + 7 = 55 bytes per triangle (the exact
-//                                            boxes of 112-byte nodes took 57.8-61.0; BENCHMARKS.md).
+//                                            come to about 48 + 7 = 55 bytes per triangle (54.0-55.5
+//                                            on cornell, sphere-100k and sphere-1m; the exact boxes of
+//                                            112-byte nodes took 57.8-61.1; BENCHMARKS.md, "Deep trees",
+//                                            entry 18).
 //  materials     RGBA32F    5 per material   (Kd.rgb, type) (Ke.rgb, roughness) (Ks.rgb, ior) (Tf.rgb, B)
 //                                            (diffuse texture, 0, 0, 0)
 //                                            B: Cauchy coefficient in nm^2 of a dispersive glass, else 0

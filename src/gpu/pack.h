@@ -32,7 +32,7 @@ struct PackedScene {
 };
 
 // Throws fp::Error if the scene cannot be addressed by the layout (over 2^24 triangles or materials,
-// or 2^31 texture texels).
+// 2^31 texture texels, or a BVH node over 2^40 across: gpu/quantised_node.h).
 PackedScene packScene(const Scene& scene, const Bvh& bvh);
 
 float luminance(const glm::vec3& rgb);

@@ -57,10 +57,22 @@ Scene buildScene(const fp::Scene& scene, const BvhBuildOptions& options) {
     }
     if (!out.lights.empty()) out.lights.back().cdf = 1.0f;
 
-    // The same wide tree, in the same order, as gpu/pack.cpp stores.
+    // The same wide tree, in the same order, as gpu/pack.cpp stores (with exact boxes: see Node).
     WideBvh wide = collapseToWide(bvh);
-    out.nodes.reserve(wide.nodes.size());
-    for (const WideBvhNode& w : wide.nodes) out.nodes.push_back({layout::quantiseNode(w)});
+    for (const WideBvhNode& w : wide.nodes) {
+        Node n{};
+        for (int axis = 0; axis < 3; ++axis)
+            for (int i = 0; i < kWideBvhWidth; ++i) {
+                bool used = i < w.childCount;
+                n.lo[axis][i] = used ? w.bounds[i].lo[axis] : kEmptyChildCoordinate;
+                n.hi[axis][i] = used ? w.bounds[i].hi[axis] : kEmptyChildCoordinate;
+            }
+        for (int i = 0; i < kWideBvhWidth; ++i) {
+            n.first[i] = i < w.childCount ? w.first[i] : 0;
+            n.count[i] = i < w.childCount ? w.count[i] : 0;
+        }
+        out.nodes.push_back(n);
+    }
     // The traversal stack holds at most three entries per level above the deepest node.
     if (3 * wide.depth + 1 > kStackSize)
         throw Error(scene.source + ": the BVH is " + std::to_string(wide.depth) +

@@ -3,8 +3,6 @@
 #include <algorithm>
 #include <cmath>
 
-#include "gpu/layout.h"
-
 namespace fp::native {
 
 namespace {
@@ -25,30 +23,19 @@ bool intersectTriangle(const Ray& ray, const Tri& tri, float tMax, float& t, glm
     return t > 0.0f && t < tMax;
 }
 
-// Child i's quantised planes, byte i of a plane's uint, as floats (planeSteps in intersect.glsl).
-glm::vec4 planeSteps(uint32_t plane) {
-    return glm::vec4(glm::uvec4(plane, plane >> 8, plane >> 16, plane >> 24) & 255u);
-}
-
-// Slab test of a node's four quantised children at once, as boxEntries in intersect.glsl: entry
-// distances, kInf where a box is missed within (0, tMax) or the slot is empty.
+// Slab test of a node's four children at once, as boxEntries in intersect.glsl: entry distances,
+// kInf where a box is missed within (0, tMax).
 glm::vec4 boxEntries(const glm::vec3& origin, const glm::vec3& invDir, const Node& n, float tMax) {
-    const glm::uvec4 &grid = n.texels[0], &link = n.texels[layout::kNodeLinkTexel];
-    const uint32_t planes[6] = {n.texels[1].x, n.texels[1].y, n.texels[1].z,
-                                n.texels[1].w, n.texels[2].x, n.texels[2].y};
-    glm::vec4 enter(0.0f), exit(kInf * 4.0f);  // above any distance, so the first min takes the axis' value
+    glm::vec4 enter(0.0f), exit(tMax);
+    glm::vec4 tFar(kInf * 4.0f);  // above any distance, so the first min takes the axis' value
     for (int axis = 0; axis < 3; ++axis) {
-        float scale = glm::uintBitsToFloat(((grid.w >> (8 * axis)) & 255u) << 23) * invDir[axis];
-        float offset = (glm::uintBitsToFloat(grid[axis]) - origin[axis]) * invDir[axis];
-        bool back = invDir[axis] < 0.0f;
-        uint32_t nearPlane = planes[2 * axis + (back ? 1 : 0)], farPlane = planes[2 * axis + (back ? 0 : 1)];
-        enter = glm::max(enter, planeSteps(nearPlane) * scale + offset);
-        exit = glm::min(exit, planeSteps(farPlane) * scale + offset);
+        glm::vec4 t0 = (n.lo[axis] - origin[axis]) * invDir[axis],
+                  t1 = (n.hi[axis] - origin[axis]) * invDir[axis];
+        enter = glm::max(enter, glm::min(t0, t1));
+        tFar = glm::min(tFar, glm::max(t0, t1));
     }
-    exit = glm::min(exit * 1.0000004f, glm::vec4(tMax));
-    glm::bvec4 hit = glm::lessThanEqual(enter, exit);
-    for (int i = 0; i < 4; ++i) hit[i] = hit[i] && link[i] != 0u;
-    return glm::mix(glm::vec4(kInf), enter, hit);
+    exit = glm::min(tFar * 1.0000004f, exit);
+    return glm::mix(glm::vec4(kInf), enter, glm::lessThanEqual(enter, exit));
 }
 
 // One compare-exchange of intersect.glsl's sorting network.
@@ -86,18 +73,16 @@ bool traverse(const Scene& scene, const Ray& ray, float tMax, bool anyHit, Hit& 
     for (;;) {
         const Node& n = scene.nodes[node];
         glm::vec4 t = boxEntries(ray.origin, invDir, n, hit.t);
-        const glm::uvec4& link = n.texels[layout::kNodeLinkTexel];
         // The leaf children hit, in child order, then the interior ones nearest first, as the shader.
         for (int i = 0; i < 4; ++i)
-            if (link[i] & layout::kLeafBit) {
-                uint32_t first = link[i] & layout::kMaxLeafFirst;
-                uint32_t count = ((link[i] >> layout::kLeafCountShift) & 15u) + 1u;
-                if (t[i] < kInf && intersectLeaf(scene, ray, first, count, anyHit, hit)) return true;
+            if (n.count[i] > 0) {
+                if (t[i] < kInf && intersectLeaf(scene, ray, n.first[i], n.count[i], anyHit, hit))
+                    return true;
                 t[i] = kInf;
             }
         t = glm::mix(t, glm::vec4(kInf), glm::greaterThan(t, glm::vec4(hit.t)));
         float t0 = t.x, t1 = t.y, t2 = t.z, t3 = t.w;
-        uint32_t l0 = link[0], l1 = link[1], l2 = link[2], l3 = link[3];  // interior: the node's index
+        uint32_t l0 = n.first[0], l1 = n.first[1], l2 = n.first[2], l3 = n.first[3];
         orderPair(t0, l0, t1, l1);
         orderPair(t2, l2, t3, l3);
         orderPair(t0, l0, t2, l2);

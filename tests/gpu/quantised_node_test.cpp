@@ -83,6 +83,25 @@ TEST(QuantisedNode, BoxesContainTheExactOnesAndAreAtMostOneStepLarger) {
                 for (int k = 0; k < 20; ++k) expectTightAndConservative(randomNode(rng, children, c, size));
 }
 
+TEST(QuantisedNode, TheGridIsAlignedToKeepAFlatChildsSlackOutsideTheNode) {
+    // The Cornell box's root: a room and the leaf of the ceiling and the light 0.1 below it, at the
+    // top of the node. On the default grid (steps of 4 from y = 0) that leaf would reach down to 548,
+    // past the light, and shadow rays would enter it; aligned, its slack lies above the node.
+    WideBvhNode n;
+    n.childCount = 2;
+    n.bounds[0].lo = glm::vec3(0.0f);
+    n.bounds[0].hi = glm::vec3(556.0f, 548.8f, 559.2f);
+    n.bounds[1].lo = glm::vec3(0.0f, 548.7f, 0.0f);
+    n.bounds[1].hi = glm::vec3(556.0f, 548.8f, 559.2f);
+    n.first[0] = 1;
+    n.first[1] = 2;
+    n.count[0] = n.count[1] = 2;
+    expectTightAndConservative(n);
+    layout::QuantisedNode q = layout::quantiseNode(n);
+    ASSERT_EQ(layout::gridStep(q).y, 4.0);
+    EXPECT_GT(layout::decodeChildBox(q, 1).lo.y, 548.69);
+}
+
 TEST(QuantisedNode, DegenerateNodesStayFinite) {
     // Every child the same point, at the origin and away from it: a grid of the smallest step.
     for (glm::vec3 p : {glm::vec3(0.0f), glm::vec3(2.0f, -1.0f, 0.5f)}) {
