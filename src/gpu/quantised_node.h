@@ -2,9 +2,8 @@
 // A 4-wide BVH node (bvh/wide_bvh.h) in 64 bytes, its children's boxes quantised to 8 bits per plane
 // on a grid local to the node (Ylitie, Karras & Laine 2017, "Efficient Incoherent Ray Traversal on GPUs
 // Through Compressed Wide BVHs", HPG, section 3.1), so that one node visit reads one cache line.
-// gpu/layout.h says where the texels go; this file says what they hold and how they are made. Both the
-// GPU layout and the native reference (native/native_scene.h) store these nodes, so both test the same
-// boxes and visit the same nodes.
+// gpu/layout.h says where the texels go; this file says what they hold and how they are made. The
+// native reference keeps exact boxes (native/native_scene.h says why).
 //
 //  texel  contents (4 uints each)
 //  0      (origin.x, origin.y, origin.z as float bits, scale exponents): the grid's corner p, and per
@@ -14,11 +13,13 @@
 //  2      (lo.z, hi.z, 0, 0)
 //  3      the four children's links (layout::encodeChild), 0 for an empty slot
 //
-// Child i's box is [p + s * lo_i, p + s * hi_i] per axis. lo is rounded down and hi up, after widening
-// the exact box by kQuantiseMargin relative to the node's coordinates, so the quantised box contains
-// the exact one with a margin that covers the rounding of the shader's plane distances
-// t = q * (s / d) + (p - o) / d (see boxEntries in intersect.glsl). An empty slot has link 0 and the
-// inverted box lo = 255, hi = 0; the traversal tells it by its link.
+// The step s is the smallest power of two whose 255 steps span the node's (widened) box; p is the
+// box's corner, or lower by less than a step where that puts a thin child's plane on the grid
+// (gridOrigin in quantised_node.cpp). Child i's box is [p + s * lo_i, p + s * hi_i] per axis. lo is
+// rounded down and hi up, after widening the exact box by kQuantiseMargin relative to the node's
+// coordinates, so the quantised box contains the exact one with a margin that covers the rounding of
+// the shader's plane distances t = q * (s / d) + (p - o) / d (boxEntries in intersect.glsl). An empty
+// slot has link 0 and the inverted box lo = 255, hi = 0; the traversal tells it by its link.
 #include <array>
 #include <cstdint>
 

@@ -29,7 +29,7 @@ constexpr uint32_t kStackSize = 64;  // traversal stack entries
 // ran 25-30 % slower with them on both the Cornell box and sphere-1m, BENCHMARKS.md "Quantised nodes"),
 // so a native tracer would not use them, and the comparison stays against what native code does best.
 // The quantised boxes are a little larger, so the shader visits a few more nodes and tests more
-// triangles than the reference (the Cornell box: +1 % nodes, +18 % triangle tests per path); every
+// triangles than the reference (the Cornell box: +1 % nodes, +2 % triangle tests per path); every
 // hit is the same except on exact ties.
 constexpr float kEmptyChildCoordinate = 1e30f;  // no ray reaches it before kInf
 
