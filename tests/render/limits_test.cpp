@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include "core/error.h"
+#include "gpu/layout.h"
 #include "gpu/scene_textures.h"
 #include "render_test_util.h"
 
@@ -23,6 +24,25 @@ TEST(Limits, SceneOverTheBufferTextureLimitIsAClearError) {
         EXPECT_NE(message.find("scene too large for this GPU"), std::string::npos) << message;
         EXPECT_NE(message.find("GL_MAX_TEXTURE_BUFFER_SIZE is 35"), std::string::npos) << message;
         EXPECT_NE(message.find("12 triangles"), std::string::npos) << message;
+    }
+}
+
+TEST(Limits, BvhNodesOverTheBufferTextureLimitAreAClearError) {
+    // One triangle: 3 triangle texels, but one BVH node of gpu/quantised_node.h's 4 texels.
+    ensureGlContext();
+    Scene scene = furnaceBox(0.5f, 1.0f);
+    scene.triangles.resize(1);
+    AabbArray bounds = {scene.triangles[0].bounds()};
+    PackedScene packed = packScene(scene, buildBinnedSah(bounds));
+    ASSERT_EQ(packed.nodes.size(), size_t(layout::kNodeTexels));
+    EXPECT_NO_THROW(SceneTextures(packed, 5));  // the one material takes 5
+    try {
+        SceneTextures textures(packed, 3);
+        FAIL() << "expected an error";
+    } catch (const Error& e) {
+        std::string message = e.what();
+        EXPECT_NE(message.find("BVH nodes buffer needs 4 texels"), std::string::npos) << message;
+        EXPECT_NE(message.find("GL_MAX_TEXTURE_BUFFER_SIZE is 3"), std::string::npos) << message;
     }
 }
 
