@@ -10,11 +10,12 @@
 #   e.g. tools/jit-profile.sh /tmp/jitprof 12 15 -- build/fragpath bench --suite --scenes sphere-100k --runs 40 --spp 8
 # Needs gdb, perf, objdump, python3; ptrace and perf access to the process (root, or
 # kernel.yama.ptrace_scope=0 and a low kernel.perf_event_paranoid).
-# Output: OUTDIR/jit_<start>.bin (code), jit_<start>.s (objdump), annotated.txt
-# ("address samples percent instruction"), summary.txt (per function, then the hottest instructions).
+# The command is killed when sampling ends. Output: OUTDIR/jit_<start>.bin (code), jit_<start>.s
+# (objdump), annotated.txt ("address samples percent instruction"), summary.txt (per function, then
+# the hottest instructions).
 set -euo pipefail
 if [ $# -lt 5 ] || [ "$4" != "--" ]; then
-    sed -n '2,15p' "$0" | sed 's/^# \{0,1\}//'
+    sed -n '2,16p' "$0" | sed 's/^# \{0,1\}//'
     exit 2
 fi
 out=$1 wait_s=$2 sample_s=$3
@@ -35,6 +36,7 @@ for m in "${maps[@]}"; do
 done
 gdb -p $pid -batch "${gdb_args[@]}" > "$out/gdb.log" 2>&1
 perf script -i "$out/perf.data" -F ip 2> /dev/null | awk '{print $1}' > "$out/ips.txt"
+[ -s "$out/ips.txt" ] || { echo "perf recorded no samples (see kernel.perf_event_paranoid)" >&2; exit 1; }
 for m in "${maps[@]}"; do
     objdump -D -b binary -m i386:x86-64 --adjust-vma=0x${m%-*} "$out/jit_${m%-*}.bin" > "$out/jit_${m%-*}.s"
 done
