@@ -35,7 +35,7 @@
 //                                            come to about 48 + 7 = 55 bytes per triangle (54.0-55.5
 //                                            on cornell, sphere-100k and sphere-1m; the exact boxes of
 //                                            112-byte nodes took 57.8-61.1; BENCHMARKS.md, "Deep trees",
-//                                            entry 18).
+//                                            entry 21).
 //  materials     RGBA32F    5 per material   (Kd.rgb, type) (Ke.rgb, roughness) (Ks.rgb, ior) (Tf.rgb, B)
 //                                            (diffuse texture, 0, 0, 0)
 //                                            B: Cauchy coefficient in nm^2 of a dispersive glass, else 0
