@@ -5,7 +5,7 @@
  *
  * Generator: C/C++
  * Specification: gl
- * Extensions: 0
+ * Extensions: 1
  *
  * APIs:
  *  - gl:core=4.1
@@ -19,10 +19,10 @@
  *  - ON_DEMAND = False
  *
  * Commandline:
- *    --api='gl:core=4.1' --extensions='' c
+ *    --api='gl:core=4.1' --extensions='GL_ARB_shader_image_load_store' c
  *
  * Online:
- *    http://glad.sh/#api=gl%3Acore%3D4.1&extensions=&generator=c&options=
+ *    http://glad.sh/#api=gl%3Acore%3D4.1&extensions=GL_ARB_shader_image_load_store&generator=c&options=
  *
  */
 
@@ -189,6 +189,7 @@ typedef void (*GLADpostcallback)(void *ret, const char *name, GLADapiproc apipro
 #define GL_ACTIVE_UNIFORM_BLOCK_MAX_NAME_LENGTH 0x8A35
 #define GL_ACTIVE_UNIFORM_MAX_LENGTH 0x8B87
 #define GL_ALIASED_LINE_WIDTH_RANGE 0x846E
+#define GL_ALL_BARRIER_BITS 0xFFFFFFFF
 #define GL_ALL_SHADER_BITS 0xFFFFFFFF
 #define GL_ALPHA 0x1906
 #define GL_ALREADY_SIGNALED 0x911A
@@ -199,6 +200,7 @@ typedef void (*GLADpostcallback)(void *ret, const char *name, GLADapiproc apipro
 #define GL_ANY_SAMPLES_PASSED 0x8C2F
 #define GL_ARRAY_BUFFER 0x8892
 #define GL_ARRAY_BUFFER_BINDING 0x8894
+#define GL_ATOMIC_COUNTER_BARRIER_BIT 0x00001000
 #define GL_ATTACHED_SHADERS 0x8B85
 #define GL_BACK 0x0405
 #define GL_BACK_LEFT 0x0402
@@ -231,6 +233,7 @@ typedef void (*GLADpostcallback)(void *ret, const char *name, GLADapiproc apipro
 #define GL_BUFFER_MAP_OFFSET 0x9121
 #define GL_BUFFER_MAP_POINTER 0x88BD
 #define GL_BUFFER_SIZE 0x8764
+#define GL_BUFFER_UPDATE_BARRIER_BIT 0x00000200
 #define GL_BUFFER_USAGE 0x8765
 #define GL_BYTE 0x1400
 #define GL_CCW 0x0901
@@ -283,6 +286,7 @@ typedef void (*GLADpostcallback)(void *ret, const char *name, GLADapiproc apipro
 #define GL_COLOR_CLEAR_VALUE 0x0C22
 #define GL_COLOR_LOGIC_OP 0x0BF2
 #define GL_COLOR_WRITEMASK 0x0C23
+#define GL_COMMAND_BARRIER_BIT 0x00000040
 #define GL_COMPARE_REF_TO_TEXTURE 0x884E
 #define GL_COMPATIBLE_SUBROUTINES 0x8E4B
 #define GL_COMPILE_STATUS 0x8B81
@@ -378,6 +382,7 @@ typedef void (*GLADpostcallback)(void *ret, const char *name, GLADapiproc apipro
 #define GL_DYNAMIC_COPY 0x88EA
 #define GL_DYNAMIC_DRAW 0x88E8
 #define GL_DYNAMIC_READ 0x88E9
+#define GL_ELEMENT_ARRAY_BARRIER_BIT 0x00000002
 #define GL_ELEMENT_ARRAY_BUFFER 0x8893
 #define GL_ELEMENT_ARRAY_BUFFER_BINDING 0x8895
 #define GL_EQUAL 0x0202
@@ -424,6 +429,7 @@ typedef void (*GLADpostcallback)(void *ret, const char *name, GLADapiproc apipro
 #define GL_FRAMEBUFFER_ATTACHMENT_TEXTURE_CUBE_MAP_FACE 0x8CD3
 #define GL_FRAMEBUFFER_ATTACHMENT_TEXTURE_LAYER 0x8CD4
 #define GL_FRAMEBUFFER_ATTACHMENT_TEXTURE_LEVEL 0x8CD2
+#define GL_FRAMEBUFFER_BARRIER_BIT 0x00000400
 #define GL_FRAMEBUFFER_BINDING 0x8CA6
 #define GL_FRAMEBUFFER_COMPLETE 0x8CD5
 #define GL_FRAMEBUFFER_DEFAULT 0x8218
@@ -457,6 +463,26 @@ typedef void (*GLADpostcallback)(void *ret, const char *name, GLADapiproc apipro
 #define GL_HALF_FLOAT 0x140B
 #define GL_HIGH_FLOAT 0x8DF2
 #define GL_HIGH_INT 0x8DF5
+#define GL_IMAGE_1D 0x904C
+#define GL_IMAGE_1D_ARRAY 0x9052
+#define GL_IMAGE_2D 0x904D
+#define GL_IMAGE_2D_ARRAY 0x9053
+#define GL_IMAGE_2D_MULTISAMPLE 0x9055
+#define GL_IMAGE_2D_MULTISAMPLE_ARRAY 0x9056
+#define GL_IMAGE_2D_RECT 0x904F
+#define GL_IMAGE_3D 0x904E
+#define GL_IMAGE_BINDING_ACCESS 0x8F3E
+#define GL_IMAGE_BINDING_FORMAT 0x906E
+#define GL_IMAGE_BINDING_LAYER 0x8F3D
+#define GL_IMAGE_BINDING_LAYERED 0x8F3C
+#define GL_IMAGE_BINDING_LEVEL 0x8F3B
+#define GL_IMAGE_BINDING_NAME 0x8F3A
+#define GL_IMAGE_BUFFER 0x9051
+#define GL_IMAGE_CUBE 0x9050
+#define GL_IMAGE_CUBE_MAP_ARRAY 0x9054
+#define GL_IMAGE_FORMAT_COMPATIBILITY_BY_CLASS 0x90C9
+#define GL_IMAGE_FORMAT_COMPATIBILITY_BY_SIZE 0x90C8
+#define GL_IMAGE_FORMAT_COMPATIBILITY_TYPE 0x90C7
 #define GL_IMPLEMENTATION_COLOR_READ_FORMAT 0x8B9B
 #define GL_IMPLEMENTATION_COLOR_READ_TYPE 0x8B9A
 #define GL_INCR 0x1E02
@@ -465,6 +491,17 @@ typedef void (*GLADpostcallback)(void *ret, const char *name, GLADapiproc apipro
 #define GL_INT 0x1404
 #define GL_INTERLEAVED_ATTRIBS 0x8C8C
 #define GL_INT_2_10_10_10_REV 0x8D9F
+#define GL_INT_IMAGE_1D 0x9057
+#define GL_INT_IMAGE_1D_ARRAY 0x905D
+#define GL_INT_IMAGE_2D 0x9058
+#define GL_INT_IMAGE_2D_ARRAY 0x905E
+#define GL_INT_IMAGE_2D_MULTISAMPLE 0x9060
+#define GL_INT_IMAGE_2D_MULTISAMPLE_ARRAY 0x9061
+#define GL_INT_IMAGE_2D_RECT 0x905A
+#define GL_INT_IMAGE_3D 0x9059
+#define GL_INT_IMAGE_BUFFER 0x905C
+#define GL_INT_IMAGE_CUBE 0x905B
+#define GL_INT_IMAGE_CUBE_MAP_ARRAY 0x905F
 #define GL_INT_SAMPLER_1D 0x8DC9
 #define GL_INT_SAMPLER_1D_ARRAY 0x8DCE
 #define GL_INT_SAMPLER_2D 0x8DCA
@@ -526,6 +563,8 @@ typedef void (*GLADpostcallback)(void *ret, const char *name, GLADapiproc apipro
 #define GL_MAX_COLOR_TEXTURE_SAMPLES 0x910E
 #define GL_MAX_COMBINED_FRAGMENT_UNIFORM_COMPONENTS 0x8A33
 #define GL_MAX_COMBINED_GEOMETRY_UNIFORM_COMPONENTS 0x8A32
+#define GL_MAX_COMBINED_IMAGE_UNIFORMS 0x90CF
+#define GL_MAX_COMBINED_IMAGE_UNITS_AND_FRAGMENT_OUTPUTS 0x8F39
 #define GL_MAX_COMBINED_TESS_CONTROL_UNIFORM_COMPONENTS 0x8E1E
 #define GL_MAX_COMBINED_TESS_EVALUATION_UNIFORM_COMPONENTS 0x8E1F
 #define GL_MAX_COMBINED_TEXTURE_IMAGE_UNITS 0x8B4D
@@ -537,11 +576,13 @@ typedef void (*GLADpostcallback)(void *ret, const char *name, GLADapiproc apipro
 #define GL_MAX_DUAL_SOURCE_DRAW_BUFFERS 0x88FC
 #define GL_MAX_ELEMENTS_INDICES 0x80E9
 #define GL_MAX_ELEMENTS_VERTICES 0x80E8
+#define GL_MAX_FRAGMENT_IMAGE_UNIFORMS 0x90CE
 #define GL_MAX_FRAGMENT_INPUT_COMPONENTS 0x9125
 #define GL_MAX_FRAGMENT_INTERPOLATION_OFFSET 0x8E5C
 #define GL_MAX_FRAGMENT_UNIFORM_BLOCKS 0x8A2D
 #define GL_MAX_FRAGMENT_UNIFORM_COMPONENTS 0x8B49
 #define GL_MAX_FRAGMENT_UNIFORM_VECTORS 0x8DFD
+#define GL_MAX_GEOMETRY_IMAGE_UNIFORMS 0x90CD
 #define GL_MAX_GEOMETRY_INPUT_COMPONENTS 0x9123
 #define GL_MAX_GEOMETRY_OUTPUT_COMPONENTS 0x9124
 #define GL_MAX_GEOMETRY_OUTPUT_VERTICES 0x8DE0
@@ -550,6 +591,8 @@ typedef void (*GLADpostcallback)(void *ret, const char *name, GLADapiproc apipro
 #define GL_MAX_GEOMETRY_TOTAL_OUTPUT_COMPONENTS 0x8DE1
 #define GL_MAX_GEOMETRY_UNIFORM_BLOCKS 0x8A2C
 #define GL_MAX_GEOMETRY_UNIFORM_COMPONENTS 0x8DDF
+#define GL_MAX_IMAGE_SAMPLES 0x906D
+#define GL_MAX_IMAGE_UNITS 0x8F38
 #define GL_MAX_INTEGER_SAMPLES 0x9110
 #define GL_MAX_PATCH_VERTICES 0x8E7D
 #define GL_MAX_PROGRAM_TEXEL_OFFSET 0x8905
@@ -561,12 +604,14 @@ typedef void (*GLADpostcallback)(void *ret, const char *name, GLADapiproc apipro
 #define GL_MAX_SERVER_WAIT_TIMEOUT 0x9111
 #define GL_MAX_SUBROUTINES 0x8DE7
 #define GL_MAX_SUBROUTINE_UNIFORM_LOCATIONS 0x8DE8
+#define GL_MAX_TESS_CONTROL_IMAGE_UNIFORMS 0x90CB
 #define GL_MAX_TESS_CONTROL_INPUT_COMPONENTS 0x886C
 #define GL_MAX_TESS_CONTROL_OUTPUT_COMPONENTS 0x8E83
 #define GL_MAX_TESS_CONTROL_TEXTURE_IMAGE_UNITS 0x8E81
 #define GL_MAX_TESS_CONTROL_TOTAL_OUTPUT_COMPONENTS 0x8E85
 #define GL_MAX_TESS_CONTROL_UNIFORM_BLOCKS 0x8E89
 #define GL_MAX_TESS_CONTROL_UNIFORM_COMPONENTS 0x8E7F
+#define GL_MAX_TESS_EVALUATION_IMAGE_UNIFORMS 0x90CC
 #define GL_MAX_TESS_EVALUATION_INPUT_COMPONENTS 0x886D
 #define GL_MAX_TESS_EVALUATION_OUTPUT_COMPONENTS 0x8E86
 #define GL_MAX_TESS_EVALUATION_TEXTURE_IMAGE_UNITS 0x8E82
@@ -588,6 +633,7 @@ typedef void (*GLADpostcallback)(void *ret, const char *name, GLADapiproc apipro
 #define GL_MAX_VARYING_FLOATS 0x8B4B
 #define GL_MAX_VARYING_VECTORS 0x8DFC
 #define GL_MAX_VERTEX_ATTRIBS 0x8869
+#define GL_MAX_VERTEX_IMAGE_UNIFORMS 0x90CA
 #define GL_MAX_VERTEX_OUTPUT_COMPONENTS 0x9122
 #define GL_MAX_VERTEX_STREAMS 0x8E71
 #define GL_MAX_VERTEX_TEXTURE_IMAGE_UNITS 0x8B4C
@@ -648,6 +694,7 @@ typedef void (*GLADpostcallback)(void *ret, const char *name, GLADapiproc apipro
 #define GL_PATCH_DEFAULT_INNER_LEVEL 0x8E73
 #define GL_PATCH_DEFAULT_OUTER_LEVEL 0x8E74
 #define GL_PATCH_VERTICES 0x8E72
+#define GL_PIXEL_BUFFER_BARRIER_BIT 0x00000080
 #define GL_PIXEL_PACK_BUFFER 0x88EB
 #define GL_PIXEL_PACK_BUFFER_BINDING 0x88ED
 #define GL_PIXEL_UNPACK_BUFFER 0x88EC
@@ -825,6 +872,7 @@ typedef void (*GLADpostcallback)(void *ret, const char *name, GLADapiproc apipro
 #define GL_SET 0x150F
 #define GL_SHADER_BINARY_FORMATS 0x8DF8
 #define GL_SHADER_COMPILER 0x8DFA
+#define GL_SHADER_IMAGE_ACCESS_BARRIER_BIT 0x00000020
 #define GL_SHADER_SOURCE_LENGTH 0x8B88
 #define GL_SHADER_TYPE 0x8B4F
 #define GL_SHADING_LANGUAGE_VERSION 0x8B8C
@@ -967,6 +1015,7 @@ typedef void (*GLADpostcallback)(void *ret, const char *name, GLADapiproc apipro
 #define GL_TEXTURE_DEPTH 0x8071
 #define GL_TEXTURE_DEPTH_SIZE 0x884A
 #define GL_TEXTURE_DEPTH_TYPE 0x8C16
+#define GL_TEXTURE_FETCH_BARRIER_BIT 0x00000008
 #define GL_TEXTURE_FIXED_SAMPLE_LOCATIONS 0x9107
 #define GL_TEXTURE_GREEN_SIZE 0x805D
 #define GL_TEXTURE_GREEN_TYPE 0x8C11
@@ -989,6 +1038,7 @@ typedef void (*GLADpostcallback)(void *ret, const char *name, GLADapiproc apipro
 #define GL_TEXTURE_SWIZZLE_G 0x8E43
 #define GL_TEXTURE_SWIZZLE_R 0x8E42
 #define GL_TEXTURE_SWIZZLE_RGBA 0x8E46
+#define GL_TEXTURE_UPDATE_BARRIER_BIT 0x00000100
 #define GL_TEXTURE_WIDTH 0x1000
 #define GL_TEXTURE_WRAP_R 0x8072
 #define GL_TEXTURE_WRAP_S 0x2802
@@ -998,6 +1048,7 @@ typedef void (*GLADpostcallback)(void *ret, const char *name, GLADapiproc apipro
 #define GL_TIMESTAMP 0x8E28
 #define GL_TIME_ELAPSED 0x88BF
 #define GL_TRANSFORM_FEEDBACK 0x8E22
+#define GL_TRANSFORM_FEEDBACK_BARRIER_BIT 0x00000800
 #define GL_TRANSFORM_FEEDBACK_BINDING 0x8E25
 #define GL_TRANSFORM_FEEDBACK_BUFFER 0x8C8E
 #define GL_TRANSFORM_FEEDBACK_BUFFER_ACTIVE 0x8E24
@@ -1017,6 +1068,7 @@ typedef void (*GLADpostcallback)(void *ret, const char *name, GLADapiproc apipro
 #define GL_TRUE 1
 #define GL_UNDEFINED_VERTEX 0x8260
 #define GL_UNIFORM_ARRAY_STRIDE 0x8A3C
+#define GL_UNIFORM_BARRIER_BIT 0x00000004
 #define GL_UNIFORM_BLOCK_ACTIVE_UNIFORMS 0x8A42
 #define GL_UNIFORM_BLOCK_ACTIVE_UNIFORM_INDICES 0x8A43
 #define GL_UNIFORM_BLOCK_BINDING 0x8A3F
@@ -1059,6 +1111,17 @@ typedef void (*GLADpostcallback)(void *ret, const char *name, GLADapiproc apipro
 #define GL_UNSIGNED_INT_5_9_9_9_REV 0x8C3E
 #define GL_UNSIGNED_INT_8_8_8_8 0x8035
 #define GL_UNSIGNED_INT_8_8_8_8_REV 0x8367
+#define GL_UNSIGNED_INT_IMAGE_1D 0x9062
+#define GL_UNSIGNED_INT_IMAGE_1D_ARRAY 0x9068
+#define GL_UNSIGNED_INT_IMAGE_2D 0x9063
+#define GL_UNSIGNED_INT_IMAGE_2D_ARRAY 0x9069
+#define GL_UNSIGNED_INT_IMAGE_2D_MULTISAMPLE 0x906B
+#define GL_UNSIGNED_INT_IMAGE_2D_MULTISAMPLE_ARRAY 0x906C
+#define GL_UNSIGNED_INT_IMAGE_2D_RECT 0x9065
+#define GL_UNSIGNED_INT_IMAGE_3D 0x9064
+#define GL_UNSIGNED_INT_IMAGE_BUFFER 0x9067
+#define GL_UNSIGNED_INT_IMAGE_CUBE 0x9066
+#define GL_UNSIGNED_INT_IMAGE_CUBE_MAP_ARRAY 0x906A
 #define GL_UNSIGNED_INT_SAMPLER_1D 0x8DD1
 #define GL_UNSIGNED_INT_SAMPLER_1D_ARRAY 0x8DD6
 #define GL_UNSIGNED_INT_SAMPLER_2D 0x8DD2
@@ -1086,6 +1149,7 @@ typedef void (*GLADpostcallback)(void *ret, const char *name, GLADapiproc apipro
 #define GL_VENDOR 0x1F00
 #define GL_VERSION 0x1F02
 #define GL_VERTEX_ARRAY_BINDING 0x85B5
+#define GL_VERTEX_ATTRIB_ARRAY_BARRIER_BIT 0x00000001
 #define GL_VERTEX_ATTRIB_ARRAY_BUFFER_BINDING 0x889F
 #define GL_VERTEX_ATTRIB_ARRAY_DIVISOR 0x88FE
 #define GL_VERTEX_ATTRIB_ARRAY_ENABLED 0x8622
@@ -1201,6 +1265,8 @@ GLAD_API_CALL int GLAD_GL_VERSION_3_3;
 GLAD_API_CALL int GLAD_GL_VERSION_4_0;
 #define GL_VERSION_4_1 1
 GLAD_API_CALL int GLAD_GL_VERSION_4_1;
+#define GL_ARB_shader_image_load_store 1
+GLAD_API_CALL int GLAD_GL_ARB_shader_image_load_store;
 
 
 typedef void (GLAD_API_PTR *PFNGLACTIVESHADERPROGRAMPROC)(GLuint pipeline, GLuint program);
@@ -1217,6 +1283,7 @@ typedef void (GLAD_API_PTR *PFNGLBINDBUFFERRANGEPROC)(GLenum target, GLuint inde
 typedef void (GLAD_API_PTR *PFNGLBINDFRAGDATALOCATIONPROC)(GLuint program, GLuint color, const GLchar * name);
 typedef void (GLAD_API_PTR *PFNGLBINDFRAGDATALOCATIONINDEXEDPROC)(GLuint program, GLuint colorNumber, GLuint index, const GLchar * name);
 typedef void (GLAD_API_PTR *PFNGLBINDFRAMEBUFFERPROC)(GLenum target, GLuint framebuffer);
+typedef void (GLAD_API_PTR *PFNGLBINDIMAGETEXTUREPROC)(GLuint unit, GLuint texture, GLint level, GLboolean layered, GLint layer, GLenum access, GLenum format);
 typedef void (GLAD_API_PTR *PFNGLBINDPROGRAMPIPELINEPROC)(GLuint pipeline);
 typedef void (GLAD_API_PTR *PFNGLBINDRENDERBUFFERPROC)(GLenum target, GLuint renderbuffer);
 typedef void (GLAD_API_PTR *PFNGLBINDSAMPLERPROC)(GLuint unit, GLuint sampler);
@@ -1430,6 +1497,7 @@ typedef void (GLAD_API_PTR *PFNGLLINKPROGRAMPROC)(GLuint program);
 typedef void (GLAD_API_PTR *PFNGLLOGICOPPROC)(GLenum opcode);
 typedef void * (GLAD_API_PTR *PFNGLMAPBUFFERPROC)(GLenum target, GLenum access);
 typedef void * (GLAD_API_PTR *PFNGLMAPBUFFERRANGEPROC)(GLenum target, GLintptr offset, GLsizeiptr length, GLbitfield access);
+typedef void (GLAD_API_PTR *PFNGLMEMORYBARRIERPROC)(GLbitfield barriers);
 typedef void (GLAD_API_PTR *PFNGLMINSAMPLESHADINGPROC)(GLfloat value);
 typedef void (GLAD_API_PTR *PFNGLMULTIDRAWARRAYSPROC)(GLenum mode, const GLint * first, const GLsizei * count, GLsizei drawcount);
 typedef void (GLAD_API_PTR *PFNGLMULTIDRAWELEMENTSPROC)(GLenum mode, const GLsizei * count, GLenum type, const void *const* indices, GLsizei drawcount);
@@ -1710,6 +1778,8 @@ GLAD_API_CALL PFNGLBINDFRAGDATALOCATIONINDEXEDPROC glad_glBindFragDataLocationIn
 #define glBindFragDataLocationIndexed glad_glBindFragDataLocationIndexed
 GLAD_API_CALL PFNGLBINDFRAMEBUFFERPROC glad_glBindFramebuffer;
 #define glBindFramebuffer glad_glBindFramebuffer
+GLAD_API_CALL PFNGLBINDIMAGETEXTUREPROC glad_glBindImageTexture;
+#define glBindImageTexture glad_glBindImageTexture
 GLAD_API_CALL PFNGLBINDPROGRAMPIPELINEPROC glad_glBindProgramPipeline;
 #define glBindProgramPipeline glad_glBindProgramPipeline
 GLAD_API_CALL PFNGLBINDRENDERBUFFERPROC glad_glBindRenderbuffer;
@@ -2136,6 +2206,8 @@ GLAD_API_CALL PFNGLMAPBUFFERPROC glad_glMapBuffer;
 #define glMapBuffer glad_glMapBuffer
 GLAD_API_CALL PFNGLMAPBUFFERRANGEPROC glad_glMapBufferRange;
 #define glMapBufferRange glad_glMapBufferRange
+GLAD_API_CALL PFNGLMEMORYBARRIERPROC glad_glMemoryBarrier;
+#define glMemoryBarrier glad_glMemoryBarrier
 GLAD_API_CALL PFNGLMINSAMPLESHADINGPROC glad_glMinSampleShading;
 #define glMinSampleShading glad_glMinSampleShading
 GLAD_API_CALL PFNGLMULTIDRAWARRAYSPROC glad_glMultiDrawArrays;
