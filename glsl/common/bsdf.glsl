@@ -25,10 +25,10 @@ struct MaterialData {
 };
 
 MaterialData fetchMaterial(int m) {
-    vec4 a = texelFetch(uMaterials, m * MATERIAL_TEXELS);
-    vec4 b = texelFetch(uMaterials, m * MATERIAL_TEXELS + 1);
-    vec4 c = texelFetch(uMaterials, m * MATERIAL_TEXELS + 2);
-    vec4 d = texelFetch(uMaterials, m * MATERIAL_TEXELS + 3);
+    vec4 a = materialTexel(m * MATERIAL_TEXELS);
+    vec4 b = materialTexel(m * MATERIAL_TEXELS + 1);
+    vec4 c = materialTexel(m * MATERIAL_TEXELS + 2);
+    vec4 d = materialTexel(m * MATERIAL_TEXELS + 3);
     return MaterialData(int(a.w), a.rgb, b.rgb, c.rgb, d.rgb, b.w, c.w, d.w);
 }
 

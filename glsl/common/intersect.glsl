@@ -114,9 +114,9 @@ bool traverse(Ray ray, float tMax, bool anyHit, out Hit hit) {
     while (true) {
         ++gNodesVisited;
         int base = int(node) * NODE_TEXELS;  // one 64-byte node, laid out as layout.h says
-        uvec4 link = texelFetch(uNodes, base + NODE_LINK_TEXEL);  // child links
-        vec4 t = boxEntries(ray.origin, invDir, texelFetch(uNodes, base), texelFetch(uNodes, base + 1),
-                            texelFetch(uNodes, base + 2), link, hit.t);
+        uvec4 link = nodeTexel(base + NODE_LINK_TEXEL);  // child links
+        vec4 t = boxEntries(ray.origin, invDir, nodeTexel(base), nodeTexel(base + 1),
+                            nodeTexel(base + 2), link, hit.t);
         bvec4 leaf = notEqual(link & LEAF_BIT, uvec4(0u));
         // The leaf children that were hit: their triangle counts, zero for the others.
         uvec4 count = (((link >> LEAF_COUNT_SHIFT) & 15u) + 1u) * uvec4(leaf) * uvec4(lessThan(t, vec4(INF)));

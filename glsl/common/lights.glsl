@@ -92,7 +92,7 @@ int pickLight(float u) {
     int lo = 0, hi = uLightCount - 1;
     while (lo < hi) {  // first entry whose cdf exceeds u
         int mid = (lo + hi) / 2;
-        if (texelFetch(uLights, mid).y <= u) lo = mid + 1;
+        if (lightTexel(mid).y <= u) lo = mid + 1;
         else hi = mid;
     }
     return lo;
@@ -110,7 +110,7 @@ LightSample sampleLight(vec3 from) {
         return ls;
     }
     if (uLightCount == 0) return ls;
-    vec4 light = texelFetch(uLights, pickLight((u - pEnvironment) / (1.0 - pEnvironment)));
+    vec4 light = lightTexel(pickLight((u - pEnvironment) / (1.0 - pEnvironment)));
     TriangleData tri = fetchTriangle(int(light.x));
     vec2 b = sampleTriangle(rand2());
     vec3 toLight = tri.v0 + b.x * tri.e1 + b.y * tri.e2 - from;

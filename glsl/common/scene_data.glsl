@@ -1,11 +1,34 @@
 // Reading the scene from its buffer textures. The texel layout is documented once, in src/gpu/layout.h;
 // the *_TEXELS constants come from there as defines.
+//
+// Every read of these buffers goes through the one-line helpers below (triangleTexel ... lightTexel). With
+// SCENE_READS_IMAGES (the context has GL_ARB_shader_image_load_store: gpu/scene_textures.h), they are
+// imageLoads of read-only image buffers, which llvmpipe generates inline; without, texelFetches, which
+// llvmpipe makes out-of-line calls for these formats, spilling everything live (BENCHMARKS.md, entries
+// 18 and 22). The texels are the same, so the images rendered are bit-identical. Each image uses the
+// image unit of its texture unit's number (the uniforms keep their names); layout::kImageUnits lists them.
+#ifdef SCENE_READS_IMAGES
+layout(rgba32f) readonly uniform imageBuffer uTriangles;
+layout(rgba32f) readonly uniform imageBuffer uNormals;
+layout(rgba32ui) readonly uniform uimageBuffer uNodes;  // NODE_TEXELS per node
+layout(rgba32f) readonly uniform imageBuffer uMaterials;
+layout(rgba32f) readonly uniform imageBuffer uLights;
+#define SCENE_TEXEL(buffer, i) imageLoad(buffer, i)
+#else
 uniform samplerBuffer uTriangles;
 uniform samplerBuffer uNormals;
 uniform usamplerBuffer uNodes;  // RGBA32UI, NODE_TEXELS per node
 uniform samplerBuffer uMaterials;
 uniform samplerBuffer uLights;
+#define SCENE_TEXEL(buffer, i) texelFetch(buffer, i)
+#endif
 uniform int uLightCount;
+
+vec4 triangleTexel(int i) { return SCENE_TEXEL(uTriangles, i); }
+vec4 normalTexel(int i) { return SCENE_TEXEL(uNormals, i); }
+uvec4 nodeTexel(int i) { return SCENE_TEXEL(uNodes, i); }
+vec4 materialTexel(int i) { return SCENE_TEXEL(uMaterials, i); }
+vec4 lightTexel(int i) { return SCENE_TEXEL(uLights, i); }
 
 struct TriangleData {
     vec3 v0, e1, e2;  // e1 = v1 - v0, e2 = v2 - v0
@@ -14,19 +37,19 @@ struct TriangleData {
 };
 
 TriangleData fetchTriangle(int i) {
-    vec4 a = texelFetch(uTriangles, i * TRIANGLE_TEXELS);
-    vec4 b = texelFetch(uTriangles, i * TRIANGLE_TEXELS + 1);
-    vec4 c = texelFetch(uTriangles, i * TRIANGLE_TEXELS + 2);
+    vec4 a = triangleTexel(i * TRIANGLE_TEXELS);
+    vec4 b = triangleTexel(i * TRIANGLE_TEXELS + 1);
+    vec4 c = triangleTexel(i * TRIANGLE_TEXELS + 2);
     return TriangleData(a.xyz, b.xyz, c.xyz, int(a.w), b.w);
 }
 
 vec3 fetchShadingNormal(int i, vec2 uv) {
-    vec3 n0 = texelFetch(uNormals, i * NORMAL_TEXELS).xyz;
-    vec3 n1 = texelFetch(uNormals, i * NORMAL_TEXELS + 1).xyz;
-    vec3 n2 = texelFetch(uNormals, i * NORMAL_TEXELS + 2).xyz;
+    vec3 n0 = normalTexel(i * NORMAL_TEXELS).xyz;
+    vec3 n1 = normalTexel(i * NORMAL_TEXELS + 1).xyz;
+    vec3 n2 = normalTexel(i * NORMAL_TEXELS + 2).xyz;
     return normalize((1.0 - uv.x - uv.y) * n0 + uv.x * n1 + uv.y * n2);
 }
 
-vec3 materialEmission(int m) { return texelFetch(uMaterials, m * MATERIAL_TEXELS + 1).rgb; }
+vec3 materialEmission(int m) { return materialTexel(m * MATERIAL_TEXELS + 1).rgb; }
 
 #include "common/luminance.glsl"

@@ -6,7 +6,7 @@ uniform samplerBuffer uTexcoords;
 uniform samplerBuffer uTextureTexels;
 uniform isamplerBuffer uTextureTable;
 
-int materialTexture(int m) { return int(texelFetch(uMaterials, m * MATERIAL_TEXELS + 4).x); }
+int materialTexture(int m) { return int(materialTexel(m * MATERIAL_TEXELS + 4).x); }
 
 // The texture coordinates at barycentrics b of triangle i.
 vec2 fetchTexcoord(int i, vec2 b) {

@@ -53,7 +53,7 @@
 // triangle): the unweighted contribution beta_z f(z -> y) Le(y -> z) |cos(theta_y)| / (r^2 p_A(y)).
 vec3 connectToLight(int t) {
     PathVertex c = gCamera[t - 1];
-    vec4 light = texelFetch(uLights, pickLight(rand()));
+    vec4 light = lightTexel(pickLight(rand()));
     TriangleData tri = fetchTriangle(int(light.x));
     vec2 b = sampleTriangle(rand2());
     vec3 normal = normalize(cross(tri.e1, tri.e2));

@@ -187,7 +187,7 @@ int traceLightSubpath(int maxDepth) {
     int n = min(BDPT_MAX_LIGHT_VERTICES, maxDepth + 1);
     for (int i = 0; i < BDPT_MAX_LIGHT_VERTICES; ++i) gLightDelta[i] = false;
     if (n == 0 || uLightCount == 0) return 0;
-    vec4 light = texelFetch(uLights, pickLight(rand()));
+    vec4 light = lightTexel(pickLight(rand()));
     TriangleData tri = fetchTriangle(int(light.x));
     vec2 b = sampleTriangle(rand2());
     vec3 normal = normalize(cross(tri.e1, tri.e2));

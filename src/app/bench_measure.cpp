@@ -228,6 +228,8 @@ void printMeasurement(const SceneMeasurement& m, double firstFrameSeconds,
     std::string total = bytes >= 1e6 ? formatted("%.1f MB", bytes / 1e6) : formatted("%.1f kB", bytes / 1e3);
     std::printf("gpu memory       %s: %.1f bytes per triangle, %.1f of them positions + BVH\n", total.c_str(),
                 bytes / stats.triangles, double(stats.gpuGeometryBytes) / stats.triangles);
+    std::printf("scene reads      %s (FRAGPATH_SCENE_READS=texelFetch forces texelFetch)\n",
+                sceneReadsName(stats.sceneReads));
     std::string context = contextSeconds ? "context " + formatted("%.3f", *contextSeconds) + ", " : "";
     std::printf("first frame      %.3f s: %sload %.3f, bvh + upload %.3f, compile %.3f, first pass %.3f\n",
                 firstFrameSeconds, context.c_str(), m.loadSeconds, m.rendererSeconds, m.compileSeconds,
@@ -296,7 +298,8 @@ nlohmann::json measurementJson(const SceneMeasurement& m, double firstFrameSecon
     j["gpu"] = {{"bytes", stats.gpuBytes},
                 {"geometry_bytes", stats.gpuGeometryBytes},
                 {"bytes_per_triangle", double(stats.gpuBytes) / stats.triangles},
-                {"geometry_bytes_per_triangle", double(stats.gpuGeometryBytes) / stats.triangles}};
+                {"geometry_bytes_per_triangle", double(stats.gpuGeometryBytes) / stats.triangles},
+                {"scene_reads", sceneReadsName(stats.sceneReads)}};
     j["first_frame"] = {{"seconds", firstFrameSeconds},
                         {"load_seconds", m.loadSeconds},
                         {"bvh_and_upload_seconds", m.rendererSeconds},

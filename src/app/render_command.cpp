@@ -250,6 +250,7 @@ int renderCommand(const std::vector<std::string>& argv) {
             "textures %zu bytes)\n",
             s.gpuBytes, double(s.gpuBytes) / s.triangles, double(s.gpuGeometryBytes) / s.triangles,
             s.gpuTextureBytes);
+        std::printf("scene reads      %s\n", sceneReadsName(s.sceneReads));
         std::printf("image buffers    %zu bytes (%.0f per pixel: accumulation%s)\n", renderer.imageBytes(),
                     double(renderer.imageBytes()) / (double(settings.width) * settings.height),
                     settings.integrator == Integrator::Bdpt ? " and bdpt's light image" : "");

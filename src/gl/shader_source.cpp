@@ -74,8 +74,11 @@ struct Expander {
 ExpandedShader ShaderLibrary::expand(const std::string& path, const ShaderDefines& defines) const {
     Expander expander{*this, defines, {}, {}};
     expander.emit("#version 410 core", "(generated)", 1);
-    for (const auto& [name, value] : defines)
-        expander.emit("#define " + name + " " + value, "(generated)", 1);
+    for (const auto& [name, value] : defines) {
+        bool extension = name.compare(0, 3, "GL_") == 0;
+        expander.emit(extension ? "#extension " + name + " : " + value : "#define " + name + " " + value,
+                      "(generated)", 1);
+    }
     expander.include(path);
     return expander.out;
 }

@@ -26,7 +26,9 @@ class ShaderLibrary {
     std::string read(const std::string& path) const;
 
     // Resolves `#include "path"` (relative to glsl/, each file at most once) and prepends the
-    // #version line and the defines. Throws fp::Error naming file and line for a bad include.
+    // #version line and the defines. A define named GL_<extension> (GLSL reserves GL_ macro names, so no
+    // #define can have one) becomes `#extension GL_<extension> : <value>` instead, in its place before
+    // any declaration as GLSL requires. Throws fp::Error naming file and line for a bad include.
     ExpandedShader expand(const std::string& path, const ShaderDefines& defines) const;
 
   private:

@@ -6,9 +6,9 @@
 
 namespace fp::layout {
 
-ShaderDefines layoutDefines() {
+ShaderDefines layoutDefines(bool images) {
     auto s = [](int v) { return std::to_string(v); };
-    return {
+    ShaderDefines defines = {
         {"TRIANGLE_TEXELS", s(kTriangleTexels)},  {"NORMAL_TEXELS", s(kNormalTexels)},
         {"NODE_TEXELS", s(kNodeTexels)},          {"NODE_LINK_TEXEL", s(kNodeLinkTexel)},
         {"MATERIAL_TEXELS", s(kMaterialTexels)},  {"TRIANGLES_UNIT", s(kTrianglesUnit)},
@@ -16,6 +16,12 @@ ShaderDefines layoutDefines() {
         {"MATERIALS_UNIT", s(kMaterialsUnit)},    {"LIGHTS_UNIT", s(kLightsUnit)},
         {"TEXCOORD_TEXELS", s(kTexcoordTexels)},  {"LEAF_BIT", std::to_string(kLeafBit) + "u"},
         {"LEAF_COUNT_SHIFT", s(kLeafCountShift)}, {"LEAF_FIRST_MASK", std::to_string(kMaxLeafFirst) + "u"}};
+    if (images) {
+        // A GL_ name becomes an #extension line (gl/shader_source.h): the shaders are #version 410.
+        defines.emplace_back("GL_ARB_shader_image_load_store", "require");
+        defines.emplace_back("SCENE_READS_IMAGES", "1");
+    }
+    return defines;
 }
 
 BvhBuildOptions bvhOptions() {

@@ -4,6 +4,10 @@
 // layoutDefines() injects, so the two cannot drift apart.
 //
 // All buffers are GL_TEXTURE_BUFFERs (fastest way to read scene data on llvmpipe, see BENCHMARKS.md).
+// Where the context has GL_ARB_shader_image_load_store, the trace shaders read the buffers in
+// kImageUnits below with imageLoad, which llvmpipe generates inline, rather than texelFetch, which is
+// an out-of-line call for every format but RGBA8 (BENCHMARKS.md, entries 18 and 22); the texels are
+// the same either way.
 // Triangles are stored in BVH leaf order; "triangle i" below means packed index i.
 //
 //  buffer        format     texels per item  contents
@@ -104,7 +108,14 @@ enum Unit : int {
     kFirstFreeUnit
 };
 
-ShaderDefines layoutDefines();
+// The buffers read with imageLoad when the context allows it (SceneReads::Images, gpu/scene_textures.h):
+// each is bound read-only to the image unit of the same number as its texture unit, and
+// glsl/common/scene_data.glsl declares the same ones as images under SCENE_READS_IMAGES.
+constexpr Unit kImageUnits[] = {kTrianglesUnit, kNormalsUnit, kNodesUnit, kMaterialsUnit, kLightsUnit};
+constexpr int kImageUnitsNeeded = kLightsUnit + 1;  // the highest image unit used, plus one
+
+// The layout's defines; with `images`, also SCENE_READS_IMAGES and the extension it needs.
+ShaderDefines layoutDefines(bool images = false);
 
 // The BVH build options the renderer uses with this layout: leaves of up to 8 triangles, and a node
 // visit priced at 3 triangle tests, so that the SAH builder makes leaves of about 4 triangles. On the

@@ -1,5 +1,7 @@
 #include "gpu/scene_textures.h"
 
+#include <algorithm>
+#include <cstdlib>
 #include <string>
 
 #include "core/error.h"
@@ -18,7 +20,56 @@ struct BufferSpec {
     int unit;
 };
 
+GLint glInteger(GLenum name) {
+    GLint value = 0;
+    glGetIntegerv(name, &value);
+    return value;
+}
+
+// Why the context cannot read the scene as images, or "" when it can.
+std::string imagesUnavailable() {
+    if (!GLAD_GL_ARB_shader_image_load_store || !glBindImageTexture)
+        return "the context lacks GL_ARB_shader_image_load_store";
+    const int images = int(std::size(layout::kImageUnits));
+    // Images share a budget with the fragment outputs; light tracing may use every draw buffer.
+    const GLint units = glInteger(GL_MAX_IMAGE_UNITS), fragment = glInteger(GL_MAX_FRAGMENT_IMAGE_UNIFORMS),
+                combined = glInteger(GL_MAX_COMBINED_IMAGE_UNITS_AND_FRAGMENT_OUTPUTS),
+                outputs = glInteger(GL_MAX_DRAW_BUFFERS);
+    if (units < layout::kImageUnitsNeeded || fragment < images || combined < images + outputs)
+        return "the context has too few image units (GL_MAX_IMAGE_UNITS " + std::to_string(units) +
+               ", GL_MAX_FRAGMENT_IMAGE_UNIFORMS " + std::to_string(fragment) +
+               ", GL_MAX_COMBINED_IMAGE_UNITS_AND_FRAGMENT_OUTPUTS " + std::to_string(combined) + ")";
+    return "";
+}
+
 }  // namespace
+
+const char* sceneReadsName(SceneReads reads) {
+    switch (reads) {
+        case SceneReads::TexelFetch:
+            return "texelFetch";
+        case SceneReads::Images:
+            return "imageLoad";
+        case SceneReads::Auto:
+            break;
+    }
+    return "auto";
+}
+
+SceneReads resolveSceneReads(SceneReads requested) {
+    if (requested == SceneReads::TexelFetch) return requested;
+    std::string reason = imagesUnavailable();
+    if (requested == SceneReads::Images) {
+        if (!reason.empty()) throw Error("cannot read the scene with imageLoad: " + reason);
+        return requested;
+    }
+    const char* forced = std::getenv("FRAGPATH_SCENE_READS");
+    if (forced && std::string(forced) == sceneReadsName(SceneReads::TexelFetch))
+        return SceneReads::TexelFetch;
+    if (forced && *forced && std::string(forced) != sceneReadsName(SceneReads::Auto))
+        throw Error(std::string("FRAGPATH_SCENE_READS=") + forced + ": expected texelFetch or auto");
+    return reason.empty() ? SceneReads::Images : SceneReads::TexelFetch;
+}
 
 SceneTextures::SceneTextures(const PackedScene& s, size_t maxTexels) {
     // A zero-size buffer texture is not allowed; empty lists (no lights) get one unused texel.
@@ -64,6 +115,7 @@ SceneTextures::SceneTextures(const PackedScene& s, size_t maxTexels) {
     for (size_t i = 0; i < count; ++i) {
         const BufferSpec& b = specs[i];
         units_.push_back(b.unit);
+        formats_.push_back(b.format);
         glBindBuffer(GL_TEXTURE_BUFFER, buffers_[i]);
         glBufferData(GL_TEXTURE_BUFFER, GLsizeiptr(b.texels * b.texelBytes), b.data, GL_STATIC_DRAW);
         if (glGetError() == GL_OUT_OF_MEMORY)
@@ -82,10 +134,14 @@ SceneTextures::~SceneTextures() {
     glDeleteBuffers(GLsizei(buffers_.size()), buffers_.data());
 }
 
-void SceneTextures::bind() const {
+void SceneTextures::bind(SceneReads reads) const {
     for (size_t i = 0; i < textures_.size(); ++i) {
         glActiveTexture(GLenum(GL_TEXTURE0 + units_[i]));
         glBindTexture(GL_TEXTURE_BUFFER, textures_[i]);
+        const auto* images = std::end(layout::kImageUnits);
+        if (reads == SceneReads::Images &&
+            std::find(std::begin(layout::kImageUnits), images, units_[i]) != images)
+            glBindImageTexture(GLuint(units_[i]), textures_[i], 0, GL_FALSE, 0, GL_READ_ONLY, formats_[i]);
     }
     // Leave a spare unit active so that later texture creation cannot rebind a scene unit.
     glActiveTexture(GLenum(GL_TEXTURE0 + layout::kFirstFreeUnit));

@@ -1,11 +1,29 @@
 #pragma once
 // The packed scene uploaded into buffer textures (layout in gpu/layout.h), bound to fixed units.
+#include <string>
 #include <vector>
 
 #include "gl/gl.h"
 #include "gpu/pack.h"
 
 namespace fp {
+
+// How the trace shaders read the scene buffers (glsl/common/scene_data.glsl). On llvmpipe, texelFetch
+// of a buffer texture in any format but RGBA8 is an out-of-line call that makes LLVM spill everything
+// live, while imageLoad of an image buffer is generated inline (BENCHMARKS.md, optimisation log,
+// entries 18 and 22); both read the same texels, so the images are bit-identical.
+enum class SceneReads {
+    Auto,        // images where the context has them, else texel fetches (FRAGPATH_SCENE_READS may force)
+    TexelFetch,  // samplerBuffer + texelFetch: plain OpenGL 4.1 (macOS)
+    Images,      // readonly imageBuffer + imageLoad: GL_ARB_shader_image_load_store (core in 4.2)
+};
+const char* sceneReadsName(SceneReads reads);  // "texelFetch", "imageLoad" or "auto"
+
+// Resolves `requested` for the current context. Auto: texelFetch when the environment variable
+// FRAGPATH_SCENE_READS is "texelFetch" (for tests and benchmarks), else imageLoad when the context has
+// GL_ARB_shader_image_load_store with enough image units for the scene buffers, else texelFetch.
+// Images: throws fp::Error with the reason when the context cannot. Needs a current context.
+SceneReads resolveSceneReads(SceneReads requested);
 
 class SceneTextures {
   public:
@@ -17,9 +35,12 @@ class SceneTextures {
     SceneTextures& operator=(const SceneTextures&) = delete;
 
     // Binds every buffer texture to its unit (layout::Unit); the texture buffers only if the scene has any.
-    void bind() const;
+    // With SceneReads::Images, also binds the buffers that layout::kImageBuffers lists, read-only, to the
+    // image unit of the same number.
+    void bind(SceneReads reads) const;
 
   private:
+    std::vector<GLenum> formats_;
     std::vector<int> units_;  // per buffer: the layout::Unit it is bound to
     std::vector<GLuint> buffers_, textures_;
 };

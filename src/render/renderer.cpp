@@ -23,8 +23,10 @@ constexpr int kSpareUnit = kSumUnit + RenderTargets::kAttachments;
 
 }  // namespace
 
-Renderer::Renderer(const Scene& scene, ShaderLibrary shaders, const BvhBuildOptions& bvhOptions)
+Renderer::Renderer(const Scene& scene, ShaderLibrary shaders, const BvhBuildOptions& bvhOptions,
+                   SceneReads reads)
     : shaders_(std::move(shaders)) {
+    stats_.sceneReads = resolveSceneReads(reads);  // before the slow work, so that a refusal is quick
     auto start = std::chrono::steady_clock::now();
     const std::clock_t cpuStart = std::clock();  // CPU time of the whole process, so of every build thread
     AabbArray bounds;
@@ -75,7 +77,7 @@ Renderer::~Renderer() {
 }
 
 std::unique_ptr<Program> Renderer::compile(Integrator integrator, const char* fragmentShader) const {
-    ShaderDefines defines = layout::layoutDefines();
+    ShaderDefines defines = layout::layoutDefines(stats_.sceneReads == SceneReads::Images);
     for (const auto& d : LightSplat::defines()) defines.push_back(d);
     defines.emplace_back("BVH_STACK_SIZE", std::to_string(stats_.stackSize));
     defines.emplace_back("INTEGRATOR_FILE",
@@ -232,7 +234,7 @@ void Renderer::setTraceUniforms(Program& p, int maxDepth) {
     p.set("uCameraRight", right * tanHalf * aspect);
     p.set("uCameraUp", up * tanHalf);
     p.set("uResolution", glm::vec2(settings_.width, settings_.height));
-    textures_->bind();
+    textures_->bind(stats_.sceneReads);
 }
 
 // The camera pass: `samples` samples per pixel over `region`, added to the accumulation.

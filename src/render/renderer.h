@@ -24,15 +24,18 @@ struct SceneStats {
     double bvhBuildSeconds = 0.0, uploadSeconds = 0.0;
     double bvhBuildCpuSeconds = 0.0;  // process CPU time of the build, all its threads together
     int bvhBuildThreads = 0;
-    size_t gpuBytes = 0, gpuGeometryBytes = 0;  // all buffers; positions + BVH only
-    size_t gpuTextureBytes = 0;                 // of gpuBytes: texture coordinates and texels (map_Kd)
-    uint32_t stackSize = 0;                     // traversal stack entries the shader was compiled with
+    size_t gpuBytes = 0, gpuGeometryBytes = 0;       // all buffers; positions + BVH only
+    size_t gpuTextureBytes = 0;                      // of gpuBytes: texture coordinates and texels (map_Kd)
+    uint32_t stackSize = 0;                          // traversal stack entries the shader was compiled with
+    SceneReads sceneReads = SceneReads::TexelFetch;  // how the trace shaders read the scene buffers
 };
 
 class Renderer {
   public:
+    // `reads` is resolved for the current context (resolveSceneReads, gpu/scene_textures.h); the choice
+    // is in stats().sceneReads.
     Renderer(const Scene& scene, ShaderLibrary shaders = ShaderLibrary(),
-             const BvhBuildOptions& bvh = layout::bvhOptions());
+             const BvhBuildOptions& bvh = layout::bvhOptions(), SceneReads reads = SceneReads::Auto);
     ~Renderer();
 
     // Sets what to render; restarts accumulation, recompiling shaders only when the integrator, view, guides

@@ -50,6 +50,15 @@ TEST_F(ShaderDir, IncludeThroughADefineNamingAPath) {
     EXPECT_THROW(ShaderLibrary(dir_.string()).expand("main.glsl", {}), Error);
 }
 
+TEST_F(ShaderDir, AGlNamedDefineBecomesAnExtensionDirective) {
+    write("main.glsl", "void main() {}\n");
+    ExpandedShader e = ShaderLibrary(dir_.string())
+                           .expand("main.glsl", {{"GL_ARB_shader_image_load_store", "require"}, {"N", "1"}});
+    EXPECT_EQ(e.text,
+              "#version 410 core\n#extension GL_ARB_shader_image_load_store : require\n#define N 1\nvoid "
+              "main() {}\n");
+}
+
 TEST_F(ShaderDir, MissingIncludeNamesTheIncludingFileAndLine) {
     write("main.glsl", "// first\n#include \"nowhere.glsl\"\n");
     try {
