@@ -73,6 +73,12 @@ bool intersectLeaves(Ray ray, uvec4 first, uvec4 count, bool anyHit, inout Hit h
     gTrianglesTested += int(total);
     for (uint k = 0u; k < total; ++k) {
         uint i = k + (k < end0 ? offset.x : k < end1 ? offset.y : k < end2 ? offset.z : offset.w);
+        // A pixel with no triangle left still runs this iteration (masked: llvmpipe runs a loop's body
+        // while any pixel of its SIMD group needs it, and every node visit enters the loop once), and
+        // its fetches still read memory: at a stray index (an interior child's link, a range's end)
+        // each is a cache miss on a large scene. Triangle 0 is always in the cache (BENCHMARKS.md,
+        // optimisation log: "Stray fetches").
+        i = k < total ? i : 0u;
         TriangleData tri = fetchTriangle(int(i));
         float t;
         vec2 uv;

@@ -6,7 +6,7 @@
 // All buffers are GL_TEXTURE_BUFFERs (fastest way to read scene data on llvmpipe, see BENCHMARKS.md).
 // Where the context has GL_ARB_shader_image_load_store, the trace shaders read the buffers in
 // kImageUnits below with imageLoad, which llvmpipe generates inline, rather than texelFetch, which is
-// an out-of-line call for every format but RGBA8 (BENCHMARKS.md, entries 18 and 22); the texels are
+// an out-of-line call for every format but RGBA8 (BENCHMARKS.md, entries 18 and 23); the texels are
 // the same either way.
 // Triangles are stored in BVH leaf order; "triangle i" below means packed index i.
 //

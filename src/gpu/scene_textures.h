@@ -11,7 +11,7 @@ namespace fp {
 // How the trace shaders read the scene buffers (glsl/common/scene_data.glsl). On llvmpipe, texelFetch
 // of a buffer texture in any format but RGBA8 is an out-of-line call that makes LLVM spill everything
 // live, while imageLoad of an image buffer is generated inline (BENCHMARKS.md, optimisation log,
-// entries 18 and 22); both read the same texels, so the images are bit-identical.
+// entries 18 and 23); both read the same texels, so the images are bit-identical.
 enum class SceneReads {
     Auto,        // images where the context has them, else texel fetches (FRAGPATH_SCENE_READS may force)
     TexelFetch,  // samplerBuffer + texelFetch: plain OpenGL 4.1 (macOS)
