@@ -5,8 +5,8 @@ namespace fp::study {
 std::vector<FlopCount> operationTable() {
     return {
         {"BVH node visited (4-wide: four slab tests)", kFlopsPerNode,
-         "boxEntries: 4 x (12 sub/mul, 6 min/max, 3 + 4 reductions, 1 compare); 4 + 4 + 4 child tests, "
-         "5 sorting compares"},
+         "boxEntries: node terms 9, 24 plane multiply-adds 48, 4 x (3 max, 3 min/scale, 2 tests); 4 + 4 + 4 "
+         "child tests, 5 sorting compares"},
         {"ray-triangle test (Moller-Trumbore)", kFlopsPerTriangleTest,
          "2 cross, 4 dot, 1 reciprocal, 3 sub, 3 scale, 6 tests"},
         {"ray set-up", kFlopsPerRay, "tiny-direction guard 6, reciprocal direction 3"},

@@ -18,11 +18,13 @@ struct FlopCount {
 };
 
 // The per-operation table, as it appears in the report.
-// - Visiting a node of the 4-wide BVH (intersect.glsl traverse): four slab tests in boxEntries, 26
-//   each: per box two vec3 (lo - origin) * invDir (12), per-axis min and max (6), entry max (3), exit
-//   min, ulp scale, min with tMax (4), enter <= exit (1); then which leaf children were hit (4), the
-//   cull of children beyond the hit (4), the sorting network (5) and which children remain (4): 121.
-//   Control flow and the stack are integer work.
+// - Visiting a node of the 4-wide BVH (intersect.glsl traverse), its four child boxes quantised to the
+//   node's grid (gpu/quantised_node.h): boxEntries' per-axis scale and offset, 3 x (1 multiply + 1
+//   subtract + 1 multiply) = 9; the six planes of the four children, one multiply-add each (2), 48;
+//   entry max over three axes and 0 (12), exit min (8) and ulp scale (4), min with tMax and enter <=
+//   exit (8): 89; then which leaf children were hit (4), the cull of children beyond the hit (4), the
+//   sorting network (5) and which children remain (4): 106. Unpacking the 8-bit planes (shifts, masks,
+//   int-to-float conversions), control flow and the stack are integer work.
 // - One ray-triangle test (intersectTriangle, Moller-Trumbore): cross p (9), det (5), det == 0 (1),
 //   1 / det (1), s (3), u (6), cross q (9), v (6), t (6), the six comparisons and u + v (6): 52.
 // - Per ray (traverse set-up): |dir| < 1e-20 test (6) and 1 / dir (3): 9.
@@ -32,7 +34,7 @@ struct FlopCount {
 //   other BSDFs cost more, so this is a lower bound for glossy scenes); see shadingFlops().
 std::vector<FlopCount> operationTable();
 
-constexpr double kFlopsPerNode = 121.0;
+constexpr double kFlopsPerNode = 106.0;
 constexpr double kFlopsPerTriangleTest = 52.0;
 constexpr double kFlopsPerRay = 9.0;
 constexpr double kFlopsPerCameraRay = 27.0;

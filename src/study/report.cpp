@@ -6,6 +6,7 @@
 #include <cstdio>
 
 #include "study/feasibility.h"
+#include "study/flop_model.h"
 #include "study/metrics.h"
 #include "study/plots.h"
 #include "study/spp_needed.h"
@@ -172,9 +173,10 @@ std::string reportMarkdown(const ReportInput& in) {
         "|\n|---|---|---|\n";
     for (const FlopCount& f : operationTable())
         md += format("| %s | %.0f | %s |\n", f.operation, f.flops, f.breakdown);
-    md +=
-        "\nFLOPs per path = 121 x nodes + 52 x triangle tests + 9 x rays + 27 (camera ray) + surfaces x (the "
-        "integrator's surface interaction).\n\n";
+    md += format(
+        "\nFLOPs per path = %.0f x nodes + %.0f x triangle tests + %.0f x rays + %.0f (camera ray) + "
+        "surfaces x (the integrator's surface interaction).\n\n",
+        kFlopsPerNode, kFlopsPerTriangleTest, kFlopsPerRay, kFlopsPerCameraRay);
 
     md +=
         "**Efficiency measured here.** Peak FP32 of this CPU: " + in.cpu.formula() +

@@ -18,7 +18,7 @@ TEST(FlopModel, PathFlopsAddTheCountedOperations) {
     c.trianglesTested = 4;
     c.rays = 3;
     c.surfacesShaded = 2;
-    EXPECT_DOUBLE_EQ(flopsPerPath(c, Integrator::Nee), 10 * 121 + 4 * 52 + 3 * 9 + 27 + 2 * 298);
+    EXPECT_DOUBLE_EQ(flopsPerPath(c, Integrator::Nee), 10 * 106 + 4 * 52 + 3 * 9 + 27 + 2 * 298);
     EXPECT_DOUBLE_EQ(flopsPerPath(PathCounts{}, Integrator::Naive), kFlopsPerCameraRay);
     // Light sampling costs more per interaction than following the BSDF alone.
     EXPECT_GT(shadingFlops(Integrator::Nee), shadingFlops(Integrator::Bsdf));
