@@ -134,17 +134,18 @@ SceneTextures::~SceneTextures() {
     glDeleteBuffers(GLsizei(buffers_.size()), buffers_.data());
 }
 
-void SceneTextures::bind(SceneReads reads) const {
-    for (size_t i = 0; i < textures_.size(); ++i) {
-        glActiveTexture(GLenum(GL_TEXTURE0 + units_[i]));
-        glBindTexture(GL_TEXTURE_BUFFER, textures_[i]);
-        const auto* images = std::end(layout::kImageUnits);
-        if (reads == SceneReads::Images &&
-            std::find(std::begin(layout::kImageUnits), images, units_[i]) != images)
-            glBindImageTexture(GLuint(units_[i]), textures_[i], 0, GL_FALSE, 0, GL_READ_ONLY, formats_[i]);
-    }
-    // Leave a spare unit active so that later texture creation cannot rebind a scene unit.
+void bindSceneTexture(SceneReads reads, int unit, GLenum target, GLuint texture, GLenum format) {
+    glActiveTexture(GLenum(GL_TEXTURE0 + unit));
+    glBindTexture(target, texture);
+    const auto* images = std::end(layout::kImageUnits);
+    if (reads == SceneReads::Images && std::find(std::begin(layout::kImageUnits), images, unit) != images)
+        glBindImageTexture(GLuint(unit), texture, 0, GL_FALSE, 0, GL_READ_ONLY, format);
     glActiveTexture(GLenum(GL_TEXTURE0 + layout::kFirstFreeUnit));
+}
+
+void SceneTextures::bind(SceneReads reads) const {
+    for (size_t i = 0; i < textures_.size(); ++i)
+        bindSceneTexture(reads, units_[i], GL_TEXTURE_BUFFER, textures_[i], formats_[i]);
 }
 
 }  // namespace fp

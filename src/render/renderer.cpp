@@ -216,8 +216,9 @@ void Renderer::setTraceUniforms(Program& p, int maxDepth) {
     if (environmentTextures_) {
         p.set("uEnvironmentMap", int(layout::kEnvironmentMapUnit));
         p.set("uEnvironmentCdf", int(layout::kEnvironmentCdfUnit));
+        p.set("uEnvironmentSize", environmentTextures_->size());
         p.set("uEnvironmentRotation", environmentRotation_);
-        environmentTextures_->bind();
+        environmentTextures_->bind(stats_.sceneReads);
     }
     p.set("uRayOffset", rayOffset_);
     p.set("uMaxDepth", maxDepth);
