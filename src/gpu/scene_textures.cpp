@@ -30,19 +30,24 @@ GLint glInteger(GLenum name) {
 std::string imagesUnavailable() {
     if (!GLAD_GL_ARB_shader_image_load_store || !glBindImageTexture)
         return "the context lacks GL_ARB_shader_image_load_store";
-    const int images = int(std::size(layout::kImageUnits));
-    // Images share a budget with the fragment outputs; light tracing may use every draw buffer.
-    const GLint units = glInteger(GL_MAX_IMAGE_UNITS), fragment = glInteger(GL_MAX_FRAGMENT_IMAGE_UNIFORMS),
-                combined = glInteger(GL_MAX_COMBINED_IMAGE_UNITS_AND_FRAGMENT_OUTPUTS),
-                outputs = glInteger(GL_MAX_DRAW_BUFFERS);
-    if (units < layout::kImageUnitsNeeded || fragment < images || combined < images + outputs)
-        return "the context has too few image units (GL_MAX_IMAGE_UNITS " + std::to_string(units) +
-               ", GL_MAX_FRAGMENT_IMAGE_UNIFORMS " + std::to_string(fragment) +
-               ", GL_MAX_COMBINED_IMAGE_UNITS_AND_FRAGMENT_OUTPUTS " + std::to_string(combined) + ")";
-    return "";
+    return imageUnitShortfall({glInteger(GL_MAX_IMAGE_UNITS), glInteger(GL_MAX_FRAGMENT_IMAGE_UNIFORMS),
+                               glInteger(GL_MAX_COMBINED_IMAGE_UNITS_AND_FRAGMENT_OUTPUTS),
+                               glInteger(GL_MAX_DRAW_BUFFERS)});
 }
 
 }  // namespace
+
+std::string imageUnitShortfall(const ImageUnitLimits& limits) {
+    const int images = int(std::size(layout::kImageUnits));
+    // Images share a budget with the fragment outputs; light tracing may use every draw buffer.
+    if (limits.imageUnits < layout::kImageUnitsNeeded || limits.fragmentImages < images ||
+        limits.combined < images + limits.drawBuffers)
+        return "the context has too few image units for " + std::to_string(images) +
+               " images (GL_MAX_IMAGE_UNITS " + std::to_string(limits.imageUnits) +
+               ", GL_MAX_FRAGMENT_IMAGE_UNIFORMS " + std::to_string(limits.fragmentImages) +
+               ", GL_MAX_COMBINED_IMAGE_UNITS_AND_FRAGMENT_OUTPUTS " + std::to_string(limits.combined) + ")";
+    return "";
+}
 
 const char* sceneReadsName(SceneReads reads) {
     switch (reads) {

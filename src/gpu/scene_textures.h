@@ -26,6 +26,18 @@ const char* sceneReadsName(SceneReads reads);  // "texelFetch", "imageLoad" or "
 // context.
 SceneReads resolveSceneReads(SceneReads requested);
 
+// The limits that decide whether a context can read the scene as images.
+struct ImageUnitLimits {
+    int imageUnits = 0;      // GL_MAX_IMAGE_UNITS
+    int fragmentImages = 0;  // GL_MAX_FRAGMENT_IMAGE_UNIFORMS
+    int combined = 0;        // GL_MAX_COMBINED_IMAGE_UNITS_AND_FRAGMENT_OUTPUTS
+    int drawBuffers = 0;     // GL_MAX_DRAW_BUFFERS
+};
+// Why a context with these limits cannot have every texture that layout::kImageUnits lists bound as an
+// image (all of them, whichever the scene has, so that the answer is the same for every scene), or ""
+// when it can.
+std::string imageUnitShortfall(const ImageUnitLimits& limits);
+
 // Binds `texture` (a GL_TEXTURE_BUFFER or GL_TEXTURE_2D, `target`) to texture unit `unit`; with
 // SceneReads::Images and a unit that layout::kImageUnits lists, also read-only, level 0, as `format`,
 // to the image unit of the same number. Leaves a spare unit active, so that later texture creation
