@@ -23,7 +23,9 @@ float environmentSelection() {
 // An equirectangular map (layout in src/gpu/layout.h), importance-sampled texel by texel with the
 // probability of luminance * sin(theta), then uniformly inside the texel in (u, v). A texel spans the
 // solid angle 2 pi^2 sin(theta) du dv, which converts the density (as pbrt-v4 does for image infinite lights).
-// Read as images or texel fetches like the scene buffers (scene_data.glsl).
+// Read as images or texel fetches like the scene buffers (scene_data.glsl). The map's size is the define
+// ENVIRONMENT_SIZE (an ivec2): a constant costs fewer instructions than a uniform or textureSize, and
+// an image's imageSize would need GL_ARB_shader_image_size (BENCHMARKS.md, entry 26).
 #ifdef SCENE_READS_IMAGES
 layout(rgba32f) readonly uniform image2D uEnvironmentMap;
 layout(r32f) readonly uniform imageBuffer uEnvironmentCdf;
@@ -31,7 +33,6 @@ layout(r32f) readonly uniform imageBuffer uEnvironmentCdf;
 uniform sampler2D uEnvironmentMap;
 uniform samplerBuffer uEnvironmentCdf;
 #endif
-uniform ivec2 uEnvironmentSize;      // width, height (imageSize would need GL_ARB_shader_image_size)
 uniform float uEnvironmentRotation;  // radians about +y
 
 vec3 environmentMapTexel(ivec2 p) { return SCENE_TEXEL_2D(uEnvironmentMap, p).rgb; }
@@ -53,7 +54,7 @@ vec3 uvToDirection(vec2 uv) {
 }
 
 ivec2 environmentTexel(vec2 uv) {
-    return clamp(ivec2(uv * vec2(uEnvironmentSize)), ivec2(0), uEnvironmentSize - 1);
+    return clamp(ivec2(uv * vec2(ENVIRONMENT_SIZE)), ivec2(0), ENVIRONMENT_SIZE - 1);
 }
 
 vec3 environmentRadiance(vec3 dir) { return environmentMapTexel(environmentTexel(directionToUv(dir))); }
@@ -73,7 +74,7 @@ int searchCdf(int first, int count, float u) {
 
 float environmentPdf(vec3 dir) {
     vec2 uv = directionToUv(dir);
-    ivec2 size = uEnvironmentSize, t = environmentTexel(uv);
+    ivec2 size = ENVIRONMENT_SIZE, t = environmentTexel(uv);
     float rowPmf = cdfAt(t.y) - cdfAt(t.y - 1);
     int row = size.y + t.y * size.x;
     float texelPmf = rowPmf * (cdfAt(row + t.x) - (t.x == 0 ? 0.0 : cdfAt(row + t.x - 1)));
@@ -83,7 +84,7 @@ float environmentPdf(vec3 dir) {
 }
 
 vec3 sampleEnvironmentDirection() {
-    ivec2 size = uEnvironmentSize;
+    ivec2 size = ENVIRONMENT_SIZE;
     int y = searchCdf(0, size.y, rand());
     int x = searchCdf(size.y + y * size.x, size.x, rand());
     return uvToDirection((vec2(x, y) + rand2()) / vec2(size));

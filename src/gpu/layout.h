@@ -61,7 +61,8 @@
 // An environment map (only when the scene has one) is a 2D RGBA32F texture of W x H radiance texels,
 // texel (x, y) covering u in [x, x+1)/W, v in [y, y+1)/H (v = 0 is straight up), and an R32F buffer
 // texture of importance-sampling CDFs: H entries of the marginal CDF over rows, then for each row y
-// W entries of the conditional CDF over its texels (each cumulative, ending at 1).
+// W entries of the conditional CDF over its texels (each cumulative, ending at 1). The shaders get W
+// and H as the define ENVIRONMENT_SIZE.
 //
 // Indices stored in float channels are exact integers below 2^24, which every GPU keeps exactly; the
 // node links are integers in an integer format, so no GPU can flush them as denormals.
