@@ -10,7 +10,7 @@ namespace fp {
 
 // How the trace shaders read the scene buffers and the environment map (glsl/common/scene_data.glsl).
 // On llvmpipe, texelFetch of a buffer texture in any format but RGBA8 is an out-of-line call that makes
-// LLVM spill everything live, while imageLoad of an image buffer is generated inline (BENCHMARKS.md,
+// LLVM spill everything live, while imageLoad of an image is generated inline (BENCHMARKS.md,
 // optimisation log, entries 18 and 23); both read the same texels, so the images are bit-identical.
 enum class SceneReads {
     Auto,        // images where the context has them, else texel fetches (FRAGPATH_SCENE_READS may force)
