@@ -23,9 +23,20 @@ float environmentSelection() {
 // An equirectangular map (layout in src/gpu/layout.h), importance-sampled texel by texel with the
 // probability of luminance * sin(theta), then uniformly inside the texel in (u, v). A texel spans the
 // solid angle 2 pi^2 sin(theta) du dv, which converts the density (as pbrt-v4 does for image infinite lights).
+// Read as images or texel fetches like the scene buffers (scene_data.glsl). The map's size is the define
+// ENVIRONMENT_SIZE (an ivec2): a constant costs fewer instructions than a uniform or textureSize, and
+// an image's imageSize would need GL_ARB_shader_image_size (BENCHMARKS.md, entry 26).
+#ifdef SCENE_READS_IMAGES
+layout(rgba32f) readonly uniform image2D uEnvironmentMap;
+layout(r32f) readonly uniform imageBuffer uEnvironmentCdf;
+#else
 uniform sampler2D uEnvironmentMap;
 uniform samplerBuffer uEnvironmentCdf;
+#endif
 uniform float uEnvironmentRotation;  // radians about +y
+
+vec3 environmentMapTexel(ivec2 p) { return SCENE_TEXEL_2D(uEnvironmentMap, p).rgb; }
+float environmentCdfTexel(int i) { return SCENE_TEXEL(uEnvironmentCdf, i).r; }
 
 vec3 rotateY(vec3 d, float angle) {
     float c = cos(angle), s = sin(angle);
@@ -43,20 +54,19 @@ vec3 uvToDirection(vec2 uv) {
 }
 
 ivec2 environmentTexel(vec2 uv) {
-    ivec2 size = textureSize(uEnvironmentMap, 0);
-    return clamp(ivec2(uv * vec2(size)), ivec2(0), size - 1);
+    return clamp(ivec2(uv * vec2(ENVIRONMENT_SIZE)), ivec2(0), ENVIRONMENT_SIZE - 1);
 }
 
-vec3 environmentRadiance(vec3 dir) { return texelFetch(uEnvironmentMap, environmentTexel(directionToUv(dir)), 0).rgb; }
+vec3 environmentRadiance(vec3 dir) { return environmentMapTexel(environmentTexel(directionToUv(dir))); }
 
-float cdfAt(int i) { return i < 0 ? 0.0 : texelFetch(uEnvironmentCdf, i).r; }
+float cdfAt(int i) { return i < 0 ? 0.0 : environmentCdfTexel(i); }
 
 // First index in [first, first + count) whose cdf exceeds u.
 int searchCdf(int first, int count, float u) {
     int lo = first, hi = first + count - 1;
     while (lo < hi) {
         int mid = (lo + hi) / 2;
-        if (texelFetch(uEnvironmentCdf, mid).r <= u) lo = mid + 1;
+        if (environmentCdfTexel(mid) <= u) lo = mid + 1;
         else hi = mid;
     }
     return lo - first;
@@ -64,7 +74,7 @@ int searchCdf(int first, int count, float u) {
 
 float environmentPdf(vec3 dir) {
     vec2 uv = directionToUv(dir);
-    ivec2 size = textureSize(uEnvironmentMap, 0), t = environmentTexel(uv);
+    ivec2 size = ENVIRONMENT_SIZE, t = environmentTexel(uv);
     float rowPmf = cdfAt(t.y) - cdfAt(t.y - 1);
     int row = size.y + t.y * size.x;
     float texelPmf = rowPmf * (cdfAt(row + t.x) - (t.x == 0 ? 0.0 : cdfAt(row + t.x - 1)));
@@ -74,7 +84,7 @@ float environmentPdf(vec3 dir) {
 }
 
 vec3 sampleEnvironmentDirection() {
-    ivec2 size = textureSize(uEnvironmentMap, 0);
+    ivec2 size = ENVIRONMENT_SIZE;
     int y = searchCdf(0, size.y, rand());
     int x = searchCdf(size.y + y * size.x, size.x, rand());
     return uvToDirection((vec2(x, y) + rand2()) / vec2(size));

@@ -1,12 +1,14 @@
 // Reading the scene from its buffer textures. The texel layout is documented once, in src/gpu/layout.h;
 // the *_TEXELS constants come from there as defines.
 //
-// Every read of these buffers goes through the one-line helpers below (triangleTexel ... lightTexel). With
-// SCENE_READS_IMAGES (the context has GL_ARB_shader_image_load_store: gpu/scene_textures.h), they are
-// imageLoads of read-only image buffers, which llvmpipe generates inline; without, texelFetches, which
-// llvmpipe makes out-of-line calls for these formats, spilling everything live (BENCHMARKS.md, entries
-// 18 and 23). The texels are the same, so the images rendered are bit-identical. Each image uses the
-// image unit of its texture unit's number (the uniforms keep their names); layout::kImageUnits lists them.
+// Every read of these buffers goes through the one-line helpers below (triangleTexel ... lightTexel), and
+// so do the optional textures' (texcoordTexel, textureTableTexel in textures.glsl; environmentMapTexel,
+// environmentCdfTexel in lights.glsl), through SCENE_TEXEL and SCENE_TEXEL_2D. With SCENE_READS_IMAGES
+// (the context has GL_ARB_shader_image_load_store: gpu/scene_textures.h), they are imageLoads of
+// read-only images, which llvmpipe generates inline; without, texelFetches, which llvmpipe makes
+// out-of-line calls for these formats, spilling everything live (BENCHMARKS.md, entries 18 and 23). The
+// texels are the same, so the images rendered are bit-identical. Each image uses the image unit of its
+// texture unit's number (the uniforms keep their names); layout::kImageUnits lists them.
 #ifdef SCENE_READS_IMAGES
 layout(rgba32f) readonly uniform imageBuffer uTriangles;
 layout(rgba32f) readonly uniform imageBuffer uNormals;
@@ -14,6 +16,7 @@ layout(rgba32ui) readonly uniform uimageBuffer uNodes;  // NODE_TEXELS per node
 layout(rgba32f) readonly uniform imageBuffer uMaterials;
 layout(rgba32f) readonly uniform imageBuffer uLights;
 #define SCENE_TEXEL(buffer, i) imageLoad(buffer, i)
+#define SCENE_TEXEL_2D(texture, p) imageLoad(texture, p)
 #else
 uniform samplerBuffer uTriangles;
 uniform samplerBuffer uNormals;
@@ -21,6 +24,7 @@ uniform usamplerBuffer uNodes;  // RGBA32UI, NODE_TEXELS per node
 uniform samplerBuffer uMaterials;
 uniform samplerBuffer uLights;
 #define SCENE_TEXEL(buffer, i) texelFetch(buffer, i)
+#define SCENE_TEXEL_2D(texture, p) texelFetch(texture, p, 0)
 #endif
 uniform int uLightCount;
 

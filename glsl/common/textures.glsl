@@ -2,17 +2,27 @@
 // other scenes pay nothing. The layout is in src/gpu/layout.h: three texture coordinates per triangle,
 // every texture's sRGB-encoded texels in one RGBA8 buffer, and (first texel, width, height) per texture.
 #ifdef SURFACE_TEXTURES
+// Read as images or texel fetches like the scene buffers (scene_data.glsl), except the RGBA8 texels,
+// whose texelFetch llvmpipe already generates inline.
+#ifdef SCENE_READS_IMAGES
+layout(rg32f) readonly uniform imageBuffer uTexcoords;
+layout(rgba32i) readonly uniform iimageBuffer uTextureTable;
+#else
 uniform samplerBuffer uTexcoords;
-uniform samplerBuffer uTextureTexels;
 uniform isamplerBuffer uTextureTable;
+#endif
+uniform samplerBuffer uTextureTexels;
+
+vec2 texcoordTexel(int i) { return SCENE_TEXEL(uTexcoords, i).xy; }
+ivec4 textureTableTexel(int t) { return SCENE_TEXEL(uTextureTable, t); }
 
 int materialTexture(int m) { return int(materialTexel(m * MATERIAL_TEXELS + 4).x); }
 
 // The texture coordinates at barycentrics b of triangle i.
 vec2 fetchTexcoord(int i, vec2 b) {
-    vec2 t0 = texelFetch(uTexcoords, i * TEXCOORD_TEXELS).xy;
-    vec2 t1 = texelFetch(uTexcoords, i * TEXCOORD_TEXELS + 1).xy;
-    vec2 t2 = texelFetch(uTexcoords, i * TEXCOORD_TEXELS + 2).xy;
+    vec2 t0 = texcoordTexel(i * TEXCOORD_TEXELS);
+    vec2 t1 = texcoordTexel(i * TEXCOORD_TEXELS + 1);
+    vec2 t2 = texcoordTexel(i * TEXCOORD_TEXELS + 2);
     return (1.0 - b.x - b.y) * t0 + b.x * t1 + b.y * t2;
 }
 
@@ -34,7 +44,7 @@ vec3 textureTexel(ivec4 info, vec2 xy) {
 // stored top first and OBJ's v = 0 is the bottom of the image. Texels are decoded before filtering, as
 // GPUs filter sRGB textures.
 vec3 sampleTexture(int t, vec2 uv) {
-    ivec4 info = texelFetch(uTextureTable, t);
+    ivec4 info = textureTableTexel(t);
     vec2 xy = vec2(uv.x, 1.0 - uv.y) * vec2(info.yz) - 0.5;
     vec2 base = floor(xy), f = xy - base;
     vec3 top = mix(textureTexel(info, base), textureTexel(info, base + vec2(1.0, 0.0)), f.x);

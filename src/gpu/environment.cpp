@@ -44,7 +44,7 @@ PackedEnvironment packEnvironment(const Environment& environment) {
     return out;
 }
 
-EnvironmentTextures::EnvironmentTextures(const PackedEnvironment& e) {
+EnvironmentTextures::EnvironmentTextures(const PackedEnvironment& e) : size_(e.width, e.height) {
     GLint maxSize = 0, maxTexels = 0;
     glGetIntegerv(GL_MAX_TEXTURE_SIZE, &maxSize);
     glGetIntegerv(GL_MAX_TEXTURE_BUFFER_SIZE, &maxTexels);
@@ -74,12 +74,9 @@ EnvironmentTextures::~EnvironmentTextures() {
     glDeleteBuffers(1, &cdfBuffer_);
 }
 
-void EnvironmentTextures::bind() const {
-    glActiveTexture(GLenum(GL_TEXTURE0 + layout::kEnvironmentMapUnit));
-    glBindTexture(GL_TEXTURE_2D, map_);
-    glActiveTexture(GLenum(GL_TEXTURE0 + layout::kEnvironmentCdfUnit));
-    glBindTexture(GL_TEXTURE_BUFFER, cdfTexture_);
-    glActiveTexture(GLenum(GL_TEXTURE0 + layout::kFirstFreeUnit));
+void EnvironmentTextures::bind(SceneReads reads) const {
+    bindSceneTexture(reads, layout::kEnvironmentMapUnit, GL_TEXTURE_2D, map_, GL_RGBA32F);
+    bindSceneTexture(reads, layout::kEnvironmentCdfUnit, GL_TEXTURE_BUFFER, cdfTexture_, GL_R32F);
 }
 
 }  // namespace fp

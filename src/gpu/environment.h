@@ -8,6 +8,7 @@
 #include <glm/glm.hpp>
 
 #include "gl/gl.h"
+#include "gpu/scene_textures.h"
 #include "scene/scene.h"
 
 namespace fp {
@@ -28,10 +29,13 @@ class EnvironmentTextures {
     ~EnvironmentTextures();
     EnvironmentTextures(const EnvironmentTextures&) = delete;
     EnvironmentTextures& operator=(const EnvironmentTextures&) = delete;
-    void bind() const;
+    // Binds the map and the CDFs to their units (layout::Unit) through bindSceneTexture.
+    void bind(SceneReads reads) const;
+    glm::ivec2 size() const { return size_; }  // of the map, in texels
 
   private:
     GLuint map_ = 0, cdfBuffer_ = 0, cdfTexture_ = 0;
+    glm::ivec2 size_{0};
 };
 
 }  // namespace fp

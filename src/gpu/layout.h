@@ -4,10 +4,11 @@
 // layoutDefines() injects, so the two cannot drift apart.
 //
 // All buffers are GL_TEXTURE_BUFFERs (fastest way to read scene data on llvmpipe, see BENCHMARKS.md).
-// Where the context has GL_ARB_shader_image_load_store, the trace shaders read the buffers in
-// kImageUnits below with imageLoad, which llvmpipe generates inline, rather than texelFetch, which is
-// an out-of-line call for every format but RGBA8 (BENCHMARKS.md, entries 18 and 23); the texels are
-// the same either way.
+// Where the context has GL_ARB_shader_image_load_store, the trace shaders read the buffers and the
+// environment map that kImageUnits below lists with imageLoad, which llvmpipe generates inline, rather
+// than texelFetch, which is an out-of-line call for every format but RGBA8 (BENCHMARKS.md, entries 18
+// and 23); the texels are the same either way. That is every buffer but textureTexels, the one RGBA8
+// buffer, whose texelFetch llvmpipe already inlines.
 // Triangles are stored in BVH leaf order; "triangle i" below means packed index i.
 //
 //  buffer        format     texels per item  contents
@@ -60,7 +61,8 @@
 // An environment map (only when the scene has one) is a 2D RGBA32F texture of W x H radiance texels,
 // texel (x, y) covering u in [x, x+1)/W, v in [y, y+1)/H (v = 0 is straight up), and an R32F buffer
 // texture of importance-sampling CDFs: H entries of the marginal CDF over rows, then for each row y
-// W entries of the conditional CDF over its texels (each cumulative, ending at 1).
+// W entries of the conditional CDF over its texels (each cumulative, ending at 1). The shaders get W
+// and H as the define ENVIRONMENT_SIZE.
 //
 // Indices stored in float channels are exact integers below 2^24, which every GPU keeps exactly; the
 // node links are integers in an integer format, so no GPU can flush them as denormals.
@@ -108,11 +110,21 @@ enum Unit : int {
     kFirstFreeUnit
 };
 
-// The buffers read with imageLoad when the context allows it (SceneReads::Images, gpu/scene_textures.h):
-// each is bound read-only to the image unit of the same number as its texture unit, and
-// glsl/common/scene_data.glsl declares the same ones as images under SCENE_READS_IMAGES.
-constexpr Unit kImageUnits[] = {kTrianglesUnit, kNormalsUnit, kNodesUnit, kMaterialsUnit, kLightsUnit};
-constexpr int kImageUnitsNeeded = kLightsUnit + 1;  // the highest image unit used, plus one
+// The textures read with imageLoad when the context allows it (SceneReads::Images, gpu/scene_textures.h):
+// each is bound read-only (level 0, not layered) to the image unit of the same number as its texture
+// unit, where the scene has it (the texture buffers and the environment map are optional), and the
+// shaders declare the same ones as images under SCENE_READS_IMAGES (glsl/common/scene_data.glsl, and
+// textures.glsl and lights.glsl for the optional ones). A context without image units for all of them
+// reads them all with texelFetch (resolveSceneReads).
+constexpr Unit kImageUnits[] = {kTrianglesUnit,    kNormalsUnit,        kNodesUnit,
+                                kMaterialsUnit,    kLightsUnit,         kTexcoordsUnit,
+                                kTextureTableUnit, kEnvironmentMapUnit, kEnvironmentCdfUnit};
+// The highest image unit used, plus one.
+constexpr int kImageUnitsNeeded = [] {
+    int highest = 0;
+    for (Unit unit : kImageUnits) highest = unit > highest ? unit : highest;
+    return highest + 1;
+}();
 
 // The layout's defines; with `images`, also SCENE_READS_IMAGES and the extension it needs.
 ShaderDefines layoutDefines(bool images = false);

@@ -30,19 +30,24 @@ GLint glInteger(GLenum name) {
 std::string imagesUnavailable() {
     if (!GLAD_GL_ARB_shader_image_load_store || !glBindImageTexture)
         return "the context lacks GL_ARB_shader_image_load_store";
-    const int images = int(std::size(layout::kImageUnits));
-    // Images share a budget with the fragment outputs; light tracing may use every draw buffer.
-    const GLint units = glInteger(GL_MAX_IMAGE_UNITS), fragment = glInteger(GL_MAX_FRAGMENT_IMAGE_UNIFORMS),
-                combined = glInteger(GL_MAX_COMBINED_IMAGE_UNITS_AND_FRAGMENT_OUTPUTS),
-                outputs = glInteger(GL_MAX_DRAW_BUFFERS);
-    if (units < layout::kImageUnitsNeeded || fragment < images || combined < images + outputs)
-        return "the context has too few image units (GL_MAX_IMAGE_UNITS " + std::to_string(units) +
-               ", GL_MAX_FRAGMENT_IMAGE_UNIFORMS " + std::to_string(fragment) +
-               ", GL_MAX_COMBINED_IMAGE_UNITS_AND_FRAGMENT_OUTPUTS " + std::to_string(combined) + ")";
-    return "";
+    return imageUnitShortfall({glInteger(GL_MAX_IMAGE_UNITS), glInteger(GL_MAX_FRAGMENT_IMAGE_UNIFORMS),
+                               glInteger(GL_MAX_COMBINED_IMAGE_UNITS_AND_FRAGMENT_OUTPUTS),
+                               glInteger(GL_MAX_DRAW_BUFFERS)});
 }
 
 }  // namespace
+
+std::string imageUnitShortfall(const ImageUnitLimits& limits) {
+    const int images = int(std::size(layout::kImageUnits));
+    // Images share a budget with the fragment outputs; light tracing may use every draw buffer.
+    if (limits.imageUnits < layout::kImageUnitsNeeded || limits.fragmentImages < images ||
+        limits.combined < images + limits.drawBuffers)
+        return "the context has too few image units for " + std::to_string(images) +
+               " images (GL_MAX_IMAGE_UNITS " + std::to_string(limits.imageUnits) +
+               ", GL_MAX_FRAGMENT_IMAGE_UNIFORMS " + std::to_string(limits.fragmentImages) +
+               ", GL_MAX_COMBINED_IMAGE_UNITS_AND_FRAGMENT_OUTPUTS " + std::to_string(limits.combined) + ")";
+    return "";
+}
 
 const char* sceneReadsName(SceneReads reads) {
     switch (reads) {
@@ -134,17 +139,18 @@ SceneTextures::~SceneTextures() {
     glDeleteBuffers(GLsizei(buffers_.size()), buffers_.data());
 }
 
-void SceneTextures::bind(SceneReads reads) const {
-    for (size_t i = 0; i < textures_.size(); ++i) {
-        glActiveTexture(GLenum(GL_TEXTURE0 + units_[i]));
-        glBindTexture(GL_TEXTURE_BUFFER, textures_[i]);
-        const auto* images = std::end(layout::kImageUnits);
-        if (reads == SceneReads::Images &&
-            std::find(std::begin(layout::kImageUnits), images, units_[i]) != images)
-            glBindImageTexture(GLuint(units_[i]), textures_[i], 0, GL_FALSE, 0, GL_READ_ONLY, formats_[i]);
-    }
-    // Leave a spare unit active so that later texture creation cannot rebind a scene unit.
+void bindSceneTexture(SceneReads reads, int unit, GLenum target, GLuint texture, GLenum format) {
+    glActiveTexture(GLenum(GL_TEXTURE0 + unit));
+    glBindTexture(target, texture);
+    const auto* images = std::end(layout::kImageUnits);
+    if (reads == SceneReads::Images && std::find(std::begin(layout::kImageUnits), images, unit) != images)
+        glBindImageTexture(GLuint(unit), texture, 0, GL_FALSE, 0, GL_READ_ONLY, format);
     glActiveTexture(GLenum(GL_TEXTURE0 + layout::kFirstFreeUnit));
+}
+
+void SceneTextures::bind(SceneReads reads) const {
+    for (size_t i = 0; i < textures_.size(); ++i)
+        bindSceneTexture(reads, units_[i], GL_TEXTURE_BUFFER, textures_[i], formats_[i]);
 }
 
 }  // namespace fp

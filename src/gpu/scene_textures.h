@@ -8,10 +8,10 @@
 
 namespace fp {
 
-// How the trace shaders read the scene buffers (glsl/common/scene_data.glsl). On llvmpipe, texelFetch
-// of a buffer texture in any format but RGBA8 is an out-of-line call that makes LLVM spill everything
-// live, while imageLoad of an image buffer is generated inline (BENCHMARKS.md, optimisation log,
-// entries 18 and 23); both read the same texels, so the images are bit-identical.
+// How the trace shaders read the scene buffers and the environment map (glsl/common/scene_data.glsl).
+// On llvmpipe, texelFetch of a buffer texture in any format but RGBA8 is an out-of-line call that makes
+// LLVM spill everything live, while imageLoad of an image is generated inline (BENCHMARKS.md,
+// optimisation log, entries 18 and 23); both read the same texels, so the images are bit-identical.
 enum class SceneReads {
     Auto,        // images where the context has them, else texel fetches (FRAGPATH_SCENE_READS may force)
     TexelFetch,  // samplerBuffer + texelFetch: plain OpenGL 4.1 (macOS)
@@ -21,9 +21,28 @@ const char* sceneReadsName(SceneReads reads);  // "texelFetch", "imageLoad" or "
 
 // Resolves `requested` for the current context. Auto: texelFetch when the environment variable
 // FRAGPATH_SCENE_READS is "texelFetch" (for tests and benchmarks), else imageLoad when the context has
-// GL_ARB_shader_image_load_store with enough image units for the scene buffers, else texelFetch.
-// Images: throws fp::Error with the reason when the context cannot. Needs a current context.
+// GL_ARB_shader_image_load_store with enough image units for every texture layout::kImageUnits lists,
+// else texelFetch. Images: throws fp::Error with the reason when the context cannot. Needs a current
+// context.
 SceneReads resolveSceneReads(SceneReads requested);
+
+// The limits that decide whether a context can read the scene as images.
+struct ImageUnitLimits {
+    int imageUnits = 0;      // GL_MAX_IMAGE_UNITS
+    int fragmentImages = 0;  // GL_MAX_FRAGMENT_IMAGE_UNIFORMS
+    int combined = 0;        // GL_MAX_COMBINED_IMAGE_UNITS_AND_FRAGMENT_OUTPUTS
+    int drawBuffers = 0;     // GL_MAX_DRAW_BUFFERS
+};
+// Why a context with these limits cannot have every texture that layout::kImageUnits lists bound as an
+// image (all of them, whichever the scene has, so that the answer is the same for every scene), or ""
+// when it can.
+std::string imageUnitShortfall(const ImageUnitLimits& limits);
+
+// Binds `texture` (a GL_TEXTURE_BUFFER or GL_TEXTURE_2D, `target`) to texture unit `unit`; with
+// SceneReads::Images and a unit that layout::kImageUnits lists, also read-only, level 0, as `format`,
+// to the image unit of the same number. Leaves a spare unit active, so that later texture creation
+// cannot rebind a scene unit. Every scene texture is bound through this.
+void bindSceneTexture(SceneReads reads, int unit, GLenum target, GLuint texture, GLenum format);
 
 class SceneTextures {
   public:
@@ -34,9 +53,8 @@ class SceneTextures {
     SceneTextures(const SceneTextures&) = delete;
     SceneTextures& operator=(const SceneTextures&) = delete;
 
-    // Binds every buffer texture to its unit (layout::Unit); the texture buffers only if the scene has any.
-    // With SceneReads::Images, also binds the buffers that layout::kImageBuffers lists, read-only, to the
-    // image unit of the same number.
+    // Binds every buffer texture to its unit (layout::Unit), and to its image unit as bindSceneTexture
+    // does; the texture buffers only if the scene has any.
     void bind(SceneReads reads) const;
 
   private:

@@ -86,6 +86,11 @@ std::unique_ptr<Program> Renderer::compile(Integrator integrator, const char* fr
     defines.emplace_back("GUIDES", settings_.guides ? "1" : "0");
     defines.emplace_back("MATERIAL_TYPES", std::to_string(materialTypes_));
     defines.emplace_back("ENVIRONMENT_MAP", environmentTextures_ ? "1" : "0");
+    if (environmentTextures_) {
+        glm::ivec2 size = environmentTextures_->size();
+        defines.emplace_back("ENVIRONMENT_SIZE",
+                             "ivec2(" + std::to_string(size.x) + ", " + std::to_string(size.y) + ")");
+    }
     // Only textured scenes pay for texture lookups (glsl/common/textures.glsl).
     if (surfaceTextures_) defines.emplace_back("SURFACE_TEXTURES", "1");
     auto vec3Literal = [](const glm::vec3& v) {
@@ -217,7 +222,7 @@ void Renderer::setTraceUniforms(Program& p, int maxDepth) {
         p.set("uEnvironmentMap", int(layout::kEnvironmentMapUnit));
         p.set("uEnvironmentCdf", int(layout::kEnvironmentCdfUnit));
         p.set("uEnvironmentRotation", environmentRotation_);
-        environmentTextures_->bind();
+        environmentTextures_->bind(stats_.sceneReads);
     }
     p.set("uRayOffset", rayOffset_);
     p.set("uMaxDepth", maxDepth);

@@ -1,7 +1,8 @@
 // The two ways the trace shaders read the scene (gpu/scene_textures.h): imageLoad where the context has
 // GL_ARB_shader_image_load_store, texelFetch elsewhere. They read the same texels, so every integrator,
-// light tracing included, must render the same image bit for bit either way; llvmpipe has the
-// extension, so both paths run here and a break in either fails.
+// light tracing included, must render the same image bit for bit either way, on a plain scene, a
+// textured one and one lit by an environment map (the optional textures are images too); llvmpipe has
+// the extension, so both paths run here and a break in either fails.
 #include <gtest/gtest.h>
 
 #include <cstdlib>
@@ -12,6 +13,8 @@
 #include "core/error.h"
 #include "render_test_util.h"
 #include "scene/builtin_scene.h"
+#include "scene/load.h"
+#include "scene/procedural.h"
 
 namespace fp::test {
 namespace {
@@ -47,19 +50,78 @@ void expectBitIdentical(const Accumulation& a, const Accumulation& b, const char
     EXPECT_GT(estimate(a).mean.r, 0.01f) << what;
 }
 
-TEST(SceneReads, ImageLoadAndTexelFetchRenderTheSameCornellBox) {
-    ensureGlContext();
-    Scene scene = builtinCornellBox();
+void expectTheSameBothWays(const Scene& scene, const Camera& camera) {
     Renderer images(scene, ShaderLibrary(), layout::bvhOptions(), SceneReads::Images);
     Renderer fetches(scene, ShaderLibrary(), layout::bvhOptions(), SceneReads::TexelFetch);
     ASSERT_EQ(images.stats().sceneReads, SceneReads::Images);
     ASSERT_EQ(fetches.stats().sceneReads, SceneReads::TexelFetch);
     // Every integrator: bdpt adds the light-tracing pass, which reads the lights and materials too.
     for (Integrator integrator : kAllIntegrators) {
-        Accumulation a = renderScene(images, *scene.camera, integrator, 24, 4, 5, 7);
-        Accumulation b = renderScene(fetches, *scene.camera, integrator, 24, 4, 5, 7);
+        Accumulation a = renderScene(images, camera, integrator, 24, 4, 5, 7);
+        Accumulation b = renderScene(fetches, camera, integrator, 24, 4, 5, 7);
         expectBitIdentical(a, b, integratorName(integrator));
     }
+}
+
+TEST(SceneReads, ImageLoadAndTexelFetchRenderTheSameCornellBox) {
+    ensureGlContext();
+    Scene scene = builtinCornellBox();
+    expectTheSameBothWays(scene, *scene.camera);
+}
+
+// The texture coordinates and the texture table are images too (the RGBA8 texels stay texel fetches).
+TEST(SceneReads, ImageLoadAndTexelFetchRenderTheSameTexturedScene) {
+    ensureGlContext();
+    Scene scene = loadScene(FP_SOURCE_DIR "/assets/cornell_checker/cornell_checker.json");
+    ASSERT_FALSE(scene.textures.empty());
+    expectTheSameBothWays(scene, *scene.camera);
+}
+
+// The environment map (a 2D image) and its CDFs, with an emitter as well, so that light sampling
+// chooses between the two.
+TEST(SceneReads, ImageLoadAndTexelFetchRenderTheSameEnvironmentMap) {
+    ensureGlContext();
+    Scene scene;
+    scene.source = "sphere under a sky, and a lamp";
+    Material grey, lamp;
+    grey.diffuse = glm::vec3(0.6f);
+    lamp.emission = glm::vec3(5.0f);
+    scene.materials = {grey, lamp};
+    appendSphere(scene, glm::vec3(0.0f), 1.0f, 12, 24, 0, true);
+    Triangle t;
+    t.p = {glm::vec3(-0.5f, 2.0f, -0.5f), glm::vec3(0.5f, 2.0f, -0.5f), glm::vec3(0.0f, 2.0f, 0.5f)};
+    glm::vec3 down = glm::normalize(t.geometricNormal());
+    t.n = {down, down, down};
+    t.material = 1;
+    ASSERT_LT(down.y, 0.0f);  // facing the sphere
+    scene.triangles.push_back(t);
+    // Every texel different, and a bright patch that importance sampling favours.
+    Image map(32, 16);
+    for (int y = 0; y < map.height; ++y)
+        for (int x = 0; x < map.width; ++x)
+            map.at(x, y) = glm::vec3(0.1f + 0.02f * float(x), 0.2f + 0.03f * float(y), 0.5f) *
+                           (x >= 10 && x < 13 && y >= 3 && y < 5 ? 300.0f : 1.0f);
+    scene.environment.map = map;
+    scene.environment.rotationDegrees = 30.0f;
+    Camera camera;
+    camera.eye = glm::vec3(0.0f, 0.6f, -3.5f);
+    camera.fovY = 45.0f;
+    expectTheSameBothWays(scene, camera);
+}
+
+// Every texture read as an image needs its image unit, whether or not the scene has it, so a context
+// with room for the five scene buffers but not the optional four reads everything with texelFetch.
+TEST(SceneReads, ImagesNeedUnitsForEveryTextureReadAsAnImage) {
+    // llvmpipe (Mesa 22.3)
+    EXPECT_EQ(imageUnitShortfall({192, 32, 280, 8}), "");
+    // Just enough: image units 0 to 9, nine images and eight draw buffers.
+    EXPECT_EQ(imageUnitShortfall({10, 9, 17, 8}), "");
+    // One short of each: no unit 9 (the environment CDFs), eight images, or too small a shared budget.
+    EXPECT_NE(imageUnitShortfall({9, 32, 280, 8}), "");
+    EXPECT_NE(imageUnitShortfall({192, 8, 280, 8}), "");
+    EXPECT_NE(imageUnitShortfall({192, 32, 16, 8}), "");
+    // The minimums of GL 4.2.
+    EXPECT_NE(imageUnitShortfall({8, 8, 8, 8}), "");
 }
 
 TEST(SceneReads, AutoUsesImagesUnlessTheEnvironmentForcesTexelFetch) {
