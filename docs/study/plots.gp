@@ -3,6 +3,7 @@
 # Columns: 1 integrator, 2 denoiser, 3 spp, 4 render_seconds, 5 render_cpu_seconds,
 # 6 denoise_seconds, 7 total_seconds, 8 rmse, 9 rel_mse, 10 ssim.
 set datafile separator ','
+set datafile missing NaN
 set terminal pngcairo size 800,520 font 'sans,10'
 set grid
 set key outside right top

@@ -95,7 +95,9 @@ std::string gnuplotScript(const std::vector<StudyRow>& rows, double relMseThresh
            "#   gnuplot plots.gp\n" +
            "# Columns: 1 integrator, 2 denoiser, 3 spp, 4 render_seconds, 5 render_cpu_seconds,\n" +
            "# 6 denoise_seconds, 7 total_seconds, 8 rmse, 9 rel_mse, 10 ssim.\n" +
-           "set datafile separator ','\n" + "set terminal pngcairo size 800,520 font 'sans,10'\n" +
+           "set datafile separator ','\n" +
+           // A clause maps the other series' rows to NaN; as "missing" they do not break its line.
+           "set datafile missing NaN\n" + "set terminal pngcairo size 800,520 font 'sans,10'\n" +
            "set grid\n" + "set key outside right top\n" + ranges + "set logscale xy\n" + "\nset output '" +
            names0 + "'\n" + "set title 'Error against samples per pixel'\n" +
            "set xlabel 'samples per pixel'\nset ylabel 'relative MSE'\n" + sppRange +
