@@ -45,9 +45,7 @@ PackedEnvironment packEnvironment(const Environment& environment) {
 }
 
 EnvironmentTextures::EnvironmentTextures(const PackedEnvironment& e) : size_(e.width, e.height) {
-    GLint maxSize = 0, maxTexels = 0;
-    glGetIntegerv(GL_MAX_TEXTURE_SIZE, &maxSize);
-    glGetIntegerv(GL_MAX_TEXTURE_BUFFER_SIZE, &maxTexels);
+    const GLint maxSize = glInteger(GL_MAX_TEXTURE_SIZE), maxTexels = glInteger(GL_MAX_TEXTURE_BUFFER_SIZE);
     if (e.width > maxSize || e.height > maxSize || e.cdf.size() > size_t(maxTexels))
         throw Error("environment map " + std::to_string(e.width) + "x" + std::to_string(e.height) +
                     " is larger than this GPU's textures (" + std::to_string(maxSize) + " per side)");

@@ -20,12 +20,6 @@ struct BufferSpec {
     int unit;
 };
 
-GLint glInteger(GLenum name) {
-    GLint value = 0;
-    glGetIntegerv(name, &value);
-    return value;
-}
-
 // Why the context cannot read the scene as images, or "" when it can.
 std::string imagesUnavailable() {
     if (!GLAD_GL_ARB_shader_image_load_store || !glBindImageTexture)
@@ -100,11 +94,7 @@ SceneTextures::SceneTextures(const PackedScene& s, size_t maxTexels) {
         specs.push_back(spec("texture table", s.textureTable, GL_RGBA32I, layout::kTextureTableUnit));
     }
 
-    if (maxTexels == 0) {
-        GLint limit = 0;
-        glGetIntegerv(GL_MAX_TEXTURE_BUFFER_SIZE, &limit);
-        maxTexels = size_t(limit);
-    }
+    if (maxTexels == 0) maxTexels = size_t(glInteger(GL_MAX_TEXTURE_BUFFER_SIZE));
     for (const BufferSpec& b : specs)
         if (b.texels > maxTexels)
             throw Error("scene too large for this GPU: the " + std::string(b.name) + " buffer needs " +

@@ -20,8 +20,7 @@ void drawAllAttachments() {
 }  // namespace
 
 RenderTargets::RenderTargets(int width, int height) : width_(width), height_(height) {
-    GLint maxSize = 0;
-    glGetIntegerv(GL_MAX_TEXTURE_SIZE, &maxSize);
+    const GLint maxSize = glInteger(GL_MAX_TEXTURE_SIZE);
     if (width < 1 || height < 1 || width > maxSize || height > maxSize)
         throw Error("image size " + std::to_string(width) + "x" + std::to_string(height) +
                     " is outside what this GPU supports (1 to " + std::to_string(maxSize) + " per side)");

@@ -98,9 +98,8 @@ class BsdfProbe {
         : program_(ShaderLibrary(shaderDirectory), "passes/fullscreen.vert.glsl",
                    "tests/bsdf_probe.frag.glsl", layout::layoutDefines()) {
         // Units of our own at the top of the range, so that no test's renderer loses a binding.
-        GLint units = 0;
-        glGetIntegerv(GL_MAX_COMBINED_TEXTURE_IMAGE_UNITS, &units);
-        firstUnit_ = units - 4;  // materials, wo and eta, wi, and a spare one for creating textures
+        firstUnit_ = glInteger(GL_MAX_COMBINED_TEXTURE_IMAGE_UNITS) -
+                     4;  // materials, wo and eta, wi, and a spare one for creating textures
         glActiveTexture(GLenum(GL_TEXTURE0 + firstUnit_));
         glGenBuffers(1, &materialBuffer_);
         glBindBuffer(GL_TEXTURE_BUFFER, materialBuffer_);
