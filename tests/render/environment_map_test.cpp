@@ -9,7 +9,6 @@
 #include "core/error.h"
 #include "render_test_util.h"
 #include "scene/load.h"
-#include "scene/procedural.h"
 
 namespace fp::test {
 namespace {
@@ -23,17 +22,6 @@ Image skyWithSun(int width, int height) {
     for (int y = 3; y < 5; ++y)
         for (int x = 10; x < 12; ++x) map.at(x, y) = glm::vec3(400.0f, 300.0f, 200.0f);
     return map;
-}
-
-Scene sphereUnderSky(const Image& map) {
-    Scene scene;
-    scene.source = "sphere under a sky";
-    Material m;
-    m.diffuse = glm::vec3(0.7f);
-    scene.materials.push_back(m);
-    scene.environment.map = map;
-    appendSphere(scene, glm::vec3(0.0f), 1.0f, 16, 32, 0, true);
-    return scene;
 }
 
 Camera view() {

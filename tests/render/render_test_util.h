@@ -10,12 +10,25 @@
 #include "image/image_stats.h"
 #include "render/renderer.h"
 #include "scene/builtin_scene.h"
+#include "scene/procedural.h"
 #include "scene/scene.h"
 
 namespace fp::test {
 
 inline void ensureGlContext() {
     static std::unique_ptr<GlContext> context = createOsMesaContext();
+}
+
+// A smooth grey unit sphere at the origin, lit only by the environment map `map`.
+inline Scene sphereUnderSky(const Image& map) {
+    Scene scene;
+    scene.source = "sphere under a sky";
+    Material m;
+    m.diffuse = glm::vec3(0.7f);
+    scene.materials.push_back(m);
+    scene.environment.map = map;
+    appendSphere(scene, glm::vec3(0.0f), 1.0f, 16, 32, 0, true);
+    return scene;
 }
 
 // The closed cube [-1, 1]^3 with every face facing inward, one material for all of it.

@@ -14,7 +14,6 @@
 #include "render_test_util.h"
 #include "scene/builtin_scene.h"
 #include "scene/load.h"
-#include "scene/procedural.h"
 
 namespace fp::test {
 namespace {
@@ -81,13 +80,17 @@ TEST(SceneReads, ImageLoadAndTexelFetchRenderTheSameTexturedScene) {
 // chooses between the two.
 TEST(SceneReads, ImageLoadAndTexelFetchRenderTheSameEnvironmentMap) {
     ensureGlContext();
-    Scene scene;
-    scene.source = "sphere under a sky, and a lamp";
-    Material grey, lamp;
-    grey.diffuse = glm::vec3(0.6f);
+    // Every texel different, and a bright patch that importance sampling favours.
+    Image map(32, 16);
+    for (int y = 0; y < map.height; ++y)
+        for (int x = 0; x < map.width; ++x)
+            map.at(x, y) = glm::vec3(0.1f + 0.02f * float(x), 0.2f + 0.03f * float(y), 0.5f) *
+                           (x >= 10 && x < 13 && y >= 3 && y < 5 ? 300.0f : 1.0f);
+    Scene scene = sphereUnderSky(map);
+    scene.source += ", and a lamp";
+    Material lamp;
     lamp.emission = glm::vec3(5.0f);
-    scene.materials = {grey, lamp};
-    appendSphere(scene, glm::vec3(0.0f), 1.0f, 12, 24, 0, true);
+    scene.materials.push_back(lamp);
     Triangle t;
     t.p = {glm::vec3(-0.5f, 2.0f, -0.5f), glm::vec3(0.5f, 2.0f, -0.5f), glm::vec3(0.0f, 2.0f, 0.5f)};
     glm::vec3 down = glm::normalize(t.geometricNormal());
@@ -95,13 +98,6 @@ TEST(SceneReads, ImageLoadAndTexelFetchRenderTheSameEnvironmentMap) {
     t.material = 1;
     ASSERT_LT(down.y, 0.0f);  // facing the sphere
     scene.triangles.push_back(t);
-    // Every texel different, and a bright patch that importance sampling favours.
-    Image map(32, 16);
-    for (int y = 0; y < map.height; ++y)
-        for (int x = 0; x < map.width; ++x)
-            map.at(x, y) = glm::vec3(0.1f + 0.02f * float(x), 0.2f + 0.03f * float(y), 0.5f) *
-                           (x >= 10 && x < 13 && y >= 3 && y < 5 ? 300.0f : 1.0f);
-    scene.environment.map = map;
     scene.environment.rotationDegrees = 30.0f;
     Camera camera;
     camera.eye = glm::vec3(0.0f, 0.6f, -3.5f);
