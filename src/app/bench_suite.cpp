@@ -170,6 +170,36 @@ void printSummary(const std::vector<Measured>& measured, const SuiteOptions& opt
     }
 }
 
+// Each scene's median paths per CPU-second over the Cornell box's in the same invocation (issue #5 asks
+// sphere-1m for at least 40 %), and the native reference's own share where it ran both; nothing without
+// the Cornell box.
+struct CornellShare {
+    double gpu;
+    std::optional<double> native;
+};
+std::optional<CornellShare> cornellShare(const Measured& scene, const std::vector<Measured>& measured) {
+    auto cornell =
+        std::find_if(measured.begin(), measured.end(), [](const Measured& e) { return e.name == "cornell"; });
+    if (cornell == measured.end()) return std::nullopt;
+    const char* key = "paths_per_cpu_second";
+    CornellShare share{scene.m.summary(key).median / cornell->m.summary(key).median, std::nullopt};
+    if (scene.native && !scene.native->skipped && cornell->native && !cornell->native->skipped)
+        share.native = scene.native->pathsPerCpuSecond().median / cornell->native->pathsPerCpuSecond().median;
+    return share;
+}
+
+void printCornellShares(const std::vector<Measured>& measured) {
+    if (!cornellShare(measured.front(), measured)) return;
+    std::printf("\nshare of the Cornell box's paths per CPU-second, this invocation (medians):\n");
+    for (const Measured& e : measured) {
+        if (e.name == "cornell") continue;
+        const CornellShare share = *cornellShare(e, measured);
+        std::printf("  %-12s %5.1f %%", e.name.c_str(), 100.0 * share.gpu);
+        if (share.native) std::printf(", native reference %.1f %%", 100.0 * *share.native);
+        std::printf("\n");
+    }
+}
+
 }  // namespace
 
 const std::vector<std::string>& suiteSceneNames() {
@@ -251,6 +281,7 @@ int runSuite(const SuiteOptions& options) {
         measured.push_back({s.name, std::move(m), fetchSeconds, std::move(native)});
     }
     printSummary(measured, options, environment);
+    if (!measured.empty()) printCornellShares(measured);
     for (const Skipped& s : skipped) std::printf("  skipped %s: %s\n", s.name.c_str(), s.reason.c_str());
 
     if (options.jsonPath) {
@@ -263,6 +294,10 @@ int runSuite(const SuiteOptions& options) {
             scene["name"] = e.name;
             if (e.fetchSeconds) scene["fetch_seconds"] = *e.fetchSeconds;
             if (e.native) scene["native"] = nativeJson(*e.native, e.m);
+            if (std::optional<CornellShare> share = cornellShare(e, measured)) {
+                scene["share_of_cornell"] = share->gpu;
+                if (share->native) scene["native"]["share_of_cornell"] = *share->native;
+            }
             j["scenes"].push_back(scene);
         }
         j["skipped"] = nlohmann::json::array();

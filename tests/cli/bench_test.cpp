@@ -106,6 +106,23 @@ TEST_F(Bench, NativeReferenceSkipsScenesItCannotRender) {
     EXPECT_NE(j["native"]["skipped"].get<std::string>().find("Lambertian"), std::string::npos);
 }
 
+TEST_F(Bench, SuiteGivesEachScenesShareOfTheCornellBoxForBothRenderers) {
+    std::string file = path("shares.json");
+    CliRun r = fragpath(
+        "bench --suite --native --scenes cornell,sphere-1k --size 8x8 --spp 1 --runs 1 --json " + file);
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    std::ifstream in(file);
+    nlohmann::json j = nlohmann::json::parse(in);
+    ASSERT_EQ(j["scenes"].size(), 2u);
+    auto native = [&](int scene) {
+        return j["scenes"][scene]["native"]["paths_per_cpu_second"]["median"].get<double>();
+    };
+    EXPECT_DOUBLE_EQ(j["scenes"][1]["native"]["share_of_cornell"].get<double>(), native(1) / native(0));
+    char text[64];
+    std::snprintf(text, sizeof text, ", native reference %.1f %%", 100.0 * native(1) / native(0));
+    EXPECT_NE(r.output.find(text), std::string::npos) << text << " in " << r.output;
+}
+
 TEST_F(Bench, WarnsWhenTheThreadCountIsLeftToLlvmpipe) {
     CliRun r = test::runFragpath("bench --size 8x8 --spp 1 --runs 1", "env -u LP_NUM_THREADS");
     ASSERT_EQ(r.exitCode, 0) << r.output;
@@ -171,6 +188,18 @@ TEST_F(Bench, SuiteWritesOneJsonObjectPerScene) {
     ASSERT_EQ(j["skipped"].size(), 3u);
     for (const nlohmann::json& s : j["skipped"])
         EXPECT_NE(s["reason"].get<std::string>().find("--max-triangles 2000"), std::string::npos) << s;
+
+    // Issue #5's figure: each scene's paths per CPU-second as a share of the Cornell box's, same run.
+    auto median = [&](int scene) {
+        return j["scenes"][scene]["summary"]["paths_per_cpu_second"]["median"].get<double>();
+    };
+    EXPECT_DOUBLE_EQ(j["scenes"][0]["share_of_cornell"].get<double>(), 1.0);
+    EXPECT_DOUBLE_EQ(j["scenes"][1]["share_of_cornell"].get<double>(), median(1) / median(0));
+    char line[64];
+    std::snprintf(line, sizeof line, "  %-12s %5.1f %%", "sphere-1k", 100.0 * median(1) / median(0));
+    EXPECT_NE(r.output.find("share of the Cornell box's paths per CPU-second"), std::string::npos)
+        << r.output;
+    EXPECT_NE(r.output.find(line), std::string::npos) << line << " in " << r.output;
 }
 
 TEST_F(Bench, SuiteSkipsTheBunnyWithANoteWithoutNpm) {
