@@ -226,8 +226,10 @@ void printMeasurement(const SceneMeasurement& m, double firstFrameSeconds,
         stats.bvhBuildCpuSeconds, stats.bvhBuildThreads, stats.triangles / stats.bvhBuildSeconds);
     double bytes = double(stats.gpuBytes);
     std::string total = bytes >= 1e6 ? formatted("%.1f MB", bytes / 1e6) : formatted("%.1f kB", bytes / 1e3);
-    std::printf("gpu memory       %s: %.1f bytes per triangle, %.1f of them positions + BVH\n", total.c_str(),
-                bytes / stats.triangles, double(stats.gpuGeometryBytes) / stats.triangles);
+    std::printf(
+        "gpu memory       %s: %.1f bytes per triangle, %.1f of them positions + BVH; %.0f %% read in place\n",
+        total.c_str(), bytes / stats.triangles, double(stats.gpuGeometryBytes) / stats.triangles,
+        100.0 * double(stats.gpuPinnedBytes) / bytes);
     std::printf("scene reads      %s (FRAGPATH_SCENE_READS=texelFetch forces texelFetch)\n",
                 sceneReadsName(stats.sceneReads));
     std::string context = contextSeconds ? "context " + formatted("%.3f", *contextSeconds) + ", " : "";
@@ -299,6 +301,7 @@ nlohmann::json measurementJson(const SceneMeasurement& m, double firstFrameSecon
                 {"geometry_bytes", stats.gpuGeometryBytes},
                 {"bytes_per_triangle", double(stats.gpuBytes) / stats.triangles},
                 {"geometry_bytes_per_triangle", double(stats.gpuGeometryBytes) / stats.triangles},
+                {"pinned_bytes", stats.gpuPinnedBytes},
                 {"scene_reads", sceneReadsName(stats.sceneReads)}};
     j["first_frame"] = {{"seconds", firstFrameSeconds},
                         {"load_seconds", m.loadSeconds},

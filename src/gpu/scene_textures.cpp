@@ -29,7 +29,31 @@ std::string imagesUnavailable() {
                                glInteger(GL_MAX_DRAW_BUFFERS)});
 }
 
+// Gives `buffer` (bound to GL_TEXTURE_BUFFER) its storage: `data` itself where `pin` and the driver
+// accepts it, else a copy. Returns whether it is pinned.
+bool uploadBuffer(GLuint buffer, const void* data, size_t bytes, bool pin) {
+    constexpr uintptr_t kPage = 4096;
+    if (pin && bytes >= kPage && reinterpret_cast<uintptr_t>(data) % kPage == 0) {
+        glBindBuffer(GL_EXTERNAL_VIRTUAL_MEMORY_BUFFER_AMD, buffer);
+        glBufferData(GL_EXTERNAL_VIRTUAL_MEMORY_BUFFER_AMD, GLsizeiptr(bytes), data, GL_STATIC_DRAW);
+        glBindBuffer(GL_EXTERNAL_VIRTUAL_MEMORY_BUFFER_AMD, 0);
+        glBindBuffer(GL_TEXTURE_BUFFER, buffer);
+        if (glGetError() == GL_NO_ERROR) return true;
+    }
+    glBufferData(GL_TEXTURE_BUFFER, GLsizeiptr(bytes), data, GL_STATIC_DRAW);
+    return false;
+}
+
 }  // namespace
+
+bool pinnedUploadAllowed() {
+    const char* forced = std::getenv("FRAGPATH_PINNED_UPLOAD");
+    if (forced && std::string(forced) == "0") return false;
+    const char* renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
+    const std::string name = renderer ? renderer : "";
+    return GLAD_GL_AMD_pinned_memory &&
+           (name.find("llvmpipe") != std::string::npos || name.find("softpipe") != std::string::npos);
+}
 
 std::string imageUnitShortfall(const ImageUnitLimits& limits) {
     const int images = int(std::size(layout::kImageUnits));
@@ -70,7 +94,8 @@ SceneReads resolveSceneReads(SceneReads requested) {
     return reason.empty() ? SceneReads::Images : SceneReads::TexelFetch;
 }
 
-SceneTextures::SceneTextures(const PackedScene& s, size_t maxTexels) {
+SceneTextures::SceneTextures(PackedScene scene, size_t maxTexels) : scene_(std::move(scene)) {
+    const PackedScene& s = scene_;
     // A zero-size buffer texture is not allowed; empty lists (no lights) get one unused texel.
     static const glm::vec4 kUnused(0.0f);
     auto spec = [](const char* name, const auto& v, GLenum format, int unit, size_t texelBytes = 0) {
@@ -107,13 +132,17 @@ SceneTextures::SceneTextures(const PackedScene& s, size_t maxTexels) {
     textures_.resize(count);
     glGenBuffers(GLsizei(count), buffers_.data());
     glGenTextures(GLsizei(count), textures_.data());
+    const bool pin = pinnedUploadAllowed();
+    for (int i = 0; i < 64 && glGetError() != GL_NO_ERROR; ++i) {
+    }  // earlier errors cleared, so that one below is the upload's own
     for (size_t i = 0; i < count; ++i) {
         const BufferSpec& b = specs[i];
         units_.push_back(b.unit);
         formats_.push_back(b.format);
         glBindBuffer(GL_TEXTURE_BUFFER, buffers_[i]);
-        glBufferData(GL_TEXTURE_BUFFER, GLsizeiptr(b.texels * b.texelBytes), b.data, GL_STATIC_DRAW);
-        if (glGetError() == GL_OUT_OF_MEMORY)
+        if (uploadBuffer(buffers_[i], b.data, b.texels * b.texelBytes, pin))
+            pinnedBytes_ += b.texels * b.texelBytes;
+        else if (glGetError() == GL_OUT_OF_MEMORY)
             throw Error("out of GPU memory uploading the " + std::string(b.name) + " buffer (" +
                         std::to_string(b.texels * b.texelBytes) + " bytes)");
         glActiveTexture(GLenum(GL_TEXTURE0 + b.unit));
@@ -122,6 +151,7 @@ SceneTextures::SceneTextures(const PackedScene& s, size_t maxTexels) {
     }
     glBindBuffer(GL_TEXTURE_BUFFER, 0);
     glActiveTexture(GLenum(GL_TEXTURE0 + layout::kFirstFreeUnit));
+    if (pinnedBytes_ == 0) scene_ = PackedScene{};  // every buffer holds a copy
 }
 
 SceneTextures::~SceneTextures() {

@@ -44,11 +44,23 @@ std::string imageUnitShortfall(const ImageUnitLimits& limits);
 // cannot rebind a scene unit. Every scene texture is bound through this.
 void bindSceneTexture(SceneReads reads, int unit, GLenum target, GLuint texture, GLenum format);
 
+// Whether the scene's arrays may be the buffers' storage themselves (GL_AMD_pinned_memory): only when
+// the context has the extension and renders on the CPU (llvmpipe, softpipe), whose "GPU memory" is this
+// process's memory anyway; a discrete GPU would read pinned memory across the bus at every fetch.
+// FRAGPATH_PINNED_UPLOAD=0 forbids it (to measure the copy). Needs a current context.
+bool pinnedUploadAllowed();
+
 class SceneTextures {
   public:
-    // Throws fp::Error if a buffer exceeds GL_MAX_TEXTURE_BUFFER_SIZE (or `maxTexels`, when given, to
-    // check the message without a multi-gigabyte scene), before anything is uploaded.
-    explicit SceneTextures(const PackedScene& scene, size_t maxTexels = 0);
+    // Takes the packed scene. Where pinnedUploadAllowed(), each array of at least a page that starts on
+    // a page boundary (the large ones are HugePageVectors: 2 MiB-aligned) becomes its buffer's storage
+    // in place: no copy, and none of the page faults of fresh buffer memory, which dominated a
+    // million-triangle scene's upload (BENCHMARKS.md, optimisation log, entry 37); so the scene lives
+    // as long as the buffers. Elsewhere, or when the driver refuses, the buffer gets a copy, and the
+    // scene's arrays are freed after the upload. Throws fp::Error if a buffer exceeds
+    // GL_MAX_TEXTURE_BUFFER_SIZE (or `maxTexels`, when given, to check the message without a
+    // multi-gigabyte scene), before anything is uploaded.
+    explicit SceneTextures(PackedScene scene, size_t maxTexels = 0);
     ~SceneTextures();
     SceneTextures(const SceneTextures&) = delete;
     SceneTextures& operator=(const SceneTextures&) = delete;
@@ -57,7 +69,12 @@ class SceneTextures {
     // does; the texture buffers only if the scene has any.
     void bind(SceneReads reads) const;
 
+    // Bytes of the scene the buffers read in place (0 when every buffer holds a copy).
+    size_t pinnedBytes() const { return pinnedBytes_; }
+
   private:
+    PackedScene scene_;  // the pinned buffers' storage; emptied when nothing is pinned
+    size_t pinnedBytes_ = 0;
     std::vector<GLenum> formats_;
     std::vector<int> units_;  // per buffer: the layout::Unit it is bound to
     std::vector<GLuint> buffers_, textures_;

@@ -42,8 +42,6 @@ Renderer::Renderer(const Scene& scene, ShaderLibrary shaders, const BvhBuildOpti
 
     start = std::chrono::steady_clock::now();
     PackedScene packed = packScene(scene, bvh);
-    textures_ = std::make_unique<SceneTextures>(packed);
-    stats_.uploadSeconds = secondsSince(start);
     stats_.triangles = packed.triangleCount;
     stats_.emitters = packed.lightCount;
     stats_.gpuBytes = packed.bytes();
@@ -54,6 +52,9 @@ Renderer::Renderer(const Scene& scene, ShaderLibrary shaders, const BvhBuildOpti
     // for each node on the way down from the root.
     stats_.stackSize = std::max<uint32_t>(32, 3 * packed.bvhDepth + 1);
     lightCount_ = packed.lightCount;
+    textures_ = std::make_unique<SceneTextures>(std::move(packed));
+    stats_.uploadSeconds = secondsSince(start);
+    stats_.gpuPinnedBytes = textures_->pinnedBytes();
 
     // A self-intersection offset relative to the scene's size and distance from the origin, where
     // float spacing grows.

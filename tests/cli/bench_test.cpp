@@ -145,6 +145,9 @@ void expectSceneFigures(const nlohmann::json& scene) {
     for (const char* key : {"build_seconds", "sah_cost", "nodes", "depth"}) expectPositive(scene["bvh"], key);
     for (const char* key : {"bytes", "geometry_bytes", "bytes_per_triangle", "geometry_bytes_per_triangle"})
         expectPositive(scene["gpu"], key);
+    // Read in place (tests/render/pinned_upload_test.cpp): a part of the whole.
+    EXPECT_LE(scene["gpu"]["pinned_bytes"].get<double>(), scene["gpu"]["bytes"].get<double>())
+        << scene["gpu"];
     for (const char* key :
          {"seconds", "load_seconds", "bvh_and_upload_seconds", "compile_seconds", "first_pass_seconds"})
         expectPositive(scene["first_frame"], key);

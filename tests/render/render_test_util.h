@@ -1,9 +1,15 @@
 #pragma once
 // Shared pieces of the GPU tests: one OSMesa context per test binary, small analytic scenes, and
 // statistics of accumulated images for tolerances derived from the sample variance.
+#include <gtest/gtest.h>
+
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
+#include <cstring>
 #include <memory>
+#include <optional>
+#include <string>
 #include <vector>
 
 #include "gl/context.h"
@@ -18,6 +24,28 @@ namespace fp::test {
 inline void ensureGlContext() {
     static std::unique_ptr<GlContext> context = createOsMesaContext();
 }
+
+// Sets an environment variable for one scope, restoring what was there.
+class ScopedEnv {
+  public:
+    ScopedEnv(const char* name, const char* value) : name_(name) {
+        if (const char* old = std::getenv(name)) old_ = old;
+        if (value)
+            setenv(name, value, 1);
+        else
+            unsetenv(name);
+    }
+    ~ScopedEnv() {
+        if (old_)
+            setenv(name_, old_->c_str(), 1);
+        else
+            unsetenv(name_);
+    }
+
+  private:
+    const char* name_;
+    std::optional<std::string> old_;
+};
 
 // A smooth grey unit sphere at the origin, lit only by the environment map `map`.
 inline Scene sphereUnderSky(const Image& map) {
@@ -182,6 +210,16 @@ inline Accumulation renderScene(Renderer& renderer, const Camera& camera, Integr
     renderer.configure(s, camera);
     renderer.render(spp);
     return renderer.readback();
+}
+
+// Two renders of the same samples that must agree bit for bit (sums and squares), and are not black: a
+// broken read that returned zeros on both sides must not pass.
+inline void expectBitIdentical(const Accumulation& a, const Accumulation& b, const char* what) {
+    ASSERT_EQ(a.sum.size(), b.sum.size()) << what;
+    EXPECT_EQ(std::memcmp(a.sum.data(), b.sum.data(), a.sum.size() * sizeof(glm::vec4)), 0) << what;
+    EXPECT_EQ(std::memcmp(a.squares.data(), b.squares.data(), a.squares.size() * sizeof(glm::vec4)), 0)
+        << what;
+    EXPECT_GT(estimate(a).mean.r, 0.01f) << what;
 }
 
 }  // namespace fp::test

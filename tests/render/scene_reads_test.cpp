@@ -18,37 +18,6 @@
 namespace fp::test {
 namespace {
 
-// Sets an environment variable for one scope, restoring what was there.
-class ScopedEnv {
-  public:
-    ScopedEnv(const char* name, const char* value) : name_(name) {
-        if (const char* old = std::getenv(name)) old_ = old;
-        if (value)
-            setenv(name, value, 1);
-        else
-            unsetenv(name);
-    }
-    ~ScopedEnv() {
-        if (old_)
-            setenv(name_, old_->c_str(), 1);
-        else
-            unsetenv(name_);
-    }
-
-  private:
-    const char* name_;
-    std::optional<std::string> old_;
-};
-
-void expectBitIdentical(const Accumulation& a, const Accumulation& b, const char* what) {
-    ASSERT_EQ(a.sum.size(), b.sum.size()) << what;
-    EXPECT_EQ(std::memcmp(a.sum.data(), b.sum.data(), a.sum.size() * sizeof(glm::vec4)), 0) << what;
-    EXPECT_EQ(std::memcmp(a.squares.data(), b.squares.data(), a.squares.size() * sizeof(glm::vec4)), 0)
-        << what;
-    // Something was rendered: a broken read that returned zeros everywhere on both paths must not pass.
-    EXPECT_GT(estimate(a).mean.r, 0.01f) << what;
-}
-
 void expectTheSameBothWays(const Scene& scene, const Camera& camera) {
     Renderer images(scene, ShaderLibrary(), layout::bvhOptions(), SceneReads::Images);
     Renderer fetches(scene, ShaderLibrary(), layout::bvhOptions(), SceneReads::TexelFetch);

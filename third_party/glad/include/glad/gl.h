@@ -5,7 +5,7 @@
  *
  * Generator: C/C++
  * Specification: gl
- * Extensions: 1
+ * Extensions: 2
  *
  * APIs:
  *  - gl:core=4.1
@@ -19,10 +19,10 @@
  *  - ON_DEMAND = False
  *
  * Commandline:
- *    --api='gl:core=4.1' --extensions='GL_ARB_shader_image_load_store' c
+ *    --api='gl:core=4.1' --extensions='GL_AMD_pinned_memory,GL_ARB_shader_image_load_store' c
  *
  * Online:
- *    http://glad.sh/#api=gl%3Acore%3D4.1&extensions=GL_ARB_shader_image_load_store&generator=c&options=
+ *    http://glad.sh/#api=gl%3Acore%3D4.1&extensions=GL_AMD_pinned_memory%2CGL_ARB_shader_image_load_store&generator=c&options=
  *
  */
 
@@ -388,6 +388,7 @@ typedef void (*GLADpostcallback)(void *ret, const char *name, GLADapiproc apipro
 #define GL_EQUAL 0x0202
 #define GL_EQUIV 0x1509
 #define GL_EXTENSIONS 0x1F03
+#define GL_EXTERNAL_VIRTUAL_MEMORY_BUFFER_AMD 0x9160
 #define GL_FALSE 0
 #define GL_FASTEST 0x1101
 #define GL_FILL 0x1B02
@@ -1265,6 +1266,8 @@ GLAD_API_CALL int GLAD_GL_VERSION_3_3;
 GLAD_API_CALL int GLAD_GL_VERSION_4_0;
 #define GL_VERSION_4_1 1
 GLAD_API_CALL int GLAD_GL_VERSION_4_1;
+#define GL_AMD_pinned_memory 1
+GLAD_API_CALL int GLAD_GL_AMD_pinned_memory;
 #define GL_ARB_shader_image_load_store 1
 GLAD_API_CALL int GLAD_GL_ARB_shader_image_load_store;
 
