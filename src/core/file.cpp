@@ -21,7 +21,16 @@ std::string readFileBytes(const std::string& path) {
     if (!fs::is_regular_file(status)) throw Error(path + ": is not a regular file");
     std::ifstream in(path, std::ios::binary);
     if (!in) throw Error(path + ": cannot open: " + std::strerror(errno));
-    std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    // One read into a string of the file's size, not a character at a time: a million-triangle OBJ is
+    // tens of megabytes. Then whatever follows, the slow way, for a file that grew meanwhile or whose
+    // size the system does not know (/proc).
+    const uintmax_t size = fs::file_size(path, ec);
+    std::string bytes(ec ? 0 : size_t(size), '\0');
+    in.read(bytes.data(), std::streamsize(bytes.size()));
+    bytes.resize(size_t(in.gcount()));  // a file that shrank meanwhile
+    if (in.bad()) throw Error(path + ": read error");
+    in.clear();
+    bytes.append(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
     if (in.bad()) throw Error(path + ": read error");
     return bytes;
 }

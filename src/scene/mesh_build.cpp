@@ -52,6 +52,7 @@ std::vector<Triangle> buildTriangles(const ObjMesh& mesh, MeshRepairs* repairs,
 
     std::vector<Triangle> triangles;
     triangles.reserve(mesh.corners.size());
+    noTexcoordLine->reserve(noTexcoordLine->size() + mesh.corners.size());
     std::vector<glm::dvec3> polygon;
     std::vector<glm::vec2> uv;
     for (const ObjFace& face : mesh.faces) {

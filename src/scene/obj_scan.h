@@ -31,6 +31,7 @@ struct ObjScan {
     // Source line of every face with at least 3 vertices, in file order (tinyobjloader reports faces in
     // this order, so the k-th face it reports came from faceLines[k]).
     std::vector<int> faceLines;
+    size_t cornerCount = 0;  // over those faces: what the mesh's corner array will hold
     std::vector<MtlLibraryRef> materialLibraries;
     RepairTally shortFaces;  // faces with fewer than 3 vertices, left out of `text`
 };

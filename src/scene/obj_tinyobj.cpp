@@ -1,8 +1,9 @@
 // tinyobjloader's streaming interface: it reports statements in file order without splitting the file
 // into shapes, dropping short faces or limiting polygons to 255 corners (as LoadObj's mesh_t does), so
 // each face it reports pairs up with the line the scan recorded for it.
+#include <istream>
 #include <map>
-#include <sstream>
+#include <streambuf>
 
 #include <tiny_obj_loader.h>
 
@@ -51,17 +52,33 @@ struct Reader {
     }
 };
 
+// An input stream's buffer over the scan's text, which std::istringstream would copy (tens of megabytes
+// for a million triangles). Only read: the const_cast is for std::streambuf's interface.
+struct TextBuffer : std::streambuf {
+    explicit TextBuffer(const std::string& text) {
+        char* begin = const_cast<char*>(text.data());
+        setg(begin, begin, begin + text.size());
+    }
+};
+
 }  // namespace
 
 ObjMesh readObjMesh(const ObjScan& scan, const std::string& name) {
     Reader reader{scan, {}, {}, -1};
+    // The scan counted every element: the arrays are sized once.
+    reader.mesh.positions.reserve(scan.vertexFinite.size());
+    reader.mesh.normals.reserve(scan.normalFinite.size());
+    reader.mesh.texcoords.reserve(scan.texcoordFinite.size());
+    reader.mesh.faces.reserve(scan.faceLines.size());
+    reader.mesh.corners.reserve(scan.cornerCount);
     tinyobj::callback_t callbacks;
     callbacks.vertex_cb = &Reader::vertex;
     callbacks.normal_cb = &Reader::normal;
     callbacks.texcoord_cb = &Reader::texcoord;
     callbacks.index_cb = &Reader::face;
     callbacks.usemtl_cb = &Reader::material;
-    std::istringstream stream(scan.text);
+    TextBuffer buffer(scan.text);
+    std::istream stream(&buffer);
     std::string warnings, errors;
     bool ok = tinyobj::LoadObjWithCallback(stream, callbacks, &reader, nullptr, &warnings, &errors);
 
