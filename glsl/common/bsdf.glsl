@@ -254,7 +254,10 @@ bool dielectricSample(MaterialData m, vec3 wo, vec3 u, float eta, out BsdfSample
 #endif
 #define HAS_TYPE(t) ((MATERIAL_TYPES & (1 << t)) != 0)
 
+// wo below the shading frame's horizon (a view direction under an interpolated normal) has f = 0 and
+// no samples: the models' formulas assume wo.z > 0 and would give negative or NaN values there.
 vec3 bsdfEval(MaterialData m, vec3 wo, vec3 wi, float eta) {
+    if (!(wo.z > 0.0)) return vec3(0.0);
 #if HAS_TYPE(MATERIAL_CONDUCTOR)
     if (m.type == MATERIAL_CONDUCTOR) return conductorEval(m, wo, wi);
 #endif
@@ -268,6 +271,7 @@ vec3 bsdfEval(MaterialData m, vec3 wo, vec3 wi, float eta) {
 }
 
 float bsdfPdf(MaterialData m, vec3 wo, vec3 wi, float eta) {
+    if (!(wo.z > 0.0)) return 0.0;
 #if HAS_TYPE(MATERIAL_CONDUCTOR)
     if (m.type == MATERIAL_CONDUCTOR) return conductorPdf(m, wo, wi);
 #endif
@@ -281,6 +285,8 @@ float bsdfPdf(MaterialData m, vec3 wo, vec3 wi, float eta) {
 }
 
 bool bsdfSample(MaterialData m, vec3 wo, vec3 u, float eta, out BsdfSample s) {
+    s = BsdfSample(vec3(0.0, 0.0, 1.0), vec3(0.0), 0.0, false);
+    if (!(wo.z > 0.0)) return false;
 #if HAS_TYPE(MATERIAL_CONDUCTOR)
     if (m.type == MATERIAL_CONDUCTOR) return conductorSample(m, wo, u, s);
 #endif

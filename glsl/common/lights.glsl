@@ -9,6 +9,9 @@ struct LightSample {
     float dist;     // INF for the environment
     vec3 radiance;  // Le arriving along -dir (0 when the back of the emitter faces the point)
     float pdf;      // solid-angle density of choosing dir
+    vec3 point;     // on an emitter: the point sampled, its emitting side's unit normal and its offset
+    vec3 normal;
+    float offset;
 };
 
 // The share of light samples that go to the environment: half when there are also emitters.
@@ -108,11 +111,16 @@ int pickLight(float u) {
     return lo;
 }
 
+// The area density of sampleLight's emitter points on triangle tri: its pmf (the probability that
+// pickLight returns it: the packer stores the cdf on a 2^-24 grid, the resolution of rand(), and the pmf
+// as the exact difference of two entries, gpu/pack.cpp) over its area. Every estimator that needs the
+// density of an emitter point reads it from here, so sampling and MIS weights agree to the last bit.
+float emitterAreaPdf(TriangleData tri) { return tri.lightPmf / (0.5 * length(cross(tri.e1, tri.e2))); }
+
 LightSample sampleLight(vec3 from) {
-    LightSample ls = LightSample(vec3(0.0, 0.0, 1.0), 0.0, vec3(0.0), 0.0);
-    float u = rand();
+    LightSample ls = LightSample(vec3(0.0, 0.0, 1.0), 0.0, vec3(0.0), 0.0, vec3(0.0), vec3(0.0), 0.0);
     float pEnvironment = environmentSelection();
-    if (u < pEnvironment) {
+    if (rand() < pEnvironment) {
         ls.dir = sampleEnvironmentDirection();
         ls.dist = INF;
         ls.radiance = environmentRadiance(ls.dir);
@@ -120,25 +128,34 @@ LightSample sampleLight(vec3 from) {
         return ls;
     }
     if (uLightCount == 0) return ls;
-    vec4 light = lightTexel(pickLight((u - pEnvironment) / (1.0 - pEnvironment)));
-    TriangleData tri = fetchTriangle(int(light.x));
+    // A number of its own for the pick: a remapped share of the first would leave the 2^-24 grid the
+    // cdf lies on, and the pick probabilities would no longer be the stored pmfs exactly.
+    TriangleData tri = fetchTriangle(int(lightTexel(pickLight(rand())).x));
     vec2 b = sampleTriangle(rand2());
-    vec3 toLight = tri.v0 + b.x * tri.e1 + b.y * tri.e2 - from;
+    ls.point = tri.v0 + b.x * tri.e1 + b.y * tri.e2;
+    ls.normal = normalize(cross(tri.e1, tri.e2));
+    ls.offset = surfaceOffset(tri);
+    vec3 toLight = ls.point - from;
     float dist2 = dot(toLight, toLight);
     ls.dist = sqrt(dist2);
     ls.dir = toLight / ls.dist;
-    float cosLight = -dot(normalize(cross(tri.e1, tri.e2)), ls.dir);
+    float cosLight = -dot(ls.normal, ls.dir);
     if (cosLight <= 0.0 || dist2 == 0.0) return ls;  // one-sided emitter seen from behind
     ls.radiance = materialEmission(tri.material);
-    ls.pdf = (1.0 - pEnvironment) * light.z / light.w * dist2 / cosLight;
+    ls.pdf = (1.0 - pEnvironment) * emitterAreaPdf(tri) * dist2 / cosLight;
     return ls;
+}
+
+// Whether nothing blocks the light sample ls from surface point s: offset at both ends for an emitter
+// point (ray_offset.glsl), from s to infinity for the environment.
+bool lightVisible(Surface s, LightSample ls) {
+    if (ls.dist == INF) return !occluded(spawnRay(s, ls.dir), INF);
+    return !segmentOccluded(s.position, s.geometricNormal, s.offset, ls.point, ls.normal, ls.offset);
 }
 
 // Solid-angle density with which sampleLight would have chosen the emitter point a ray hit at hit.t.
 float lightPdf(Ray ray, Hit hit) {
     TriangleData tri = fetchTriangle(hit.triangle);
-    vec3 n = cross(tri.e1, tri.e2);
-    float area = 0.5 * length(n);
-    float cosLight = abs(dot(n, ray.dir)) / (2.0 * area);
-    return (1.0 - environmentSelection()) * tri.lightPmf / area * hit.t * hit.t / cosLight;
+    float cosLight = abs(dot(normalize(cross(tri.e1, tri.e2)), ray.dir));
+    return (1.0 - environmentSelection()) * emitterAreaPdf(tri) * hit.t * hit.t / cosLight;
 }

@@ -1,8 +1,9 @@
 // What an integrator needs to know about the point a ray hit.
-uniform float uRayOffset;  // self-intersection offset along the normal, scaled to the scene's size
+#include "common/ray_offset.glsl"
 
 struct Surface {
     vec3 position;
+    float offset;          // how far rays leaving it start off the surface (ray_offset.glsl)
     vec3 geometricNormal;  // unit, on the side the ray came from
     vec3 shadingNormal;    // unit, interpolated from the vertices, on the same side
     vec3 tangent, bitangent;  // with shadingNormal, the local shading frame of bsdf.glsl
@@ -18,7 +19,9 @@ Surface surfaceAt(Ray ray, Hit hit) {
     ++gSurfacesShaded;
     TriangleData tri = fetchTriangle(hit.triangle);
     Surface s;
-    s.position = ray.origin + hit.t * ray.dir;
+    // From the barycentrics, not ray.origin + t dir, whose error grows with the ray's length and origin.
+    s.position = tri.v0 + hit.uv.x * tri.e1 + hit.uv.y * tri.e2;
+    s.offset = surfaceOffset(tri);
     vec3 n = normalize(cross(tri.e1, tri.e2));
     s.frontFace = dot(n, ray.dir) < 0.0;
     s.geometricNormal = s.frontFace ? n : -n;
@@ -63,10 +66,7 @@ vec3 emittedRadiance(Surface s) { return s.frontFace ? s.material.emission : vec
 bool sameSide(Surface s, vec3 local, vec3 world) { return (local.z > 0.0) == (dot(world, s.geometricNormal) > 0.0); }
 
 // A ray leaving the surface, nudged off it to the side it leaves on.
-Ray spawnRay(Surface s, vec3 dir) {
-    float side = dot(dir, s.geometricNormal) >= 0.0 ? 1.0 : -1.0;
-    return Ray(s.position + side * uRayOffset * s.geometricNormal, dir);
-}
+Ray spawnRay(Surface s, vec3 dir) { return Ray(offsetToward(s.position, s.geometricNormal, s.offset, dir), dir); }
 
 // Russian roulette (as in pbrt-v4 PathIntegrator::Li): after a few bounces, stop a path with probability
 // 1 - max(beta) and reweight the survivors, which keeps the estimate unbiased.

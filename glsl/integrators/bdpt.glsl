@@ -53,12 +53,11 @@
 // triangle): the unweighted contribution beta_z f(z -> y) Le(y -> z) |cos(theta_y)| / (r^2 p_A(y)).
 vec3 connectToLight(int t) {
     PathVertex c = gCamera[t - 1];
-    vec4 light = lightTexel(pickLight(rand()));
-    TriangleData tri = fetchTriangle(int(light.x));
+    TriangleData tri = fetchTriangle(int(lightTexel(pickLight(rand())).x));
     vec2 b = sampleTriangle(rand2());
     vec3 normal = normalize(cross(tri.e1, tri.e2));
     PathVertex y = PathVertex(tri.v0 + b.x * tri.e1 + b.y * tri.e2, normal, normal, normal, vec3(0.0),
-                              tri.material, 1.0, light.z / light.w, 0.0, false, false);
+                              tri.material, 1.0, emitterAreaPdf(tri), 0.0, false, false, surfaceOffset(tri));
     vec3 d = y.p - c.p;
     float dist2 = dot(d, d);
     if (dist2 == 0.0) return vec3(0.0);
@@ -109,7 +108,7 @@ vec3 radiance(Ray ray) {
     gSpectralWeight = vec3(1.0);
     int lightVertices = traceLightSubpathFor(gRngPixel, gRngSample, maxDepth);
 
-    storeCameraVertex(0, PathVertex(ray.origin, ray.dir, ray.dir, ray.dir, vec3(1.0), 0, 1.0, 1.0, 0.0, false, false));
+    storeCameraVertex(0, PathVertex(ray.origin, ray.dir, ray.dir, ray.dir, vec3(1.0), 0, 1.0, 1.0, 0.0, false, false, 0.0));
     vec3 L = vec3(0.0), beta = vec3(1.0);
     float pdfDir = 1.0;  // solid-angle density of the direction that led here (the camera's is not needed)
     bool dispersive = false;
@@ -124,7 +123,7 @@ vec3 radiance(Ray ray) {
         Surface s = surfaceAt(ray, hit);
         dispersive = meetDispersion(s) || dispersive;
         PathVertex z = PathVertex(s.position, s.geometricNormal, s.shadingNormal, -ray.dir, beta, s.materialIndex,
-                                  s.eta, 1.0, 0.0, false, dispersive);
+                                  s.eta, 1.0, 0.0, false, dispersive, s.offset);
         // z_1's density is the camera's (its direction spread over the film), for strategy t = 1.
         z.pdfFwd = toArea(t >= 3 ? pdfDir : cameraDirectionPdf(ray.dir), gCamera[t - 2].p, z);
         storeCameraVertex(t - 1, z);
@@ -133,10 +132,9 @@ vec3 radiance(Ray ray) {
         // s = 0: the camera subpath hit an emitter.
         vec3 Le = emittedRadiance(s);
         if (Le != vec3(0.0)) {
-            TriangleData tri = fetchTriangle(hit.triangle);
-            float area = 0.5 * length(cross(tri.e1, tri.e2));
             float zRevPrev = t >= 3 ? toArea(dot(s.geometricNormal, z.wo) / PI, z.p, gCamera[t - 2]) : 0.0;
-            L += beta * Le * misWeight(0, t, tri.lightPmf / area, zRevPrev, 0.0, 0.0, 0.0) * spectralFactor(dispersive);
+            float emitterPdf = emitterAreaPdf(fetchTriangle(hit.triangle));
+            L += beta * Le * misWeight(0, t, emitterPdf, zRevPrev, 0.0, 0.0, 0.0) * spectralFactor(dispersive);
         }
         if (depth >= maxDepth) break;
 

@@ -24,6 +24,7 @@ struct PathVertex {
     float pdfRev;   // area density of this vertex when sampled from the other direction
     bool delta;     // the direction sampled here came from a delta lobe (camera vertices; see gLightDelta)
     bool dispersive;  // the subpath met a dispersive glass at or before this vertex
+    float offset;     // how far rays leaving it start off its surface (ray_offset.glsl); 0 for the eye
 };
 
 PathVertex gCamera[BDPT_CAMERA_VERTICES];   // z0 (the eye) .. z_{D+1}
@@ -122,15 +123,7 @@ float toArea(float pdfSolidAngle, vec3 from, PathVertex to) {
 }
 
 // Visibility V(a <-> b) of the two vertices, each end nudged off its surface toward the other.
-bool unoccluded(PathVertex a, PathVertex b) {
-    vec3 d = b.p - a.p;
-    vec3 from = a.p + (dot(d, a.ng) >= 0.0 ? 1.0 : -1.0) * uRayOffset * a.ng;
-    vec3 to = b.p + (dot(d, b.ng) <= 0.0 ? 1.0 : -1.0) * uRayOffset * b.ng;
-    vec3 e = to - from;
-    float len = length(e);
-    if (len == 0.0) return false;
-    return !occluded(Ray(from, e / len), len * (1.0 - 1e-4));
-}
+bool unoccluded(PathVertex a, PathVertex b) { return !segmentOccluded(a.p, a.ng, a.offset, b.p, b.ng, b.offset); }
 
 // The power-heuristic weight (beta = 2) of strategy (s, t) for the path it sampled: w_s =
 // p_s^2 / sum_i p_i^2 = 1 / sum_i (p_i / p_s)^2 over the strategies i in use (Veach 1997, section 10.2),
@@ -187,14 +180,13 @@ int traceLightSubpath(int maxDepth) {
     int n = min(BDPT_MAX_LIGHT_VERTICES, maxDepth + 1);
     for (int i = 0; i < BDPT_MAX_LIGHT_VERTICES; ++i) gLightDelta[i] = false;
     if (n == 0 || uLightCount == 0) return 0;
-    vec4 light = lightTexel(pickLight(rand()));
-    TriangleData tri = fetchTriangle(int(light.x));
+    TriangleData tri = fetchTriangle(int(lightTexel(pickLight(rand())).x));
     vec2 b = sampleTriangle(rand2());
     vec3 normal = normalize(cross(tri.e1, tri.e2));
-    float pdfPosition = light.z / light.w;  // pmf / area
+    float pdfPosition = emitterAreaPdf(tri);
     vec3 Le = materialEmission(tri.material);
     PathVertex y0 = PathVertex(tri.v0 + b.x * tri.e1 + b.y * tri.e2, normal, normal, normal, Le / pdfPosition,
-                               tri.material, 1.0, pdfPosition, 0.0, false, false);
+                               tri.material, 1.0, pdfPosition, 0.0, false, false, surfaceOffset(tri));
     storeLightVertex(0, y0);
     if (n == 1) return 1;
 
@@ -203,7 +195,7 @@ int traceLightSubpath(int maxDepth) {
     float pdfDir = dot(normal, dir) / PI;
     if (pdfDir <= 0.0) return 1;
     vec3 beta = Le * PI / pdfPosition;
-    Ray ray = Ray(y0.p + uRayOffset * normal, dir);
+    Ray ray = Ray(offsetToward(y0.p, normal, y0.offset, dir), dir);
     bool dispersive = false;
     int count = 1;
     while (count < n) {
@@ -212,7 +204,7 @@ int traceLightSubpath(int maxDepth) {
         Surface s = surfaceAt(ray, hit);
         dispersive = meetDispersion(s) || dispersive;
         PathVertex y = PathVertex(s.position, s.geometricNormal, s.shadingNormal, -ray.dir, beta,
-                                  s.materialIndex, s.eta, 0.0, 0.0, false, dispersive);
+                                  s.materialIndex, s.eta, 0.0, 0.0, false, dispersive, s.offset);
         y.pdfFwd = toArea(pdfDir, gLight[count - 1].p, y);
         storeLightVertex(count, y);
         keepDiffuse(false, count, s);
@@ -249,9 +241,9 @@ int traceLightSubpath(int maxDepth) {
 // trace the same subpath and partial renders of disjoint sample ranges use disjoint light subpaths. The
 // caller's stream continues where it was.
 int traceLightSubpathFor(uvec2 pixel, uint sampleIndex, int maxDepth) {
-    uint callerState = rngState;
+    uvec4 callerKey = rngKey;
     rngInitSecondStream(uSeed, pixel, sampleIndex);
     int n = traceLightSubpath(maxDepth);
-    rngState = callerState;
+    rngKey = callerKey;
     return n;
 }

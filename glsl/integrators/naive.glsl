@@ -15,6 +15,8 @@ vec3 radiance(Ray ray) {
         applyDispersion(s, beta);
         L += beta * emittedRadiance(s);
         if (depth == uMaxDepth) break;
+        // The view direction below the shading normal: f = 0, as in the other integrators.
+        if (dot(-ray.dir, s.shadingNormal) <= 0.0) break;
         vec3 dir;
         if (s.material.type == MATERIAL_DIFFUSE) {
             dir = sampleUniformHemisphere(s.shadingNormal, rand2());

@@ -21,12 +21,13 @@ vec3 radiance(Ray ray) {
         if (depth == uMaxDepth) break;
 
         vec3 wo = toLocal(s, -ray.dir);
+        if (wo.z <= 0.0) break;  // the view direction is below the shading normal: f = 0 (as in bdpt)
         if (!isDeltaOnly(s.material)) {
             LightSample ls = sampleLight(s.position);
             vec3 wi = toLocal(s, ls.dir);
             if (ls.pdf > 0.0 && sameSide(s, wi, ls.dir)) {
                 vec3 f = bsdfEval(s.material, wo, wi, s.eta);
-                if (f != vec3(0.0) && !occluded(spawnRay(s, ls.dir), ls.dist * (1.0 - 1e-4)))
+                if (f != vec3(0.0) && lightVisible(s, ls))
                     L += beta * f * ls.radiance * powerHeuristic(ls.pdf, bsdfPdf(s.material, wo, wi, s.eta)) / ls.pdf;
             }
         }

@@ -53,7 +53,7 @@ vec3 lightToCamera(int s, out vec2 pixel) {
     float yRevLast = toArea(cameraDirectionPdf(-d), uCameraEye, y);
     float w = misWeight(s, 1, 0.0, 0.0, yRevLast, yRevPrev, s == 1 ? y.pdfFwd : 0.0);
     PathVertex eye = PathVertex(uCameraEye, uCameraForward, uCameraForward, uCameraForward, vec3(1.0), 0, 1.0,
-                                1.0, 0.0, false, false);
+                                1.0, 0.0, false, false, 0.0);
     if (!unoccluded(y, eye)) return vec3(0.0);
     float cosCamera = dot(-d, uCameraForward);
     return y.beta * f * (cameraImportance(-d) * cosCamera / dist2) * w * spectralFactor(y.dispersive);

@@ -1,6 +1,7 @@
 #include "gpu/pack.h"
 
 #include <algorithm>
+#include <cmath>
 #include <string>
 
 #include "bvh/wide_bvh.h"
@@ -52,6 +53,34 @@ void packTextures(const Scene& scene, const Bvh& bvh, PackedScene* out) {
 
 }  // namespace
 
+std::vector<float> lightPmfs(const std::vector<double>& power, double totalPower) {
+    // The shader picks the first emitter whose cdf exceeds u = k / 2^24 (rand() in glsl/common/rng.glsl),
+    // so emitter i is picked with probability (cdf_i - cdf_{i-1}) exactly when every cdf entry lies on
+    // that grid. The cdf is summed in double, rounded to the grid, and each pmf is the difference of two
+    // rounded entries: the number the pdf uses is then the probability of the pick, for any count of
+    // emitters (a running float sum drifts from the stored pmfs by far more than a small emitter's
+    // share once there are ~1e5 of them). An emitter whose share rounds to 0 is never picked and has
+    // density 0, which BSDF sampling then covers in full (its MIS weight is 1): still unbiased.
+    constexpr double kGrid = 16777216.0;  // 2^24
+    std::vector<float> pmf(power.size(), 0.0f);
+    if (!(totalPower > 0.0)) return pmf;
+    double running = 0.0, previous = 0.0;
+    for (size_t i = 0; i < power.size(); ++i) {
+        if (power[i] <= 0.0) continue;
+        running += power[i];
+        double cdf = std::min(1.0, std::round(running / totalPower * kGrid) / kGrid);
+        pmf[i] = float(cdf - previous);
+        previous = cdf;
+    }
+    // The last emitter closes the cdf at 1, so a uniform number in [0, 1) always finds one.
+    for (size_t i = power.size(); i-- > 0;)
+        if (power[i] > 0.0) {
+            pmf[i] = float(1.0 - (previous - double(pmf[i])));
+            break;
+        }
+    return pmf;
+}
+
 PackedScene packScene(const Scene& scene, const Bvh& bvh) {
     PackedScene out;
     const size_t n = bvh.primIndex.size();
@@ -65,31 +94,31 @@ PackedScene packScene(const Scene& scene, const Bvh& bvh) {
     out.triangleCount = uint32_t(n);
 
     // Emitters and their selection probabilities, proportional to emitted power (luminance * area).
-    std::vector<float> power(n, 0.0f);
+    std::vector<double> power(n, 0.0);
+    double totalPower = 0.0;
     for (size_t i = 0; i < n; ++i) {
         const Triangle& t = scene.triangles[bvh.primIndex[i]];
         const Material& m = scene.materials[t.material];
-        if (m.isEmissive()) power[i] = luminance(m.emission) * t.area();
-        out.totalLightPower += power[i];
+        if (m.isEmissive()) power[i] = double(luminance(m.emission)) * double(t.area());
+        totalPower += power[i];
     }
+    out.totalLightPower = float(totalPower);
+    std::vector<float> pmf = lightPmfs(power, totalPower);
 
     out.triangles.reserve(n * layout::kTriangleTexels);
     out.normals.reserve(n * layout::kNormalTexels);
     float cdf = 0.0f;
     for (size_t i = 0; i < n; ++i) {
         const Triangle& t = scene.triangles[bvh.primIndex[i]];
-        float pmf = out.totalLightPower > 0.0f ? power[i] / out.totalLightPower : 0.0f;
         out.triangles.emplace_back(t.p[0], float(t.material));
-        out.triangles.emplace_back(t.p[1] - t.p[0], pmf);
+        out.triangles.emplace_back(t.p[1] - t.p[0], pmf[i]);
         out.triangles.emplace_back(t.p[2] - t.p[0], 0.0f);
         for (const glm::vec3& normal : t.n) out.normals.emplace_back(normal, 0.0f);
-        if (pmf > 0.0f) {
-            cdf += pmf;
-            out.lights.emplace_back(float(i), cdf, pmf, t.area());
+        if (pmf[i] > 0.0f) {
+            cdf += pmf[i];  // exact: every pmf and partial sum is a multiple of 2^-24 in [0, 1]
+            out.lights.emplace_back(float(i), cdf, pmf[i], t.area());
         }
     }
-    // The last cdf entry is 1 exactly, so a uniform number in [0, 1) always finds an emitter.
-    if (!out.lights.empty()) out.lights.back().y = 1.0f;
     out.lightCount = uint32_t(out.lights.size());
 
     bool textured = false;

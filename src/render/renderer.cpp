@@ -56,11 +56,6 @@ Renderer::Renderer(const Scene& scene, ShaderLibrary shaders, const BvhBuildOpti
     stats_.uploadSeconds = secondsSince(start);
     stats_.gpuPinnedBytes = textures_->pinnedBytes();
 
-    // A self-intersection offset relative to the scene's size and distance from the origin, where
-    // float spacing grows.
-    Aabb box = scene.bounds();
-    float reach = std::max({glm::length(box.extent()), glm::length(box.lo), glm::length(box.hi)});
-    rayOffset_ = 1e-5f * reach;
     environmentColor_ = scene.environment.hasMap() ? glm::vec3(0.0f) : scene.environment.color;
     environmentRotation_ = glm::radians(scene.environment.rotationDegrees);
     if (scene.environment.hasMap()) {
@@ -225,7 +220,6 @@ void Renderer::setTraceUniforms(Program& p, int maxDepth) {
         p.set("uEnvironmentRotation", environmentRotation_);
         environmentTextures_->bind(stats_.sceneReads);
     }
-    p.set("uRayOffset", rayOffset_);
     p.set("uMaxDepth", maxDepth);
     p.set("uSeed", settings_.seed);
 

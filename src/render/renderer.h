@@ -87,7 +87,6 @@ class Renderer {
 
     ShaderLibrary shaders_;
     SceneStats stats_;
-    float rayOffset_ = 0.0f;
     glm::vec3 environmentColor_{0.0f};
     float environmentRotation_ = 0.0f;
     uint32_t materialTypes_ = 0;  // bit mask of the MaterialTypes in the scene
