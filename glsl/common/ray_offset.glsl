@@ -23,14 +23,20 @@ vec3 offsetToward(vec3 p, vec3 n, float offset, vec3 toward) {
     return p + (dot(toward, n) >= 0.0 ? offset : -offset) * n;
 }
 
-// Whether anything lies between surface points a and b (normals na, nb; offsets as surfaceOffset gives;
-// an offset of 0 for a point on no surface, like a pinhole).
-bool segmentOccluded(vec3 a, vec3 na, float offsetA, vec3 b, vec3 nb, float offsetB) {
+// The shadow ray between surface points a and b (normals na, nb; offsets as surfaceOffset gives; an
+// offset of 0 for a point on no surface, like a pinhole): from a's offset point, reaching b's at tMax.
+// False when the points are closer than their offsets (touching surfaces): nothing lies between them.
+bool shadowRayBetween(vec3 a, vec3 na, float offsetA, vec3 b, vec3 nb, float offsetB, out Ray ray, out float tMax) {
     vec3 d = b - a;
     vec3 from = offsetToward(a, na, offsetA, d), to = offsetToward(b, nb, offsetB, -d);
     vec3 e = to - from;
-    // Points closer than their offsets (touching surfaces) have nothing between them.
-    if (!(dot(e, d) > 0.0)) return false;
-    float len = length(e);
-    return occluded(Ray(from, e / len), len);
+    tMax = length(e);
+    ray = Ray(from, e / tMax);
+    return dot(e, d) > 0.0;
+}
+
+bool segmentOccluded(vec3 a, vec3 na, float offsetA, vec3 b, vec3 nb, float offsetB) {
+    Ray ray;
+    float tMax;
+    return shadowRayBetween(a, na, offsetA, b, nb, offsetB, ray, tMax) && occluded(ray, tMax);
 }
