@@ -8,22 +8,13 @@
 #include "core/error.h"
 #include "gpu/layout.h"
 #include "native/native_path.h"
+#include "native/native_test_util.h"
 #include "render/render_test_util.h"
 
 namespace fp::test {
 namespace {
 
 constexpr int kSize = 32, kSpp = 64, kDepth = 5;
-
-Accumulation asAccumulation(const native::Result& r) {
-    Accumulation a;
-    a.width = r.width;
-    a.height = r.height;
-    a.sum = r.sum;
-    a.squares = r.squares;
-    a.counters.assign(r.sum.size(), glm::vec4(0.0f));
-    return a;
-}
 
 native::Result renderNative(const Scene& scene, uint32_t seed) {
     native::Settings s;
