@@ -69,8 +69,16 @@ TEST_F(NativeReference, FollowsTheShadersRandomStream) {
 
 TEST(NativeReferenceScene, RejectsWhatItDoesNotImplement) {
     Scene scene = builtinCornellBox();
-    scene.materials[0].type = MaterialType::Conductor;
-    EXPECT_THROW(native::buildScene(scene, layout::bvhOptions()), Error);
+    ASSERT_FALSE(native::unsupportedFeature(scene));
+    Scene metal = scene;
+    metal.materials[0].type = MaterialType::Conductor;
+    EXPECT_THROW(native::buildScene(metal, layout::bvhOptions()), Error);
+    // A textured Lambertian material: the reference would render it untextured.
+    Scene textured = scene;
+    textured.textures.push_back({"grey.png", Rgba8Image{}});
+    textured.materials[0].diffuseTexture = 0;
+    EXPECT_THROW(native::buildScene(textured, layout::bvhOptions()), Error);
+    EXPECT_TRUE(native::unsupportedFeature(textured));
 }
 
 }  // namespace
