@@ -61,9 +61,10 @@ const char* kBenchUsage =
     "                        soup-100k, sphere-1m), in the suite's order\n"
     "  --with-bunny          with --suite: add the Stanford bunny (needs npm and the network)\n"
     "  --native              also measure the native reference (fragpath_native: one thread of scalar C++,\n"
-    "                        the same algorithm on the same BVH; Lambertian scenes only) on each scene, 1 "
-    "spp\n"
-    "                        per run, and print GPU paths per CPU-second over the native's\n"
+    "                        the same algorithm on the same BVH) on each scene, 1 spp per run, and print\n"
+    "                        GPU paths per CPU-second over the native's. Only with --integrator nee, and\n"
+    "                        only on scenes of Lambertian materials without textures or an environment\n"
+    "                        map: anything else is an error, not a comparison of two algorithms\n"
     "  -h, --help            this text\n"
     "\n"
     "--study caustic compares bdpt with nee at equal process CPU time (--budget, default 40 s each) on a\n"
@@ -97,12 +98,17 @@ int benchOneScene(const Args& args, const bench::BenchSettings& settings, std::o
     std::unique_ptr<GlContext> context = createOsMesaContext();
     double contextSeconds = secondsSince(stage);
     environment.renderer = context->description();
+    bool withNative = args.has("--native");
     auto load = [&] {
-        return args.positional().empty() ? builtinCornellBox() : loadScene(args.positional()[0]);
+        Scene scene = args.positional().empty() ? builtinCornellBox() : loadScene(args.positional()[0]);
+        // Checked as soon as the scene is read (a loop over its materials, nothing timed notices), so
+        // that a scene the reference cannot render stops the command before any measuring.
+        if (withNative) refuseWhatNativeLacks(scene);
+        return scene;
     };
     SceneMeasurement m = measureScene(load, settings);
     std::optional<NativeMeasurement> native;
-    if (args.has("--native")) native = measureNative(load, settings);
+    if (withNative) native = measureNative(load, settings);
     // Here the first frame counts from the start of the command, so it includes the context.
     double firstFrameSeconds = std::chrono::duration<double>(m.firstPassEnd - start).count();
 
@@ -169,6 +175,9 @@ int benchCommand(const std::vector<std::string>& argv) {
     settings.runs = args.integer("--runs", 1, 1000).value_or(suite ? 3 : 5);
     settings.render.maxDepth = args.integer("--max-depth", 0, 1000).value_or(5);
     settings.render.integrator = parseIntegrator(args.text("--integrator").value_or("nee"));
+    if (args.has("--native") && settings.render.integrator != Integrator::Nee)
+        throw Error(std::string("--native: the native reference implements only the nee integrator, not ") +
+                    integratorName(settings.render.integrator) + "; a ratio would compare two algorithms");
     settings.bvh.threadCount = args.integer("--bvh-threads", 1, 1024).value_or(0);
     settings.shaderDir = args.text("--shader-dir").value_or("");
     settings.render.samplesPerPass =

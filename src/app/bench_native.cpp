@@ -14,6 +14,11 @@ Spread NativeMeasurement::pathsPerCpuSecond() const {
     return values.empty() ? Spread{} : spread(values);
 }
 
+void refuseWhatNativeLacks(const Scene& scene) {
+    if (auto why = native::unsupportedFeature(scene))
+        throw Error("--native: " + scene.source + ": " + *why + "; nothing to compare with");
+}
+
 NativeMeasurement measureNative(const std::function<Scene()>& load, const BenchSettings& settings, int spp) {
     NativeMeasurement m;
     m.spp = spp;
@@ -47,7 +52,7 @@ NativeMeasurement measureNative(const std::function<Scene()>& load, const BenchS
 
 void printNative(const NativeMeasurement& native, const SceneMeasurement& gpu) {
     if (native.skipped) {
-        std::printf("native reference skipped: %s\n", native.skipped->c_str());
+        std::printf("native reference skipped, no comparison: %s\n", native.skipped->c_str());
         return;
     }
     Spread n = native.pathsPerCpuSecond();

@@ -14,11 +14,17 @@
 namespace fp::bench {
 
 struct NativeMeasurement {
-    int spp = 1;                         // samples per pixel in each run
-    std::vector<Run> timed;              // cpuSeconds is the tracing thread's CPU time; wallSeconds equals it
-    std::optional<std::string> skipped;  // why there are no runs (a scene the reference cannot render)
+    int spp = 1;             // samples per pixel in each run
+    std::vector<Run> timed;  // cpuSeconds is the tracing thread's CPU time; wallSeconds equals it
+    // Why there are no runs: a suite scene the reference cannot render (one scene asked for by name is
+    // refused instead: refuseWhatNativeLacks).
+    std::optional<std::string> skipped;
     Spread pathsPerCpuSecond() const;
 };
+
+// Throws fp::Error when the native reference cannot render `scene` as the renderer does (native::
+// unsupportedFeature): asked for one scene, --native refuses rather than compare two algorithms.
+void refuseWhatNativeLacks(const Scene& scene);
 
 // One untimed warm-up run, then settings.runs timed runs (run i with seed i) of `spp` samples per pixel
 // at the settings' size and depth, on the scene `load` gives.

@@ -14,21 +14,29 @@ namespace {
 
 constexpr float kPi = 3.14159265358979324f;
 
-// glsl/common/rng.glsl: the PCG hash (Jarzynski & Olano 2020) seeds, PCG-RXS-M-XS steps.
-uint32_t pcgHash(uint32_t v) {
-    uint32_t state = v * 747796405u + 2891336453u;
-    uint32_t word = ((state >> ((state >> 28u) + 4u)) ^ state) * 277803737u;
-    return (word >> 22u) ^ word;
-}
-
+// glsl/common/rng.glsl: counter-based. Number i of sample k at pixel p hashes the key
+// (p.x | p.y << 16, k, seed, i) with pcg4d, a bijection of four 32-bit words (Jarzynski & Olano 2020,
+// "Hash Functions for GPU Rendering", JCGT 9(3)), so distinct keys never share a number.
 struct Rng {
-    uint32_t state;
-    Rng(uint32_t seed, uint32_t x, uint32_t y, uint32_t sample)
-        : state(pcgHash(seed ^ pcgHash(x ^ pcgHash(y ^ pcgHash(sample))))) {}
+    // pcg4d's first step, v * 1664525 + 1013904223, done once for the three words that stay fixed.
+    uint32_t x, y, z, counter = 0;
+    Rng(uint32_t seed, uint32_t px, uint32_t py, uint32_t sample)
+        : x((px | (py << 16u)) * 1664525u + 1013904223u),
+          y(sample * 1664525u + 1013904223u),
+          z(seed * 1664525u + 1013904223u) {}
     float next() {
-        state = state * 747796405u + 2891336453u;
-        uint32_t word = ((state >> ((state >> 28u) + 4u)) ^ state) * 277803737u;
-        return float(((word >> 22u) ^ word) >> 8u) * (1.0f / 16777216.0f);
+        // Scalar, of only what the returned word needs (z's shift and the second round's y, z and w
+        // feed nothing that is kept): vectorised, the hash spilled to the stack and cost a third of
+        // the reference's speed on the Cornell box.
+        uint32_t a = x, b = y, c = z, w = counter++ * 1664525u + 1013904223u;
+        a += b * w;
+        b += c * a;
+        c += a * b;
+        w += b * c;
+        a ^= a >> 16u;
+        b ^= b >> 16u;
+        w ^= w >> 16u;
+        return float((a + b * w) >> 8u) * (1.0f / 16777216.0f);
     }
 };
 
@@ -48,6 +56,7 @@ float powerHeuristic(float pdfA, float pdfB) {
 
 struct Surface {
     glm::vec3 position, geometricNormal, shadingNormal, tangent, bitangent;
+    float offset;  // how far rays leaving it start off the surface (surfaceOffset)
     uint32_t material;
     bool frontFace;
     glm::vec3 toLocal(const glm::vec3& v) const {
@@ -66,7 +75,29 @@ struct LightSample {
     float dist = 0.0f;
     glm::vec3 radiance{0.0f};
     float pdf = 0.0f;
+    glm::vec3 point{0.0f}, normal{0.0f};  // on an emitter: the point, its emitting side's unit normal
+    float offset = 0.0f;                  // and its offset
 };
+
+// glsl/common/ray_offset.glsl surfaceOffset(): a hit point computed from its barycentrics errs by a
+// few ulps of the triangle's largest vertex coordinate, so rays leave 2^-18 of it (about 30 ulps) off
+// the surface (Wachter & Binder 2019, "A Fast and Robust Method for Avoiding Self-Intersection", Ray
+// Tracing Gems ch. 6; pbrt-v4 sec. 6.8.6). Independent of the scene's size and of the ray's length.
+float surfaceOffset(const Tri& tri) {
+    glm::vec3 m = glm::abs(tri.v0) + glm::max(glm::abs(tri.e1), glm::abs(tri.e2));
+    return (1.0f / 262144.0f) * std::max(m.x, std::max(m.y, m.z));
+}
+
+// ray_offset.glsl offsetToward(): p moved `offset` along unit n, to the side `toward` points to.
+glm::vec3 offsetToward(const glm::vec3& p, const glm::vec3& n, float offset, const glm::vec3& toward) {
+    return p + (glm::dot(toward, n) >= 0.0f ? offset : -offset) * n;
+}
+
+// lights.glsl emitterAreaPdf(): the pick probability over the area from the stored edges, the one
+// number both sampleLight and lightPdf use.
+float emitterAreaPdf(const Tri& tri) {
+    return tri.lightPmf / (0.5f * glm::length(glm::cross(tri.e1, tri.e2)));
+}
 
 class PathTracer {
   public:
@@ -97,18 +128,16 @@ class PathTracer {
                 L += beta * Le * (fullWeight ? 1.0f : powerHeuristic(lastPdf, lightPdf(ray, hit)));
             if (depth == maxDepth_) break;
 
+            // The view direction below the shading normal: f = 0 (nee.glsl, as bdpt.glsl).
+            if (s.toLocal(-ray.dir).z <= 0.0f) break;
             const glm::vec3& kd = scene_.diffuse[s.material];
             LightSample ls = sampleLight(s.position, rng);
             glm::vec3 wi = s.toLocal(ls.dir);
             if (ls.pdf > 0.0f && s.sameSide(wi, ls.dir)) {
                 glm::vec3 f = wi.z > 0.0f ? kd / kPi * wi.z : glm::vec3(0.0f);
-                if (f != glm::vec3(0.0f)) {
-                    Hit shadow;
-                    rays += 1;
-                    if (!traverse(scene_, spawnRay(s, ls.dir), ls.dist * (1.0f - 1e-4f), true, shadow))
-                        L += beta * f * ls.radiance *
-                             powerHeuristic(ls.pdf, wi.z > 0.0f ? wi.z / kPi : 0.0f) / ls.pdf;
-                }
+                if (f != glm::vec3(0.0f) && lightVisible(s, ls))
+                    L += beta * f * ls.radiance * powerHeuristic(ls.pdf, wi.z > 0.0f ? wi.z / kPi : 0.0f) /
+                         ls.pdf;
             }
 
             // bsdf.glsl bsdfSample() for a Lambertian surface: cosine-weighted (Malley's method). The
@@ -139,7 +168,9 @@ class PathTracer {
     Surface surfaceAt(const Ray& ray, const Hit& hit) const {
         const Tri& tri = scene_.tris[hit.triangle];
         Surface s;
-        s.position = ray.origin + hit.t * ray.dir;
+        // From the barycentrics, not ray.origin + t dir, whose error grows with the ray's length.
+        s.position = tri.v0 + hit.uv.x * tri.e1 + hit.uv.y * tri.e2;
+        s.offset = surfaceOffset(tri);
         glm::vec3 n = glm::normalize(glm::cross(tri.e1, tri.e2));
         s.frontFace = glm::dot(n, ray.dir) < 0.0f;
         s.geometricNormal = s.frontFace ? n : -n;
@@ -152,9 +183,25 @@ class PathTracer {
         return s;
     }
 
-    Ray spawnRay(const Surface& s, const glm::vec3& dir) const {
-        float side = glm::dot(dir, s.geometricNormal) >= 0.0f ? 1.0f : -1.0f;
-        return {s.position + side * scene_.rayOffset * s.geometricNormal, dir};
+    // surface.glsl spawnRay()
+    static Ray spawnRay(const Surface& s, const glm::vec3& dir) {
+        return {offsetToward(s.position, s.geometricNormal, s.offset, dir), dir};
+    }
+
+    // lights.glsl lightVisible() and ray_offset.glsl segmentOccluded(): a shadow ray to an emitter point
+    // is offset at both ends and stops exactly at the far end's offset point (no fraction of its length:
+    // that is shorter than the offsets when the points are close or far from the origin).
+    bool lightVisible(const Surface& s, const LightSample& ls) {
+        Hit shadow;
+        rays += 1;
+        if (ls.dist == kInf) return !traverse(scene_, spawnRay(s, ls.dir), kInf, true, shadow);
+        glm::vec3 d = ls.point - s.position;
+        glm::vec3 from = offsetToward(s.position, s.geometricNormal, s.offset, d);
+        glm::vec3 to = offsetToward(ls.point, ls.normal, ls.offset, -d);
+        glm::vec3 e = to - from;
+        if (!(glm::dot(e, d) > 0.0f)) return true;  // closer than their offsets: touching surfaces
+        float len = glm::length(e);
+        return !traverse(scene_, {from, e / len}, len, true, shadow);
     }
 
     float environmentPdf() const { return environmentSelection_ / (4.0f * kPi); }
@@ -162,8 +209,7 @@ class PathTracer {
     // lights.glsl sampleLight()
     LightSample sampleLight(const glm::vec3& from, Rng& rng) const {
         LightSample ls;
-        float u = rng.next();
-        if (u < environmentSelection_) {
+        if (rng.next() < environmentSelection_) {
             float z = 1.0f - 2.0f * rng.next(), phi = 2.0f * kPi * rng.next();
             float r = std::sqrt(std::max(0.0f, 1.0f - z * z));
             ls.dir = {r * std::cos(phi), r * std::sin(phi), z};
@@ -173,7 +219,8 @@ class PathTracer {
             return ls;
         }
         if (scene_.lights.empty()) return ls;
-        float v = (u - environmentSelection_) / (1.0f - environmentSelection_);
+        // A number of its own for the pick, on the 2^-24 grid the cdf lies on (buildScene).
+        float v = rng.next();
         int lo = 0, hi = int(scene_.lights.size()) - 1;
         while (lo < hi) {  // first entry whose cdf exceeds v
             int mid = (lo + hi) / 2;
@@ -182,28 +229,28 @@ class PathTracer {
             else
                 hi = mid;
         }
-        const Light& light = scene_.lights[lo];
-        const Tri& tri = scene_.tris[light.triangle];
+        const Tri& tri = scene_.tris[scene_.lights[lo].triangle];
         float b0 = rng.next(), b1 = rng.next();
         float su = std::sqrt(b0);  // uniform on the triangle: sampling.glsl sampleTriangle()
-        glm::vec3 toLight = tri.v0 + (1.0f - su) * tri.e1 + b1 * su * tri.e2 - from;
+        ls.point = tri.v0 + (1.0f - su) * tri.e1 + b1 * su * tri.e2;
+        ls.normal = glm::normalize(glm::cross(tri.e1, tri.e2));
+        ls.offset = surfaceOffset(tri);
+        glm::vec3 toLight = ls.point - from;
         float dist2 = glm::dot(toLight, toLight);
         ls.dist = std::sqrt(dist2);
         ls.dir = toLight / ls.dist;
-        float cosLight = -glm::dot(glm::normalize(glm::cross(tri.e1, tri.e2)), ls.dir);
+        float cosLight = -glm::dot(ls.normal, ls.dir);
         if (cosLight <= 0.0f || dist2 == 0.0f) return ls;
         ls.radiance = scene_.emission[tri.material];
-        ls.pdf = (1.0f - environmentSelection_) * light.pmf / light.area * dist2 / cosLight;
+        ls.pdf = (1.0f - environmentSelection_) * emitterAreaPdf(tri) * dist2 / cosLight;
         return ls;
     }
 
     // lights.glsl lightPdf()
     float lightPdf(const Ray& ray, const Hit& hit) const {
         const Tri& tri = scene_.tris[hit.triangle];
-        glm::vec3 n = glm::cross(tri.e1, tri.e2);
-        float area = 0.5f * glm::length(n);
-        float cosLight = std::abs(glm::dot(n, ray.dir)) / (2.0f * area);
-        return (1.0f - environmentSelection_) * tri.lightPmf / area * hit.t * hit.t / cosLight;
+        float cosLight = std::abs(glm::dot(glm::normalize(glm::cross(tri.e1, tri.e2)), ray.dir));
+        return (1.0f - environmentSelection_) * emitterAreaPdf(tri) * hit.t * hit.t / cosLight;
     }
 
     const Scene& scene_;

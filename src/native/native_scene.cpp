@@ -1,6 +1,7 @@
 #include "native/native_scene.h"
 
 #include <algorithm>
+#include <cmath>
 #include <string>
 
 #include "bvh/bvh.h"
@@ -16,17 +17,46 @@ float luminance(const glm::vec3& rgb) {
     return glm::dot(rgb, glm::vec3(0.2126f, 0.7152f, 0.0722f));
 }
 
+// Each emitter's probability of being picked, as gpu/pack.cpp stores them: the cdf of the powers summed
+// in double and rounded to the 2^-24 grid of rand() (the first entry whose cdf exceeds u is picked), the
+// last entry 1, and each pmf the exact difference of two entries, so the pdf uses the pick's probability.
+std::vector<float> lightPmfs(const std::vector<double>& power, double total) {
+    std::vector<float> pmf(power.size(), 0.0f);
+    if (!(total > 0.0)) return pmf;
+    double running = 0.0, previous = 0.0;
+    size_t last = 0;
+    for (size_t i = 0; i < power.size(); ++i) {
+        if (!(power[i] > 0.0)) continue;
+        running += power[i];
+        double cdf = std::min(1.0, std::round(running / total * 16777216.0) / 16777216.0);
+        pmf[i] = float(cdf - previous);
+        previous = cdf;
+        last = i;
+    }
+    pmf[last] += float(1.0 - previous);  // exact: both on the grid
+    return pmf;
+}
+
 }  // namespace
+
+std::optional<std::string> unsupportedFeature(const fp::Scene& scene) {
+    if (scene.environment.hasMap())
+        return "an environment map (the native reference has a constant colour only)";
+    for (const Material& m : scene.materials) {
+        if (m.type != MaterialType::Diffuse)
+            return "material '" + m.name +
+                   "' is not Lambertian; the native reference implements only diffuse surfaces";
+        if (m.diffuseTexture >= 0)
+            return "material '" + m.name + "' has a texture; the native reference implements none";
+    }
+    return std::nullopt;
+}
 
 Scene buildScene(const fp::Scene& scene, const BvhBuildOptions& options) {
     if (scene.triangles.empty()) throw Error(scene.source + ": the native reference needs triangles");
-    if (scene.environment.hasMap())
-        throw Error(scene.source + ": the native reference has no environment maps (a constant colour only)");
+    if (auto why = unsupportedFeature(scene)) throw Error(scene.source + ": " + *why);
     Scene out;
     for (const Material& m : scene.materials) {
-        if (m.type != MaterialType::Diffuse)
-            throw Error(scene.source + ": material '" + m.name +
-                        "' is not Lambertian; the native reference implements only diffuse surfaces");
         out.diffuse.push_back(m.diffuse);
         out.emission.push_back(m.emission);
     }
@@ -37,25 +67,25 @@ Scene buildScene(const fp::Scene& scene, const BvhBuildOptions& options) {
     Bvh bvh = buildBinnedSah(bounds, options);
 
     // Emitters chosen in proportion to their power, as gpu/pack.cpp does.
-    float total = 0.0f;
-    for (uint32_t i : bvh.primIndex) {
-        const Triangle& t = scene.triangles[i];
-        if (scene.materials[t.material].isEmissive())
-            total += luminance(scene.materials[t.material].emission) * t.area();
-    }
-    float cdf = 0.0f;
+    std::vector<double> power;
+    double total = 0.0;
     for (uint32_t i : bvh.primIndex) {
         const Triangle& t = scene.triangles[i];
         const Material& m = scene.materials[t.material];
-        float pmf = m.isEmissive() && total > 0.0f ? luminance(m.emission) * t.area() / total : 0.0f;
-        if (pmf > 0.0f) {
-            cdf += pmf;
-            out.lights.push_back({uint32_t(out.tris.size()), cdf, pmf, t.area()});
+        power.push_back(m.isEmissive() ? double(luminance(m.emission)) * double(t.area()) : 0.0);
+        total += power.back();
+    }
+    std::vector<float> pmf = lightPmfs(power, total);
+    float cdf = 0.0f;
+    for (size_t k = 0; k < bvh.primIndex.size(); ++k) {
+        const Triangle& t = scene.triangles[bvh.primIndex[k]];
+        if (pmf[k] > 0.0f) {
+            cdf += pmf[k];  // exact: multiples of 2^-24 in [0, 1]
+            out.lights.push_back({uint32_t(k), cdf});
         }
-        out.tris.push_back({t.p[0], t.p[1] - t.p[0], t.p[2] - t.p[0], t.material, pmf});
+        out.tris.push_back({t.p[0], t.p[1] - t.p[0], t.p[2] - t.p[0], t.material, pmf[k]});
         out.normals.push_back(t.n);
     }
-    if (!out.lights.empty()) out.lights.back().cdf = 1.0f;
 
     // The same wide tree, in the same order, as gpu/pack.cpp stores (with exact boxes: see Node).
     WideBvh wide = collapseToWide(bvh);
@@ -78,9 +108,6 @@ Scene buildScene(const fp::Scene& scene, const BvhBuildOptions& options) {
         throw Error(scene.source + ": the BVH is " + std::to_string(wide.depth) +
                     " levels deep, more than the native reference's stack holds");
 
-    Aabb box = scene.bounds();
-    float reach = std::max({glm::length(box.extent()), glm::length(box.lo), glm::length(box.hi)});
-    out.rayOffset = 1e-5f * reach;
     return out;
 }
 

@@ -9,6 +9,8 @@
 // `fragpath bench --native` can say how the fragment shader compares with native code on this machine.
 #include <array>
 #include <cstdint>
+#include <optional>
+#include <string>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -47,7 +49,7 @@ struct Tri {
 
 struct Light {
     uint32_t triangle;
-    float cdf, pmf, area;
+    float cdf;  // on the 2^-24 grid of the random numbers; the pmfs are its exact differences
 };
 
 struct Scene {
@@ -57,12 +59,14 @@ struct Scene {
     std::vector<glm::vec3> diffuse, emission;  // per material
     std::vector<Light> lights;
     glm::vec3 environment{0.0f};  // constant radiance from every unblocked direction
-    float rayOffset = 0.0f;       // as Renderer computes it
 };
 
-// Throws fp::Error for what the reference does not implement: materials other than Lambertian (with
-// optional emission) and environment maps.
+// Throws fp::Error for what the reference does not implement (unsupportedFeature).
 // `options` must be the renderer's (gpu/layout.h bvhOptions()) for both to trace the same tree.
 Scene buildScene(const fp::Scene& scene, const BvhBuildOptions& options);
+
+// Why the reference cannot render `scene` as the renderer would (materials other than Lambertian with
+// optional emission, textures, environment maps), or nothing if it can.
+std::optional<std::string> unsupportedFeature(const fp::Scene& scene);
 
 }  // namespace fp::native

@@ -93,17 +93,29 @@ TEST_F(Bench, NativeReferenceGivesTheRatioInTheSameRun) {
     EXPECT_NEAR(native["gpu_over_native"].get<double>(), expected, 1e-9 * expected);
 }
 
-TEST_F(Bench, NativeReferenceSkipsScenesItCannotRender) {
-    // The suite's scenes are Lambertian; a glossy OBJ is not, and is skipped with the reason.
-    std::string obj = path("metal.obj"), mtl = path("metal.mtl"), file = path("skip.json");
+TEST_F(Bench, NativeReferenceRefusesWhatItDoesNotImplement) {
+    // A ratio of the shader over the reference means something only for the same algorithm: another
+    // integrator or a material the reference lacks is an error, never a skip note beside GPU figures
+    // that could pass for a comparison. The suite's scenes are Lambertian; a metal OBJ is not.
+    std::string obj = path("metal.obj"), mtl = path("metal.mtl"), file = path("refused.json");
     std::ofstream(mtl) << "newmtl m\nKd 0.5 0.5 0.5\nPm 1\n";
     std::ofstream(obj) << "mtllib metal.mtl\nusemtl m\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n";
-    CliRun r = fragpath("bench " + obj + " --size 8x8 --spp 1 --runs 1 --native --json " + file);
-    ASSERT_EQ(r.exitCode, 0) << r.output;
-    EXPECT_NE(r.output.find("native reference skipped"), std::string::npos) << r.output;
-    std::ifstream in(file);
-    nlohmann::json j = nlohmann::json::parse(in);
-    EXPECT_NE(j["native"]["skipped"].get<std::string>().find("Lambertian"), std::string::npos);
+    struct Case {
+        std::string args, fragment;
+    };
+    for (const Case& c : {Case{obj, "not Lambertian"}, Case{"--integrator bdpt", "only the nee integrator"},
+                          Case{"--integrator bsdf", "only the nee integrator"},
+                          Case{"--suite --scenes cornell --integrator naive", "only the nee integrator"}}) {
+        CliRun r = fragpath("bench " + c.args + " --size 8x8 --spp 1 --runs 1 --native --json " + file);
+        EXPECT_EQ(r.exitCode, 1) << c.args << ": " << r.output;
+        EXPECT_NE(r.output.find("fragpath: error: --native: "), std::string::npos)
+            << c.args << ": " << r.output;
+        EXPECT_NE(r.output.find(c.fragment), std::string::npos) << c.args << ": " << r.output;
+        EXPECT_EQ(r.output.find("gpu / native"), std::string::npos) << c.args << ": " << r.output;
+        EXPECT_FALSE(fs::exists(file)) << c.args << ": wrote figures";
+    }
+    // Without --native the same scene and integrators are measured as usual.
+    EXPECT_EQ(fragpath("bench " + obj + " --size 8x8 --spp 1 --runs 1").exitCode, 0);
 }
 
 TEST_F(Bench, SuiteGivesEachScenesShareOfTheCornellBoxForBothRenderers) {

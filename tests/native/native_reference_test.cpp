@@ -8,22 +8,13 @@
 #include "core/error.h"
 #include "gpu/layout.h"
 #include "native/native_path.h"
+#include "native/native_test_util.h"
 #include "render/render_test_util.h"
 
 namespace fp::test {
 namespace {
 
 constexpr int kSize = 32, kSpp = 64, kDepth = 5;
-
-Accumulation asAccumulation(const native::Result& r) {
-    Accumulation a;
-    a.width = r.width;
-    a.height = r.height;
-    a.sum = r.sum;
-    a.squares = r.squares;
-    a.counters.assign(r.sum.size(), glm::vec4(0.0f));
-    return a;
-}
 
 native::Result renderNative(const Scene& scene, uint32_t seed) {
     native::Settings s;
@@ -78,8 +69,16 @@ TEST_F(NativeReference, FollowsTheShadersRandomStream) {
 
 TEST(NativeReferenceScene, RejectsWhatItDoesNotImplement) {
     Scene scene = builtinCornellBox();
-    scene.materials[0].type = MaterialType::Conductor;
-    EXPECT_THROW(native::buildScene(scene, layout::bvhOptions()), Error);
+    ASSERT_FALSE(native::unsupportedFeature(scene));
+    Scene metal = scene;
+    metal.materials[0].type = MaterialType::Conductor;
+    EXPECT_THROW(native::buildScene(metal, layout::bvhOptions()), Error);
+    // A textured Lambertian material: the reference would render it untextured.
+    Scene textured = scene;
+    textured.textures.push_back({"grey.png", Rgba8Image{}});
+    textured.materials[0].diffuseTexture = 0;
+    EXPECT_THROW(native::buildScene(textured, layout::bvhOptions()), Error);
+    EXPECT_TRUE(native::unsupportedFeature(textured));
 }
 
 }  // namespace

@@ -1,0 +1,140 @@
+#pragma once
+// A small square lamp just above a large diffuse floor, whose direct light has a closed form: the
+// analytic case the native reference (tests/native) and the GPU integrators (tests/render) are checked
+// against, at the origin, far from it and at very small and very large sizes (issue 15). The floor's
+// radiance at a point is rho Le F, F the form factor from that point to the lamp.
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "render/accumulation.h"
+#include "render/render_test_util.h"
+#include "scene/scene.h"
+
+namespace fp::test {
+
+struct LampCase {
+    std::string name;
+    double side;    // a: the lamp is an a x a square, emitting down
+    double height;  // h: above the floor
+    double shiftX;  // the whole scene moved this far along x
+};
+
+// Near enough for the old offsets (1e-5 of the scene's reach, shadow rays shortened by 1e-4 of their
+// length) to lose nearly every light sample, far enough from the coordinates' float spacing for any
+// offset scheme: the translated lamp is 1000 wide so that 1e5 is far from the origin but a
+// 2^-18 x 1e5 offset (0.4) is still small beside its height.
+inline std::vector<LampCase> lampCases() {
+    return {{"unit lamp at h = 0.2 a", 1.0, 0.2, 0.0},
+            {"unit lamp at h = 0.02 a", 1.0, 0.02, 0.0},
+            {"1 mm lamp", 1e-3, 2e-4, 0.0},
+            {"10 km lamp", 1e4, 2e3, 0.0},
+            {"lamp at x = 1e5", 1e3, 200.0, 1e5}};
+}
+
+constexpr float kLampFloorAlbedo[3] = {0.8f, 0.5f, 0.3f};
+constexpr float kLampRadiance[3] = {1.0f, 2.0f, 4.0f};
+
+inline void appendQuad(Scene& scene, const glm::vec3 (&c)[4], uint32_t material) {
+    glm::vec3 n = glm::normalize(glm::cross(c[1] - c[0], c[2] - c[0]));
+    for (auto tri : {std::array<int, 3>{0, 1, 2}, std::array<int, 3>{0, 2, 3}}) {
+        Triangle t;
+        t.p = {c[tri[0]], c[tri[1]], c[tri[2]]};
+        t.n = {n, n, n};
+        t.material = material;
+        scene.triangles.push_back(t);
+    }
+}
+
+// The floor: a square 20 a wide at y = 0, facing up; the lamp: centred h above the floor's centre, its
+// front face (the emitting one) facing down. No environment.
+inline Scene lampOverFloor(const LampCase& c) {
+    Scene scene;
+    scene.source = c.name;
+    Material floor, lamp;
+    floor.name = "floor";
+    floor.diffuse = glm::vec3(kLampFloorAlbedo[0], kLampFloorAlbedo[1], kLampFloorAlbedo[2]);
+    lamp.name = "lamp";
+    lamp.diffuse = glm::vec3(0.0f);
+    lamp.emission = glm::vec3(kLampRadiance[0], kLampRadiance[1], kLampRadiance[2]);
+    scene.materials = {floor, lamp};
+    float x = float(c.shiftX), f = float(10.0 * c.side), l = float(0.5 * c.side), h = float(c.height);
+    // Counter-clockwise seen from above (+y) for the floor, from below for the lamp.
+    const glm::vec3 floorCorners[4] = {{x - f, 0, -f}, {x - f, 0, f}, {x + f, 0, f}, {x + f, 0, -f}};
+    const glm::vec3 lampCorners[4] = {{x - l, h, -l}, {x + l, h, -l}, {x + l, h, l}, {x - l, h, l}};
+    appendQuad(scene, floorCorners, 0);
+    appendQuad(scene, lampCorners, 1);
+    return scene;
+}
+
+// A pinhole halfway between lamp and floor looking straight down (a camera blocks no light): with a 2
+// degree field its image covers a spot of radius 0.012 h under the lamp's centre, where the form
+// factor is constant to 1e-5 (lampFormFactorSpread checks it).
+constexpr float kLampCameraFovY = 2.0f;
+
+inline Camera lampCamera(const LampCase& c) {
+    Camera camera;
+    camera.eye = glm::vec3(float(c.shiftX), float(0.5 * c.height), 0.0f);
+    camera.target = glm::vec3(float(c.shiftX), 0.0f, 0.0f);
+    camera.up = glm::vec3(0.0f, 0.0f, 1.0f);
+    camera.fovY = kLampCameraFovY;
+    return camera;
+}
+
+// Form factor from a differential area to a parallel X h by Y h rectangle, h above it, with one corner
+// straight above it (Howell, "A Catalog of Radiation Heat Transfer Configuration Factors": differential
+// area to a parallel rectangle).
+inline double cornerFormFactor(double X, double Y) {
+    double sx = std::sqrt(1.0 + X * X), sy = std::sqrt(1.0 + Y * Y);
+    return (X / sx * std::atan(Y / sx) + Y / sy * std::atan(X / sy)) / (2.0 * M_PI);
+}
+
+// From the floor point (dx, dz) off the lamp's centre, inside its shadow on the floor: the four
+// rectangles the point's perpendicular cuts the lamp into, each with a corner above the point.
+inline double lampFormFactor(const LampCase& c, double dx, double dz) {
+    double l = 0.5 * c.side, h = c.height;
+    return cornerFormFactor((l - dx) / h, (l - dz) / h) + cornerFormFactor((l + dx) / h, (l - dz) / h) +
+           cornerFormFactor((l - dx) / h, (l + dz) / h) + cornerFormFactor((l + dx) / h, (l + dz) / h);
+}
+
+// How much the form factor varies over the spot the camera sees, relative to its value at the centre.
+inline double lampFormFactorSpread(const LampCase& c) {
+    double r = 0.5 * c.height * std::tan(0.5 * kLampCameraFovY * M_PI / 180.0);  // half the spot, square
+    double f0 = lampFormFactor(c, 0.0, 0.0), spread = 0.0;
+    for (double dx : {-r, 0.0, r})
+        for (double dz : {-r, 0.0, r}) spread = std::max(spread, std::abs(lampFormFactor(c, dx, dz) - f0));
+    return spread / f0;
+}
+
+// Expects the floor's radiance rho Le F over the whole image and over each `block` x `block` block,
+// within 4 (image) or 4.5 (block) standard errors from the sample variance. Returns the image mean's
+// relative error in the first channel, for messages. Every pixel sees the same radiance (the spread is
+// checked), so a block's standard error is the image's times the square root of the block count: a
+// block's own sample variance is 0 when a rare event (a BSDF ray missing a lamp that fills 99.9 % of
+// the sky) happens not to occur in its samples, and would then tolerate no difference at all.
+inline double expectLampRadiance(const Accumulation& acc, const LampCase& c, int block) {
+    double formFactor = lampFormFactor(c, 0.0, 0.0);
+    EXPECT_LT(lampFormFactorSpread(c), 1e-4) << c.name << ": the spot is too large for one value";
+    ImageEstimate whole = estimate(acc);
+    double blocks = double(acc.width / block) * double(acc.height / block);
+    for (int ch = 0; ch < 3; ++ch) {
+        double expected = kLampFloorAlbedo[ch] * kLampRadiance[ch] * formFactor;
+        EXPECT_GT(whole.standardError[ch], 0.0f) << c.name << ": no noise, no tolerance";
+        EXPECT_LT(std::abs(whole.mean[ch] - expected), 4.0 * whole.standardError[ch])
+            << c.name << ", channel " << ch << ": mean " << whole.mean[ch] << ", expected " << expected
+            << " (F = " << formFactor << "), standard error " << whole.standardError[ch];
+        double blockError = whole.standardError[ch] * std::sqrt(blocks);
+        for (int y = 0; y + block <= acc.height; y += block)
+            for (int x = 0; x + block <= acc.width; x += block) {
+                ImageEstimate e = estimate(acc, x, y, block, block);
+                EXPECT_LT(std::abs(e.mean[ch] - expected), 4.5 * blockError)
+                    << c.name << ", channel " << ch << ", block at " << x << "," << y << ": " << e.mean[ch]
+                    << ", expected " << expected << ", standard error " << blockError;
+            }
+    }
+    return whole.mean[0] / (kLampFloorAlbedo[0] * kLampRadiance[0] * formFactor) - 1.0;
+}
+
+}  // namespace fp::test
