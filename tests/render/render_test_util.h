@@ -4,7 +4,9 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <memory>
@@ -149,6 +151,97 @@ inline void expectZScoresOfNoise(const std::vector<float>& z) {
         meanSquare += double(v) * v / double(z.size());
     }
     EXPECT_LT(meanSquare, 2.0) << "differences larger than the noise explains";
+}
+
+// Appends the quad a b c d (two triangles, flat normals), its front face the side from which a b c d
+// run counter-clockwise.
+inline void appendQuad(Scene& scene, glm::vec3 a, glm::vec3 b, glm::vec3 c, glm::vec3 d, uint32_t material) {
+    for (auto corners : {std::array<glm::vec3, 3>{a, b, c}, std::array<glm::vec3, 3>{a, c, d}}) {
+        Triangle t;
+        t.p = corners;
+        glm::vec3 n = glm::normalize(t.geometricNormal());
+        t.n = {n, n, n};
+        t.material = material;
+        scene.triangles.push_back(t);
+    }
+}
+
+// The closed box [lo, hi] (12 triangles), faces outward: a solid for glass.
+inline void appendBox(Scene& scene, glm::vec3 lo, glm::vec3 hi, uint32_t material) {
+    glm::vec3 c[8];
+    for (int i = 0; i < 8; ++i)
+        c[i] = glm::vec3(i & 1 ? hi.x : lo.x, i & 2 ? hi.y : lo.y, i & 4 ? hi.z : lo.z);
+    const int faces[6][4] = {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4},
+                             {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}};
+    glm::vec3 centre = 0.5f * (lo + hi);
+    for (const auto& f : faces) {
+        size_t first = scene.triangles.size();
+        appendQuad(scene, c[f[0]], c[f[1]], c[f[2]], c[f[3]], material);
+        for (size_t i = first; i < scene.triangles.size(); ++i) {
+            Triangle& t = scene.triangles[i];
+            if (glm::dot(t.geometricNormal(), t.p[0] - centre) < 0.0f) {  // face outward
+                std::swap(t.p[1], t.p[2]);
+                glm::vec3 n = glm::normalize(t.geometricNormal());
+                t.n = {n, n, n};
+            }
+        }
+    }
+}
+
+// The size of a difference between two independent renders of what should be the same image.
+struct ImageComparison {
+    glm::vec3 ratio{1.0f};       // whole-image mean of a / that of b
+    glm::vec3 meanZ{0.0f};       // (mean a - mean b) / standard error of the difference
+    glm::vec3 relativeSe{0.0f};  // that standard error / mean of b: how sharp the comparison is
+    float maxBlockZ = 0.0f;      // the largest |z| over blocks and channels
+    double blockZMeanSquare = 0.0;
+    size_t blocks = 0;  // z-scores (blocks x channels with any noise)
+};
+
+inline ImageComparison compareImages(const Accumulation& a, const Accumulation& b, int block,
+                                     const PixelRect& rect) {
+    ImageComparison c;
+    ImageEstimate ea = estimate(a, rect.x, rect.y, rect.width, rect.height),
+                  eb = estimate(b, rect.x, rect.y, rect.width, rect.height);
+    for (int ch = 0; ch < 3; ++ch) {
+        float se = std::sqrt(ea.standardError[ch] * ea.standardError[ch] +
+                             eb.standardError[ch] * eb.standardError[ch]);
+        c.ratio[ch] = ea.mean[ch] / eb.mean[ch];
+        c.meanZ[ch] = se > 0.0f ? (ea.mean[ch] - eb.mean[ch]) / se : 0.0f;
+        c.relativeSe[ch] = se / eb.mean[ch];
+    }
+    std::vector<float> z = blockZScores(a, b, block, rect);
+    c.blocks = z.size();
+    for (float v : z) {
+        c.maxBlockZ = std::max(c.maxBlockZ, std::abs(v));
+        c.blockZMeanSquare += double(v) * v / double(z.size());
+    }
+    return c;
+}
+
+// Two independent renders of the same image agree: the whole-image means within 5 standard errors
+// of their difference (which must be below `sharpness` of the mean, or the check means little), and
+// block by block z-scores as standard normal noise gives: none beyond 5, mean square below 2. Prints
+// the figures, so that a failure shows how large the difference is.
+inline void expectSameImage(const Accumulation& a, const Accumulation& b, int block, float sharpness,
+                            const std::string& what, const PixelRect* region = nullptr) {
+    PixelRect rect = region ? *region : PixelRect{0, 0, a.width, a.height};
+    ImageComparison c = compareImages(a, b, block, rect);
+    std::printf(
+        "%s: mean ratio %.4f %.4f %.4f, mean z %.2f %.2f %.2f (relative se %.4f); %zu block z: max |z| %.2f, "
+        "mean square %.2f\n",
+        what.c_str(), c.ratio.x, c.ratio.y, c.ratio.z, c.meanZ.x, c.meanZ.y, c.meanZ.z, c.relativeSe.y,
+        c.blocks, c.maxBlockZ, c.blockZMeanSquare);
+    for (int ch = 0; ch < 3; ++ch) {
+        EXPECT_LT(std::abs(c.meanZ[ch]), 5.0f)
+            << what << ": whole-image mean, channel " << ch << ", ratio " << c.ratio[ch];
+        EXPECT_LT(c.relativeSe[ch], sharpness)
+            << what << ": the comparison must be sharp enough to mean something";
+    }
+    EXPECT_GT(c.blocks, 30u) << what;
+    EXPECT_LT(c.maxBlockZ, 5.0f) << what << ": a block differs by more than the noise explains";
+    EXPECT_LT(c.blockZMeanSquare, 2.0) << what << ": block differences larger than the noise explains";
+    EXPECT_EQ(a.droppedSamples() + b.droppedSamples(), 0u) << what;
 }
 
 // A test suite sharing one renderer of the built-in Cornell box (BVH build and shader compile once).
