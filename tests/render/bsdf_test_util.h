@@ -646,4 +646,67 @@ inline ReferenceValue ggxConductorReference(glm::dvec3 wo, glm::dvec3 wi, double
     return {f, g1 * d / (4.0 * wo.z)};  // G1 (wo.wm) D / wo.z, times the Jacobian 1 / (4 wo.wm)
 }
 
+// Heitz 2018, eq. 3: the density of the visible normals seen from wo, D_wo(wm) = G1(wo) <wo.wm> D(wm) /
+// cos(theta_o), with the masking G1 = 1 / (1 + Lambda) of the Smith model.
+inline double ggxVisibleNormalDensity(glm::dvec3 wo, glm::dvec3 wm, double alpha) {
+    double g1 = 1.0 / (1.0 + ggxLambda(wo.z, alpha));
+    return g1 * std::max(0.0, glm::dot(wo, wm)) * ggxDistribution(wm.z, alpha) / wo.z;
+}
+
+// A rough dielectric interface in double precision, from Walter et al. 2007 ("Microfacet Models for
+// Refraction through Rough Surfaces", EGSR), for one channel of the transmission tint `tint`. wo is on
+// the side of index n_o = 1, wi reflected (wi.z > 0) or refracted into the side of index n_i = eta.
+// Reflection (eq. 20) f_r = F D G / (4 |cos_o| |cos_i|) with the half vector h_r = wo + wi (eq. 13);
+// refraction (eq. 21) f_t = |wi.h| |wo.h| / (|cos_i| |cos_o|) n_o^2 (1 - F) D G / (n_i wi.h + n_o wo.h)^2
+// with h_t = -(n_i wi + n_o wo) (eq. 16). Both half vectors are taken on the +z side; a microfacet that
+// faces away from either direction contributes nothing (the chi+ factors of eq. 23). F is the exact
+// Fresnel reflectance at wo.h, G the height-correlated Smith term. The density is that of sampling a
+// visible normal (Heitz 2018), choosing reflection with probability F, and mapping the normal to wi:
+// the Jacobians are 1 / (4 |wo.h|) (eq. 14) and n_i^2 |wi.h| / (n_i wi.h + n_o wo.h)^2 (eq. 17).
+inline ReferenceValue ggxDielectricReference(glm::dvec3 wo, glm::dvec3 wi, double alpha, double eta,
+                                             double tint) {
+    if (wi.z == 0.0) return {};
+    const bool reflection = wi.z > 0.0;
+    glm::dvec3 h = reflection ? wo + wi : -(eta * wi + wo);
+    if (glm::dot(h, h) == 0.0) return {};
+    h = glm::normalize(h);
+    if (h.z < 0.0) h = -h;
+    const double cosOh = glm::dot(wo, h), cosIh = glm::dot(wi, h);
+    if (cosOh * wo.z <= 0.0 || cosIh * wi.z <= 0.0) return {};
+    const double F = fresnelDielectricReference(cosOh, eta);
+    const double DG = ggxDistribution(h.z, alpha) * ggxG2(wo.z, wi.z, alpha);
+    const double visible = ggxVisibleNormalDensity(wo, h, alpha);
+    if (reflection) return {F * DG / (4.0 * wo.z), visible * F / (4.0 * cosOh)};
+    const double denominator = eta * cosIh + cosOh;
+    const double ft = std::abs(cosIh) * std::abs(cosOh) / (std::abs(wi.z) * wo.z) * (1.0 - F) * DG /
+                      (denominator * denominator);
+    return {tint * ft * std::abs(wi.z),
+            visible * (1.0 - F) * eta * eta * std::abs(cosIh) / (denominator * denominator)};
+}
+
+// The plastic of bsdf.glsl, as its header describes it, in double precision and one channel: a GGX
+// dielectric coat of index ior reflecting Ks D G F(wo.h) / (4 cos_o cos_i) (Walter et al. 2007, eq. 20),
+// over a Lambertian base Kd / pi seen through the coat on the way in and out, attenuated by the Fresnel
+// transmittance at both (1 - F(cos_o)) (1 - F(cos_i)). A smooth coat (roughness below kSmooth) has no
+// rough lobe: its mirror reflection is a delta that bsdfEval does not see.
+inline double plasticReference(glm::dvec3 wo, glm::dvec3 wi, double alpha, bool roughCoat, double ior,
+                               double kd, double ks) {
+    if (wi.z <= 0.0) return 0.0;
+    double f = kd / kPi * (1.0 - fresnelDielectricReference(wo.z, ior)) *
+               (1.0 - fresnelDielectricReference(wi.z, ior));
+    if (roughCoat) {
+        glm::dvec3 h = glm::normalize(wo + wi);
+        f += ks * ggxDistribution(h.z, alpha) * ggxG2(wo.z, wi.z, alpha) *
+             fresnelDielectricReference(glm::dot(wo, h), ior) / (4.0 * wo.z * wi.z);
+    }
+    return f * wi.z;
+}
+
+// The density of choosing GGX reflection from wo: a visible normal, then the Jacobian 1 / (4 wo.h).
+inline double ggxReflectionDensity(glm::dvec3 wo, glm::dvec3 wi, double alpha) {
+    if (wi.z <= 0.0) return 0.0;
+    glm::dvec3 h = glm::normalize(wo + wi);
+    return ggxVisibleNormalDensity(wo, h, alpha) / (4.0 * glm::dot(wo, h));
+}
+
 }  // namespace fp::test

@@ -245,12 +245,15 @@ inline void expectSameImage(const Accumulation& a, const Accumulation& b, int bl
 }
 
 // A test suite sharing one renderer of the built-in Cornell box (BVH build and shader compile once).
+// The environment variable FP_RENDER_TEST_SHADERS may name a glsl/ directory to render with instead of
+// the copy built into the binary: a deliberately broken shader can be tried without rebuilding.
 class CornellBoxSuite : public ::testing::Test {
   protected:
     static void SetUpTestSuite() {
         ensureGlContext();
         scene_ = std::make_unique<Scene>(builtinCornellBox());
-        renderer_ = std::make_unique<Renderer>(*scene_);
+        const char* shaders = std::getenv("FP_RENDER_TEST_SHADERS");
+        renderer_ = std::make_unique<Renderer>(*scene_, ShaderLibrary(shaders ? shaders : ""));
     }
     static void TearDownTestSuite() {
         renderer_.reset();
