@@ -6,6 +6,7 @@
 #include "core/error.h"
 #include "gpu/layout.h"
 #include "gpu/pack.h"
+#include "scene/light_selection.h"
 
 namespace fp {
 

@@ -1,19 +1,15 @@
 #include "gpu/pack.h"
 
 #include <algorithm>
-#include <cmath>
 #include <string>
 
 #include "bvh/wide_bvh.h"
 #include "core/error.h"
 #include "gpu/layout.h"
+#include "scene/light_selection.h"
 #include "scene/spectrum.h"
 
 namespace fp {
-
-float luminance(const glm::vec3& rgb) {
-    return glm::dot(rgb, glm::vec3(0.2126f, 0.7152f, 0.0722f));
-}
 
 size_t PackedScene::bytes() const {
     return sizeof(glm::vec4) * (triangles.size() + normals.size() + materials.size() + lights.size()) +
@@ -53,34 +49,6 @@ void packTextures(const Scene& scene, const Bvh& bvh, PackedScene* out) {
 
 }  // namespace
 
-std::vector<float> lightPmfs(const std::vector<double>& power, double totalPower) {
-    // The shader picks the first emitter whose cdf exceeds u = k / 2^24 (rand() in glsl/common/rng.glsl),
-    // so emitter i is picked with probability (cdf_i - cdf_{i-1}) exactly when every cdf entry lies on
-    // that grid. The cdf is summed in double, rounded to the grid, and each pmf is the difference of two
-    // rounded entries: the number the pdf uses is then the probability of the pick, for any count of
-    // emitters (a running float sum drifts from the stored pmfs by far more than a small emitter's
-    // share once there are ~1e5 of them). An emitter whose share rounds to 0 is never picked and has
-    // density 0, which BSDF sampling then covers in full (its MIS weight is 1): still unbiased.
-    constexpr double kGrid = 16777216.0;  // 2^24
-    std::vector<float> pmf(power.size(), 0.0f);
-    if (!(totalPower > 0.0)) return pmf;
-    double running = 0.0, previous = 0.0;
-    for (size_t i = 0; i < power.size(); ++i) {
-        if (power[i] <= 0.0) continue;
-        running += power[i];
-        double cdf = std::min(1.0, std::round(running / totalPower * kGrid) / kGrid);
-        pmf[i] = float(cdf - previous);
-        previous = cdf;
-    }
-    // The last emitter closes the cdf at 1, so a uniform number in [0, 1) always finds one.
-    for (size_t i = power.size(); i-- > 0;)
-        if (power[i] > 0.0) {
-            pmf[i] = float(1.0 - (previous - double(pmf[i])));
-            break;
-        }
-    return pmf;
-}
-
 PackedScene packScene(const Scene& scene, const Bvh& bvh) {
     PackedScene out;
     const size_t n = bvh.primIndex.size();
@@ -94,16 +62,9 @@ PackedScene packScene(const Scene& scene, const Bvh& bvh) {
     out.triangleCount = uint32_t(n);
 
     // Emitters and their selection probabilities, proportional to emitted power (luminance * area).
-    std::vector<double> power(n, 0.0);
-    double totalPower = 0.0;
-    for (size_t i = 0; i < n; ++i) {
-        const Triangle& t = scene.triangles[bvh.primIndex[i]];
-        const Material& m = scene.materials[t.material];
-        if (m.isEmissive()) power[i] = double(luminance(m.emission)) * double(t.area());
-        totalPower += power[i];
-    }
-    out.totalLightPower = float(totalPower);
-    std::vector<float> pmf = lightPmfs(power, totalPower);
+    EmitterPmfs emitters = emitterPmfs(scene, bvh.primIndex.data(), bvh.primIndex.size());
+    out.totalLightPower = float(emitters.totalPower);
+    const std::vector<float>& pmf = emitters.pmf;
 
     out.triangles.reserve(n * layout::kTriangleTexels);
     out.normals.reserve(n * layout::kNormalTexels);

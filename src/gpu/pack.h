@@ -35,10 +35,4 @@ struct PackedScene {
 // 2^31 texture texels, or a BVH node over 2^40 across: gpu/quantised_node.h).
 PackedScene packScene(const Scene& scene, const Bvh& bvh);
 
-// The probability that light sampling picks each triangle, from the triangles' emitted powers: on the
-// 2^-24 grid of the shader's random numbers, summing to 1 exactly (0 for non-emitters). pack.cpp says why.
-std::vector<float> lightPmfs(const std::vector<double>& power, double totalPower);
-
-float luminance(const glm::vec3& rgb);
-
 }  // namespace fp

@@ -8,36 +8,9 @@
 #include "bvh/wide_bvh.h"
 #include "core/error.h"
 #include "gpu/layout.h"
+#include "scene/light_selection.h"
 
 namespace fp::native {
-
-namespace {
-
-float luminance(const glm::vec3& rgb) {
-    return glm::dot(rgb, glm::vec3(0.2126f, 0.7152f, 0.0722f));
-}
-
-// Each emitter's probability of being picked, as gpu/pack.cpp stores them: the cdf of the powers summed
-// in double and rounded to the 2^-24 grid of rand() (the first entry whose cdf exceeds u is picked), the
-// last entry 1, and each pmf the exact difference of two entries, so the pdf uses the pick's probability.
-std::vector<float> lightPmfs(const std::vector<double>& power, double total) {
-    std::vector<float> pmf(power.size(), 0.0f);
-    if (!(total > 0.0)) return pmf;
-    double running = 0.0, previous = 0.0;
-    size_t last = 0;
-    for (size_t i = 0; i < power.size(); ++i) {
-        if (!(power[i] > 0.0)) continue;
-        running += power[i];
-        double cdf = std::min(1.0, std::round(running / total * 16777216.0) / 16777216.0);
-        pmf[i] = float(cdf - previous);
-        previous = cdf;
-        last = i;
-    }
-    pmf[last] += float(1.0 - previous);  // exact: both on the grid
-    return pmf;
-}
-
-}  // namespace
 
 std::optional<std::string> unsupportedFeature(const fp::Scene& scene) {
     if (scene.environment.hasMap())
@@ -66,16 +39,8 @@ Scene buildScene(const fp::Scene& scene, const BvhBuildOptions& options) {
     for (const Triangle& t : scene.triangles) bounds.push_back(t.bounds());
     Bvh bvh = buildBinnedSah(bounds, options);
 
-    // Emitters chosen in proportion to their power, as gpu/pack.cpp does.
-    std::vector<double> power;
-    double total = 0.0;
-    for (uint32_t i : bvh.primIndex) {
-        const Triangle& t = scene.triangles[i];
-        const Material& m = scene.materials[t.material];
-        power.push_back(m.isEmissive() ? double(luminance(m.emission)) * double(t.area()) : 0.0);
-        total += power.back();
-    }
-    std::vector<float> pmf = lightPmfs(power, total);
+    // Emitters chosen in proportion to their power, with the probabilities gpu/pack.cpp stores.
+    std::vector<float> pmf = emitterPmfs(scene, bvh.primIndex.data(), bvh.primIndex.size()).pmf;
     float cdf = 0.0f;
     for (size_t k = 0; k < bvh.primIndex.size(); ++k) {
         const Triangle& t = scene.triangles[bvh.primIndex[k]];

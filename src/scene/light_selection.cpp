@@ -1,0 +1,44 @@
+#include "scene/light_selection.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace fp {
+
+float luminance(const glm::vec3& rgb) {
+    return glm::dot(rgb, glm::vec3(0.2126f, 0.7152f, 0.0722f));
+}
+
+EmitterPmfs emitterPmfs(const Scene& scene, const uint32_t* order, size_t count) {
+    std::vector<double> power(count, 0.0);
+    EmitterPmfs out;
+    for (size_t i = 0; i < count; ++i) {
+        const Triangle& t = scene.triangles[order[i]];
+        const Material& m = scene.materials[t.material];
+        if (m.isEmissive()) power[i] = double(luminance(m.emission)) * double(t.area());
+        out.totalPower += power[i];
+    }
+    out.pmf = lightPmfs(power, out.totalPower);
+    return out;
+}
+
+std::vector<float> lightPmfs(const std::vector<double>& power, double totalPower) {
+    constexpr double kGrid = 16777216.0;  // 2^24
+    std::vector<float> pmf(power.size(), 0.0f);
+    if (!(totalPower > 0.0)) return pmf;
+    double running = 0.0, previous = 0.0;
+    size_t last = 0;
+    for (size_t i = 0; i < power.size(); ++i) {
+        if (!(power[i] > 0.0)) continue;
+        running += power[i];
+        double cdf = std::min(1.0, std::round(running / totalPower * kGrid) / kGrid);
+        pmf[i] = float(cdf - previous);
+        previous = cdf;
+        last = i;
+    }
+    // The last emitter closes the cdf at 1, so a uniform number in [0, 1) always finds one.
+    pmf[last] += float(1.0 - previous);  // exact: both on the grid
+    return pmf;
+}
+
+}  // namespace fp

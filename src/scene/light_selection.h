@@ -1,0 +1,36 @@
+#pragma once
+// How light sampling chooses an emitter: in proportion to its power, with probabilities that are
+// exactly the ones the shader's pick realises (glsl/common/lights.glsl pickLight), for the GPU packer
+// and the native reference alike.
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "scene/scene.h"
+
+namespace fp {
+
+// Rec. 709 luminance: the weight of a colour's channels in an emitter's power.
+float luminance(const glm::vec3& rgb);
+
+struct EmitterPmfs {
+    std::vector<float> pmf;   // per triangle, in the order asked for; 0 for non-emitters
+    double totalPower = 0.0;  // sum of luminance(Ke) * area over the emitters
+};
+
+// The selection probabilities of scene's triangles order[0 .. count) (e.g. a BVH's leaf order), each in
+// proportion to luminance(Ke) * area, as lightPmfs rounds them.
+EmitterPmfs emitterPmfs(const Scene& scene, const uint32_t* order, size_t count);
+
+// Probabilities proportional to `power`, on the 2^-24 grid of the shader's random numbers and summing to
+// 1 exactly: the cdf is summed in double and rounded to the grid, and each pmf is the difference of two
+// rounded entries. The shader picks the first emitter whose cdf exceeds u = k / 2^24, so the number its
+// pdf uses is then the probability of the pick for any count of emitters (a cdf summed in float drifts
+// from the stored pmfs by far more than a small emitter's share once there are ~1e5 of them). An emitter
+// whose share rounds to 0 is never picked and has density 0; BSDF sampling then covers it in full (its
+// MIS weight is 1), which is still unbiased.
+std::vector<float> lightPmfs(const std::vector<double>& power, double totalPower);
+
+}  // namespace fp
