@@ -18,7 +18,7 @@ void expectAnalyticLamp(Integrator integrator) {
     uint32_t seed = 5;
     for (const LampCase& c : lampCases()) {
         Scene scene = lampOverFloor(c);
-        Renderer renderer(scene);
+        Renderer renderer(scene, testShaders());
         Accumulation acc = renderScene(renderer, lampCamera(c), integrator, 16, 64, 1, seed++);
         double error = expectLampRadiance(acc, c, 4);
         std::printf("  %s, %-24s relative error %+.4f\n", integratorName(integrator), c.name.c_str(), error);

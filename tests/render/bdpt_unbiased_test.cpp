@@ -44,7 +44,7 @@ Camera lookAt(glm::vec3 eye, glm::vec3 target, float fov) {
 
 void expectBdptMatchesNee(const Scene& scene, const Camera& camera, int bdptSpp, int neeSpp, float sharpness,
                           const std::string& what) {
-    Renderer renderer(scene);
+    Renderer renderer(scene, testShaders());
     Accumulation bdpt = renderScene(renderer, camera, Integrator::Bdpt, 24, bdptSpp, 5, 1);
     Accumulation nee = renderScene(renderer, camera, Integrator::Nee, 24, neeSpp, 5, 2);
     expectSameImage(bdpt, nee, 3, sharpness, what);

@@ -244,16 +244,21 @@ inline void expectSameImage(const Accumulation& a, const Accumulation& b, int bl
     EXPECT_EQ(a.droppedSamples() + b.droppedSamples(), 0u) << what;
 }
 
+// The shaders the GPU tests render with: the copy built into the binary, or the glsl/ directory the
+// environment variable FP_RENDER_TEST_SHADERS names, so that a deliberately broken shader can be tried
+// without rebuilding (how the tests' comments say what each one catches).
+inline ShaderLibrary testShaders() {
+    const char* shaders = std::getenv("FP_RENDER_TEST_SHADERS");
+    return ShaderLibrary(shaders ? shaders : "");
+}
+
 // A test suite sharing one renderer of the built-in Cornell box (BVH build and shader compile once).
-// The environment variable FP_RENDER_TEST_SHADERS may name a glsl/ directory to render with instead of
-// the copy built into the binary: a deliberately broken shader can be tried without rebuilding.
 class CornellBoxSuite : public ::testing::Test {
   protected:
     static void SetUpTestSuite() {
         ensureGlContext();
         scene_ = std::make_unique<Scene>(builtinCornellBox());
-        const char* shaders = std::getenv("FP_RENDER_TEST_SHADERS");
-        renderer_ = std::make_unique<Renderer>(*scene_, ShaderLibrary(shaders ? shaders : ""));
+        renderer_ = std::make_unique<Renderer>(*scene_, testShaders());
     }
     static void TearDownTestSuite() {
         renderer_.reset();
