@@ -38,6 +38,18 @@ void appendSphere(Scene& scene, const glm::vec3& center, float radius, int rings
         }
 }
 
+void appendQuad(Scene& scene, const glm::vec3& a, const glm::vec3& b, const glm::vec3& c, const glm::vec3& d,
+                uint32_t material) {
+    for (auto corners : {std::array<glm::vec3, 3>{a, b, c}, std::array<glm::vec3, 3>{a, c, d}}) {
+        Triangle t;
+        t.p = corners;
+        glm::vec3 n = glm::normalize(t.geometricNormal());
+        t.n = {n, n, n};
+        t.material = material;
+        scene.triangles.push_back(t);
+    }
+}
+
 Scene causticScene(float glassRoughness) {
     Scene scene;
     scene.source = "caustic scene";
@@ -54,19 +66,10 @@ Scene causticScene(float glassRoughness) {
     light.diffuse = glm::vec3(0.0f);
     light.emission = glm::vec3(100.0f);
     scene.materials = {floor, glass, light};
-    auto quad = [&](glm::vec3 a, glm::vec3 b, glm::vec3 c, glm::vec3 d, uint32_t material) {
-        for (auto corners : {std::array<glm::vec3, 3>{a, b, c}, std::array<glm::vec3, 3>{a, c, d}}) {
-            Triangle t;
-            t.p = corners;
-            glm::vec3 n = glm::normalize(t.geometricNormal());
-            t.n = {n, n, n};
-            t.material = material;
-            scene.triangles.push_back(t);
-        }
-    };
-    quad({-3, 0, -3}, {-3, 0, 3}, {3, 0, 3}, {3, 0, -3}, 0);  // counter-clockwise seen from above: facing up
+    appendQuad(scene, {-3, 0, -3}, {-3, 0, 3}, {3, 0, 3}, {3, 0, -3}, 0);  // counter-clockwise from above: up
     appendSphere(scene, {0.0f, 0.9f, 0.0f}, 0.5f, 24, 48, 1, true);
-    quad({-0.1f, 3, -0.1f}, {0.1f, 3, -0.1f}, {0.1f, 3, 0.1f}, {-0.1f, 3, 0.1f}, 2);  // facing down
+    appendQuad(scene, {-0.1f, 3, -0.1f}, {0.1f, 3, -0.1f}, {0.1f, 3, 0.1f}, {-0.1f, 3, 0.1f},
+               2);  // facing down
     Camera camera;
     camera.eye = {0.0f, 1.4f, -3.2f};
     camera.target = {0.0f, 0.35f, 0.0f};

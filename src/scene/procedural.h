@@ -16,6 +16,11 @@ namespace fp {
 void appendSphere(Scene& scene, const glm::vec3& center, float radius, int rings, int segments,
                   uint32_t material, bool smooth);
 
+// Appends the quad a b c d (two triangles, flat normals), its front face the side from which a b c d
+// run counter-clockwise.
+void appendQuad(Scene& scene, const glm::vec3& a, const glm::vec3& b, const glm::vec3& c, const glm::vec3& d,
+                uint32_t material);
+
 // A caustic, for bidirectional path tracing: a 0.2 x 0.2 one-sided emitter (radiance 100) facing down
 // 3 units above a diffuse floor (albedo 0.6, 6 x 6), and a smooth-shaded glass sphere (ior 1.5, GGX
 // roughness `glassRoughness`, radius 0.5, 24 rings x 48 segments) between them, centre 0.9 above the

@@ -153,19 +153,6 @@ inline void expectZScoresOfNoise(const std::vector<float>& z) {
     EXPECT_LT(meanSquare, 2.0) << "differences larger than the noise explains";
 }
 
-// Appends the quad a b c d (two triangles, flat normals), its front face the side from which a b c d
-// run counter-clockwise.
-inline void appendQuad(Scene& scene, glm::vec3 a, glm::vec3 b, glm::vec3 c, glm::vec3 d, uint32_t material) {
-    for (auto corners : {std::array<glm::vec3, 3>{a, b, c}, std::array<glm::vec3, 3>{a, c, d}}) {
-        Triangle t;
-        t.p = corners;
-        glm::vec3 n = glm::normalize(t.geometricNormal());
-        t.n = {n, n, n};
-        t.material = material;
-        scene.triangles.push_back(t);
-    }
-}
-
 // The closed box [lo, hi] (12 triangles), faces outward: a solid for glass.
 inline void appendBox(Scene& scene, glm::vec3 lo, glm::vec3 hi, uint32_t material) {
     glm::vec3 c[8];
