@@ -133,8 +133,12 @@ vec3 radiance(Ray ray) {
         vec3 Le = emittedRadiance(s);
         if (Le != vec3(0.0)) {
             float zRevPrev = t >= 3 ? toArea(dot(s.geometricNormal, z.wo) / PI, z.p, gCamera[t - 2]) : 0.0;
+            // An emitter whose selection probability rounds to 0 (lights.glsl) starts no light subpath:
+            // s = 0 is the only strategy that finds it, with full weight (misWeight would read the 0 as
+            // a delta density).
             float emitterPdf = emitterAreaPdf(fetchTriangle(hit.triangle));
-            L += beta * Le * misWeight(0, t, emitterPdf, zRevPrev, 0.0, 0.0, 0.0) * spectralFactor(dispersive);
+            float w = emitterPdf > 0.0 ? misWeight(0, t, emitterPdf, zRevPrev, 0.0, 0.0, 0.0) : 1.0;
+            L += beta * Le * w * spectralFactor(dispersive);
         }
         if (depth >= maxDepth) break;
 

@@ -329,8 +329,8 @@ INSTANTIATE_TEST_SUITE_P(Spheres, ShadingNormalFurnace,
 // triangles (100,352 emitters), and beside it two 0.5 x 0.5 quads facing up (nothing to light: black
 // sky) that hold 99 % of the emitted power, 80 : 38.5. Each lamp triangle's pmf is then 8.4e-8, 1.4
 // float spacings of a CDF summed past 0.5 (the spacing there is 6e-8). The lamp is small and far, so
-// that light sampling carries nearly all of its MIS weight, and far enough for the ray offset (1e-5 of
-// the scene's reach) not to matter.
+// that light sampling carries nearly all of its MIS weight, and far enough that the shadow rays' old
+// relative shortening (dist * (1 - 1e-4)) did not matter: the failure on main was the CDF's alone.
 Scene hundredThousandEmitters() {
     Scene scene;
     scene.source = "100k emitters";
@@ -366,6 +366,34 @@ TEST(Unbiased, HundredThousandEmittersNeeMatchesBsdf) {
     Accumulation nee = renderScene(renderer, c, Integrator::Nee, 24, 1024, 1, 1);
     Accumulation bsdf = renderScene(renderer, c, Integrator::Bsdf, 24, 4096, 1, 2);
     expectSameImage(nee, bsdf, 3, 0.03f, "100,352 emitters");
+}
+
+// ---- 8. an emitter too dim to be picked ----
+
+// A dim lamp (power 1) beside a bright one (power 1e8, facing up into empty space) has a share of the
+// power below the 2^-24 grid of the light pick (scene/light_selection.h): it is never picked, and its
+// density is 0. Catches an estimator that still weighs what BSDF sampling finds of it against a light
+// strategy that cannot sample it: nee's MIS weight must be 1 there (powerHeuristic(p, 0)), and bdpt's
+// s = 0 weight too (misWeight reads a density of 0 as a delta density and gave it about half). bsdf,
+// with no light sampling at all, is the reference.
+TEST(Unbiased, EmitterTooDimToBePickedIsFoundInFull) {
+    ensureGlContext();
+    Scene scene;
+    scene.source = "a dim and a bright lamp";
+    scene.materials = {diffuse(0.5f), emitter(glm::vec3(1.0f)), emitter(glm::vec3(1e8f))};
+    appendQuad(scene, {-2, 0, -2}, {-2, 0, 2}, {2, 0, 2}, {2, 0, -2}, 0);  // the floor, facing up
+    appendQuad(scene, {-0.5f, 1, -0.5f}, {0.5f, 1, -0.5f}, {0.5f, 1, 0.5f}, {-0.5f, 1, 0.5f}, 1);  // down
+    appendQuad(scene, {5.5f, 3, -0.5f}, {5.5f, 3, 0.5f}, {6.5f, 3, 0.5f}, {6.5f, 3, -0.5f}, 2);    // up
+    Renderer renderer(scene, testShaders());
+    Camera c;
+    c.eye = glm::vec3(0.0f, 0.5f, -2.0f);
+    c.target = glm::vec3(0.0f, 0.4f, 0.0f);
+    c.fovY = 50.0f;
+    Accumulation bsdf = renderScene(renderer, c, Integrator::Bsdf, 24, 256, 2, 1);
+    Accumulation nee = renderScene(renderer, c, Integrator::Nee, 24, 256, 2, 2);
+    Accumulation bdpt = renderScene(renderer, c, Integrator::Bdpt, 24, 256, 2, 3);
+    expectSameImage(nee, bsdf, 3, 0.05f, "a lamp too dim to be picked, nee against bsdf");
+    expectSameImage(bdpt, bsdf, 3, 0.05f, "a lamp too dim to be picked, bdpt against bsdf");
 }
 
 }  // namespace
