@@ -117,9 +117,10 @@ INSTANTIATE_TEST_SUITE_P(Offsets, FarFromTheOrigin, ::testing::Values(1e4f, 1e5f
 class ScaledScene : public ::testing::TestWithParam<float> {};
 
 // Catches offsets and epsilons that are absolute lengths rather than relative to the scene: the box
-// 1 mm across (offsets larger than its features) and 10 km across (offsets below the float spacing of
-// its coordinates), in the units of the scene. (These pass today: the offset is 1e-5 of the scene's
-// reach, which scales with the scene; they keep a new offset scheme from losing that.)
+// 1e-3 units across (a micrometre in its millimetres: fixed offsets larger than its features) and 1e7
+// (10 km: fixed offsets below the float spacing of its coordinates). These passed before the offsets of
+// ray_offset.glsl too (the old offset was 1e-5 of the scene's reach, which also scales with the scene);
+// they check that offsets relative to each triangle's coordinates keep that.
 TEST_P(ScaledScene, CornellBoxMatchesTheUnitRender) {
     ensureGlContext();
     const float across = GetParam();
