@@ -123,7 +123,7 @@ TEST(BdptUnbiased, RoughDispersiveGlassMatchesNee) {
     ensureGlContext();
     Scene scene = causticScene(0.3f);
     scene.materials[1].abbeNumber = 20.0f;
-    expectBdptMatchesNee(scene, *scene.camera, 256, 1024, 0.03f, "rough dispersive glass sphere");
+    expectBdptMatchesNee(scene, *scene.camera, 256, 2048, 0.03f, "rough dispersive glass sphere");
 }
 
 // An environment map beside an emitter: bdpt finds the map only by camera subpaths that escape
