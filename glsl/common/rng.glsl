@@ -8,6 +8,11 @@
 // pixels and samples add up to 2^32, which a 512x512 render reaches at a few hundred samples per pixel.)
 // The key packs the pixel as x | y << 16: textures are at most 16384 wide, so both fit in 16 bits.
 
+// SAMPLER (set by the renderer, src/render/settings.h): 0 independent numbers, 1 Owen-scrambled Sobol.
+#ifndef SAMPLER
+#define SAMPLER 0
+#endif
+
 uvec4 pcg4d(uvec4 v) {
     v = v * 1664525u + 1013904223u;
     v.x += v.y * v.w;
@@ -39,6 +44,57 @@ void rngInitSecondStream(uint seed, uvec2 pixel, uint sampleIndex) {
     rngKey.w = 0x80000000u;
 }
 
+#if SAMPLER == 1
+// ---- Owen-scrambled Sobol points (the default sampler, `--sampler sobol`) ----
+// Burley 2020, "Practical Hash-based Owen Scrambling", JCGT 9(4). Every call of rand2() takes the next
+// 2D "dimension pair" d (counter rngKey.w) and returns point k (the sample index) of the first two
+// Sobol dimensions, shuffled and Owen-scrambled with hashes of (pixel, seed, d): the samples of one pixel
+// in one pair are a (0, 2)-sequence, so every power-of-two prefix puts one point in each elementary
+// interval (a pixel's jitter, a light's point, a BSDF direction: all stratified), and pairs are
+// independent of each other (Burley's padding by independent shuffles). rand() is the first coordinate
+// of a pair of its own. Sample k of pixel p still depends only on (seed, p, k).
+// Dimension layout (the order of the calls): pair 0 the pixel jitter; then per bounce, nee: light
+// choice, emitter pick, point on the emitter (2D), BSDF direction (2D), BSDF lobe, roulette; bsdf and
+// naive: BSDF direction, lobe, roulette; bdpt's light subpath starts at pair 2^31 (its second stream).
+
+// Laine & Karras 2011 style permutation, with Burley's constants: flips each bit of x depending on
+// the bits below it only.
+uint laineKarrasPermutation(uint x, uint seed) {
+    x += seed;
+    x ^= x * 0x6c50b47cu;
+    x ^= x * 0xb82f1e52u;
+    x ^= x * 0xc7afe638u;
+    x ^= x * 0x8d22f6e6u;
+    return x;
+}
+
+// Owen scrambling of the binary digits of x read from the top (Burley 2020, nested_uniform_scramble):
+// each digit flips depending on the digits above it.
+uint nestedUniformScramble(uint x, uint seed) {
+    return bitfieldReverse(laineKarrasPermutation(bitfieldReverse(x), seed));
+}
+
+// The second Sobol dimension (primitive polynomial x + 1): its generator matrix applied to index i.
+uint sobolSecond(uint i) {
+    uint r = 0u;
+    for (uint v = 1u << 31; i != 0u; i >>= 1u, v ^= v >> 1u)
+        if ((i & 1u) != 0u) r ^= v;
+    return r;
+}
+
+vec2 rand2() {
+    uvec3 h = pcg4d(uvec4(rngKey.x, rngKey.z, rngKey.w, 0x5eed50b1u)).xyz;
+    ++rngKey.w;
+    uint i = nestedUniformScramble(rngKey.y, h.x);  // shuffle the pixel's samples, per pair
+    // The first dimension is the radical inverse, bitfieldReverse(i): scrambled, reverse(LK(i)).
+    uint x = bitfieldReverse(laineKarrasPermutation(i, h.y));
+    uint y = nestedUniformScramble(sobolSecond(i), h.z);
+    return vec2(uvec2(x, y) >> 8u) * (1.0 / 16777216.0);
+}
+
+float rand() { return rand2().x; }
+#else
+// ---- independent numbers (`--sampler independent`): the plain Monte Carlo of the textbooks ----
 // Uniform in [0, 1): the hash's top 24 bits, so the float is exact.
 float rand() {
     uint word = pcg4d(rngKey).x;
@@ -50,3 +106,4 @@ vec2 rand2() {
     float x = rand();
     return vec2(x, rand());
 }
+#endif

@@ -1,15 +1,26 @@
-// Test-only pass: fragment (x, y) writes the first eight numbers of the random stream of sample uSample
-// at pixel (x, y) (common/rng.glsl), for tests/render/rng_test.cpp.
+// Test-only pass for tests/render/rng_test.cpp. Mode 0: fragment (x, y) writes the first eight numbers of
+// the random stream of sample uSample at pixel (x, y). Mode 1: fragment i (row by row) writes the first
+// two 2D points (dimension pairs 0 and 1) of sample i at pixel uPixel, to see one pixel's samples.
 #include "common/rng.glsl"
 
 uniform uint uSeed;
 uniform uint uSample;
+uniform int uMode;
+uniform ivec2 uPixel;
+uniform int uWidth;
 
 layout(location = 0) out vec4 out0;
 layout(location = 1) out vec4 out1;
 
 void main() {
-    rngInit(uSeed, uvec2(gl_FragCoord.xy), uSample);
-    out0 = vec4(rand(), rand(), rand(), rand());
-    out1 = vec4(rand(), rand(), rand(), rand());
+    if (uMode == 0) {
+        rngInit(uSeed, uvec2(gl_FragCoord.xy), uSample);
+        out0 = vec4(rand(), rand(), rand(), rand());
+        out1 = vec4(rand(), rand(), rand(), rand());
+    } else {
+        ivec2 f = ivec2(gl_FragCoord.xy);
+        rngInit(uSeed, uvec2(uPixel), uint(f.y * uWidth + f.x));
+        out0 = vec4(rand2(), rand2());
+        out1 = vec4(0.0);
+    }
 }

@@ -49,6 +49,8 @@ const char* kBenchUsage =
     "  --runs R              timed runs after the warm-up (default 5; 3 with --suite)\n"
     "  --max-depth D         bounces (default 5)\n"
     "  --integrator NAME     naive | bsdf | nee | bdpt (default nee)\n"
+    "  --sampler NAME        sobol (default; independent with --native, the native reference's) |\n"
+    "                        independent\n"
     "  --bvh-threads N       threads that build the BVH (default: every CPU); the tree is the same\n"
     "  --samples-per-pass N  samples per pixel per draw in the timed runs, 1 to 16 (default 8); the\n"
     "                        warm-up, whose first pass is the first frame, draws 1\n"
@@ -141,11 +143,11 @@ int benchCommand(const std::vector<std::string>& argv) {
     // Time to first frame counts from here: argument parsing is negligible, and everything a user waits
     // for before the first pixel (context, load, BVH, upload, compile, JIT, first pass) comes after.
     auto start = bench::Clock::now();
-    Args args(
-        argv,
-        {"--size", "--spp", "--runs", "--max-depth", "--integrator", "--json", "--max-triangles", "--scenes",
-         "--bvh-threads", "--samples-per-pass", "--shader-dir", "--study", "--budget", "--reference-spp"},
-        {"-h", "--help", "--suite", "--with-bunny", "--native"});
+    Args args(argv,
+              {"--size", "--spp", "--runs", "--max-depth", "--integrator", "--sampler", "--json",
+               "--max-triangles", "--scenes", "--bvh-threads", "--samples-per-pass", "--shader-dir",
+               "--study", "--budget", "--reference-spp"},
+              {"-h", "--help", "--suite", "--with-bunny", "--native"});
     if (args.has("-h") || args.has("--help")) {
         std::fputs(kBenchUsage, stdout);
         return 0;
@@ -175,6 +177,17 @@ int benchCommand(const std::vector<std::string>& argv) {
     settings.runs = args.integer("--runs", 1, 1000).value_or(suite ? 3 : 5);
     settings.render.maxDepth = args.integer("--max-depth", 0, 1000).value_or(5);
     settings.render.integrator = parseIntegrator(args.text("--integrator").value_or("nee"));
+    // The native reference draws independent numbers (src/native): with --native the shader does too,
+    // unless the user asked for another sampler, which would compare two algorithms.
+    if (auto s = args.text("--sampler")) {
+        settings.render.sampler = parseSampler(*s);
+        if (args.has("--native") && settings.render.sampler != Sampler::Independent)
+            throw Error(std::string("--native: the native reference implements only the independent sampler, "
+                                    "not ") +
+                        samplerName(settings.render.sampler) + "; a ratio would compare two algorithms");
+    } else if (args.has("--native")) {
+        settings.render.sampler = Sampler::Independent;
+    }
     if (args.has("--native") && settings.render.integrator != Integrator::Nee)
         throw Error(std::string("--native: the native reference implements only the nee integrator, not ") +
                     integratorName(settings.render.integrator) + "; a ratio would compare two algorithms");

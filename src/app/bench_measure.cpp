@@ -210,8 +210,11 @@ void printHeader(const BenchEnvironment& environment, const BenchSettings& setti
     std::printf("renderer         %s\n", environment.renderer.c_str());
     std::printf("LP_NUM_THREADS   %s\n", environment.threadsText().c_str());
     std::printf("shader cache     %s\n", environment.cacheText().c_str());
-    std::printf("settings         %dx%d, %d spp per run, max depth %d, %s, %d timed runs after 1 warm-up\n",
-                r.width, r.height, settings.spp, r.maxDepth, integratorName(r.integrator), settings.runs);
+    std::printf(
+        "settings         %dx%d, %d spp per run, max depth %d, %s, %s sampler, %d timed runs after 1 "
+        "warm-up\n",
+        r.width, r.height, settings.spp, r.maxDepth, integratorName(r.integrator), samplerName(r.sampler),
+        settings.runs);
 }
 
 void printMeasurement(const SceneMeasurement& m, double firstFrameSeconds,
@@ -283,6 +286,7 @@ nlohmann::json settingsJson(const BenchSettings& settings) {
             {"runs", settings.runs},
             {"max_depth", r.maxDepth},
             {"integrator", integratorName(r.integrator)},
+            {"sampler", samplerName(r.sampler)},
             {"samples_per_pass", r.samplesPerPass}};
 }
 

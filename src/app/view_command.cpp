@@ -29,6 +29,7 @@ const char* kViewUsage =
     "  --max-depth D         bounces (default: the scene file's, else 5)\n"
     "  --seed S              random seed (default: the scene file's, else 0)\n"
     "  --integrator NAME     naive | bsdf | nee | bdpt (default: the scene file's, else nee)\n"
+    "  --sampler NAME        sobol (default) | independent: where the random numbers come from\n"
     "  --view NAME           radiance | depth | normal | albedo | bounces | nodes | triangles | cost\n"
     "  --split NAME          split view: the right half uses integrator NAME\n"
     "  --split-depth D       max depth of the right half (default: --max-depth)\n"
@@ -61,27 +62,11 @@ void checkImagePath(const std::string& flag, const std::string& path, bool pngOn
 }  // namespace
 
 int viewCommand(const std::vector<std::string>& argv) {
-    Args args(argv,
-              {"--size",
-               "--spp",
-               "--max-depth",
-               "--seed",
-               "--integrator",
-               "--view",
-               "--split",
-               "--split-depth",
-               "--eye",
-               "--target",
-               "--up",
-               "--fov",
-               "--exposure",
-               "--tonemap",
-               "--scale",
-               "--shader-dir",
-               "--frames",
-               "--screenshot",
-               "--screenshot-window",
-               "--denoise"},
+    Args args(argv, {"--size",    "--spp",        "--max-depth", "--seed",        "--integrator",
+                     "--sampler", "--view",       "--split",     "--split-depth", "--eye",
+                     "--target",  "--up",         "--fov",       "--exposure",    "--tonemap",
+                     "--scale",   "--shader-dir", "--frames",    "--screenshot",  "--screenshot-window",
+                     "--denoise"},
               {"--no-ui", "-h", "--help"});
     if (args.has("-h") || args.has("--help")) {
         std::fputs(kViewUsage, stdout);
@@ -109,6 +94,7 @@ int viewCommand(const std::vector<std::string>& argv) {
     c.render.maxDepth = args.integer("--max-depth", 0, 1000).value_or(d.maxDepth.value_or(5));
     c.render.seed = uint32_t(args.integer("--seed", 0, 2147483647).value_or(int(d.seed.value_or(0))));
     c.render.integrator = parseIntegrator(args.text("--integrator").value_or(d.integrator.value_or("nee")));
+    if (auto s = args.text("--sampler")) c.render.sampler = parseSampler(*s);
     if (auto v = args.text("--view")) c.render.view = parseView(*v);
     if (auto s = args.text("--split")) {
         c.split = true;

@@ -79,6 +79,7 @@ std::unique_ptr<Program> Renderer::compile(Integrator integrator, const char* fr
     defines.emplace_back("INTEGRATOR_FILE",
                          std::string("\"integrators/") + integratorName(integrator) + ".glsl\"");
     defines.emplace_back("DEBUG_VIEW", std::to_string(int(settings_.view)));
+    defines.emplace_back("SAMPLER", settings_.sampler == Sampler::Sobol ? "1" : "0");
     defines.emplace_back("GUIDES", settings_.guides ? "1" : "0");
     defines.emplace_back("MATERIAL_TYPES", std::to_string(materialTypes_));
     defines.emplace_back("ENVIRONMENT_MAP", environmentTextures_ ? "1" : "0");
@@ -171,7 +172,8 @@ void Renderer::configure(const RenderSettings& settings, const Camera& camera) {
     bool splitChanged = settings.split.has_value() != settings_.split.has_value() ||
                         (settings.split && settings.split->integrator != settings_.split->integrator);
     bool recompile = !program_ || settings.integrator != settings_.integrator ||
-                     settings.view != settings_.view || settings.guides != settings_.guides || splitChanged;
+                     settings.view != settings_.view || settings.guides != settings_.guides ||
+                     settings.sampler != settings_.sampler || splitChanged;
     if (recompile) {
         // Compile both programs before changing anything, so that a compile error leaves the renderer
         // exactly as it was.

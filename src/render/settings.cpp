@@ -24,6 +24,16 @@ const char* integratorName(Integrator integrator) {
     return "?";
 }
 
+Sampler parseSampler(const std::string& name) {
+    for (Sampler s : kAllSamplers)
+        if (name == samplerName(s)) return s;
+    throw Error("unknown sampler '" + name + "' (choose sobol or independent)");
+}
+
+const char* samplerName(Sampler sampler) {
+    return sampler == Sampler::Sobol ? "sobol" : "independent";
+}
+
 View parseView(const std::string& name) {
     for (View v : kAllViews)
         if (name == viewName(v)) return v;

@@ -14,6 +14,13 @@ constexpr Integrator kAllIntegrators[] = {Integrator::Naive, Integrator::Bsdf, I
 Integrator parseIntegrator(const std::string& name);  // throws fp::Error listing the choices
 const char* integratorName(Integrator integrator);
 
+// Where the random numbers come from (glsl/common/rng.glsl): Owen-scrambled Sobol points, stratified per
+// pixel (Burley 2020), or independent uniform numbers, the textbook's plain Monte Carlo.
+enum class Sampler { Independent, Sobol };
+constexpr Sampler kAllSamplers[] = {Sampler::Independent, Sampler::Sobol};
+Sampler parseSampler(const std::string& name);  // throws fp::Error listing the choices
+const char* samplerName(Sampler sampler);
+
 // What each pixel shows: the rendered radiance, one property of the first hit, or a cost the path
 // tracer pays there (glsl/passes/debug_views.glsl).
 // Cost: per path, (BVH nodes visited, triangles tested, surfaces shaded) summed over all its rays, in RGB.
@@ -50,6 +57,7 @@ struct RenderSettings {
     int maxDepth = 5;
     uint32_t seed = 0;
     Integrator integrator = Integrator::Nee;
+    Sampler sampler = Sampler::Sobol;
     View view = View::Radiance;
     // Samples each pixel takes in one draw call, at most kMaxSamplesPerPass: llvmpipe stops a shader loop
     // after a fixed number of iterations (measured: 256 samples of the 32x32 Cornell box in one pass

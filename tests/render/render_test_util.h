@@ -286,9 +286,14 @@ class Rgba8Target {
     GLuint texture_ = 0, framebuffer_ = 0;
 };
 
+// Independent numbers by default: the tolerances of these tests come from each pixel's sample variance,
+// which estimates the variance of its mean only when the samples are independent (stratified samples'
+// variance overstates it, and the tests would lose their edge). The Sobol sampler has tests of its own.
 inline Accumulation renderScene(Renderer& renderer, const Camera& camera, Integrator integrator, int size,
-                                int spp, int maxDepth, uint32_t seed = 1) {
+                                int spp, int maxDepth, uint32_t seed = 1,
+                                Sampler sampler = Sampler::Independent) {
     RenderSettings s;
+    s.sampler = sampler;
     s.width = s.height = size;
     s.integrator = integrator;
     s.maxDepth = maxDepth;

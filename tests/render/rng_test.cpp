@@ -5,6 +5,7 @@
 // or samples that own them are correlated instead of independent.
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <cstdlib>
 #include <string>
@@ -23,8 +24,8 @@ constexpr int kSize = 128;         // pixels per side
 constexpr int kNumbers = 8;        // numbers read per stream
 constexpr uint32_t kSamples = 16;  // streams per pixel
 
-// The first kNumbers numbers of every stream of sample `sample`, as the 24-bit integers rand() scales.
-std::vector<uint32_t> streams(Program& program, uint32_t seed, uint32_t sample) {
+// One draw of the probe over a width x height viewport; returns its two attachments, rows bottom first.
+std::array<std::vector<glm::vec4>, 2> drawProbe(Program& program, int width, int height) {
     GLuint textures[2], framebuffer, vertexArray;
     glGenTextures(2, textures);
     glGenFramebuffers(1, &framebuffer);
@@ -32,7 +33,7 @@ std::vector<uint32_t> streams(Program& program, uint32_t seed, uint32_t sample) 
     glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
     for (int i = 0; i < 2; ++i) {
         glBindTexture(GL_TEXTURE_2D, textures[i]);
-        glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA32F, kSize, kSize, 0, GL_RGBA, GL_FLOAT, nullptr);
+        glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA32F, width, height, 0, GL_RGBA, GL_FLOAT, nullptr);
         glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
         glFramebufferTexture2D(GL_FRAMEBUFFER, GLenum(GL_COLOR_ATTACHMENT0 + i), GL_TEXTURE_2D, textures[i],
                                0);
@@ -40,38 +41,64 @@ std::vector<uint32_t> streams(Program& program, uint32_t seed, uint32_t sample) 
     const GLenum buffers[2] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
     glDrawBuffers(2, buffers);
     program.use();
-    program.set("uSeed", seed);
-    program.set("uSample", sample);
-    glViewport(0, 0, kSize, kSize);
+    glViewport(0, 0, width, height);
     glDisable(GL_BLEND);
     glBindVertexArray(vertexArray);
     glDrawArrays(GL_TRIANGLES, 0, 3);
-    std::vector<glm::vec4> halves[2];
+    std::array<std::vector<glm::vec4>, 2> out;
     for (int i = 0; i < 2; ++i) {
-        halves[i].resize(size_t(kSize) * kSize);
+        out[size_t(i)].resize(size_t(width) * size_t(height));
         glReadBuffer(GLenum(GL_COLOR_ATTACHMENT0 + i));
-        glReadPixels(0, 0, kSize, kSize, GL_RGBA, GL_FLOAT, halves[i].data());
+        glReadPixels(0, 0, width, height, GL_RGBA, GL_FLOAT, out[size_t(i)].data());
     }
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     glDeleteVertexArrays(1, &vertexArray);
     glDeleteFramebuffers(1, &framebuffer);
     glDeleteTextures(2, textures);
     if (glGetError() != GL_NO_ERROR) throw Error("random-stream probe: GL error");
+    return out;
+}
+
+// The probe compiled for one sampler (0 independent, 1 Sobol: glsl/common/rng.glsl). FP_RNG_TEST_SHADERS
+// may name a glsl/ directory to test instead of the built-in copy (to check that these tests fail on a
+// generator with overlapping streams, or on a broken scramble).
+Program probeProgram(int sampler) {
+    const char* directory = std::getenv("FP_RNG_TEST_SHADERS");
+    return Program(ShaderLibrary(directory ? directory : ""), "passes/fullscreen.vert.glsl",
+                   "tests/rng_probe.frag.glsl", {{"SAMPLER", std::to_string(sampler)}});
+}
+
+// The first kNumbers numbers of every stream of sample `sample`, as the 24-bit integers rand() scales.
+std::vector<uint32_t> streams(Program& program, uint32_t seed, uint32_t sample) {
+    program.use();
+    program.set("uMode", 0);
+    program.set("uSeed", seed);
+    program.set("uSample", sample);
+    std::array<std::vector<glm::vec4>, 2> halves = drawProbe(program, kSize, kSize);
     std::vector<uint32_t> numbers;
     numbers.reserve(halves[0].size() * kNumbers);
     for (size_t p = 0; p < halves[0].size(); ++p)
         for (int i = 0; i < kNumbers; ++i)
-            numbers.push_back(uint32_t(halves[i / 4][p][i % 4] * 16777216.0f));  // exact: 24-bit values
+            numbers.push_back(uint32_t(halves[size_t(i / 4)][p][i % 4] * 16777216.0f));  // exact: 24 bits
     return numbers;
+}
+
+// Samples 0 .. count-1 of one pixel: the 2D points of dimension pairs 0 (xy) and 1 (zw).
+std::vector<glm::vec4> pixelSamples(Program& program, uint32_t seed, glm::uvec2 pixel, int count) {
+    const int width = 64;
+    program.use();
+    program.set("uMode", 1);
+    program.set("uSeed", seed);
+    program.set("uPixel", glm::ivec2(pixel));
+    program.set("uWidth", width);
+    std::vector<glm::vec4> points = drawProbe(program, width, (count + width - 1) / width)[0];
+    points.resize(size_t(count));
+    return points;
 }
 
 TEST(RandomStreams, NoTwoStreamsShareNumbers) {
     ensureGlContext();
-    // FP_RNG_TEST_SHADERS may name a glsl/ directory to test instead of the built-in copy (to check
-    // that this test fails on a generator with overlapping streams).
-    const char* directory = std::getenv("FP_RNG_TEST_SHADERS");
-    Program program(ShaderLibrary(directory ? directory : ""), "passes/fullscreen.vert.glsl",
-                    "tests/rng_probe.frag.glsl", {});
+    Program program = probeProgram(0);
     // Every pair of consecutive numbers, 48 bits, and where it was seen. 262144 streams of 7 pairs among
     // 2^48 values: independent streams repeat a pair by chance with probability below 1 %, and the
     // seed is fixed, so this passes or fails for good. Streams that overlap repeat many.
@@ -94,6 +121,63 @@ TEST(RandomStreams, NoTwoStreamsShareNumbers) {
     std::vector<uint32_t> numbers = streams(program, 7, 0);
     for (uint32_t n : numbers) sum += double(n) / 16777216.0;
     EXPECT_NEAR(sum / double(numbers.size()), 0.5, 5.0 * 0.2887 / std::sqrt(double(numbers.size())));
+}
+
+// Owen-scrambled Sobol points (Burley 2020): every power-of-two prefix of a pixel's samples in one
+// dimension pair is a (0, m, 2)-net, one point in each elementary interval [i / 2^a, (i + 1) / 2^a) x
+// [j / 2^b, (j + 1) / 2^b) with a + b = m. Catches a wrong generator matrix, a scramble that is not
+// nested (flipping a digit by anything but the digits above it), or an index shuffle that is not.
+TEST(SobolSampler, EveryPowerOfTwoPrefixIsStratified) {
+    ensureGlContext();
+    Program program = probeProgram(1);
+    for (uint32_t seed : {0u, 7u})
+        for (glm::uvec2 pixel : {glm::uvec2(0, 0), glm::uvec2(5, 300)}) {
+            std::vector<glm::vec4> points = pixelSamples(program, seed, pixel, 1024);
+            for (int pair = 0; pair < 2; ++pair)
+                for (int m = 0; m <= 10; ++m)
+                    for (int a = 0; a <= m; ++a) {
+                        int b = m - a;
+                        std::vector<int> cells(size_t(1) << m, 0);
+                        for (int k = 0; k < (1 << m); ++k) {
+                            glm::vec2 p = pair == 0 ? glm::vec2(points[size_t(k)])
+                                                    : glm::vec2(points[size_t(k)].z, points[size_t(k)].w);
+                            int i = int(p.x * float(1 << a)), j = int(p.y * float(1 << b));
+                            ++cells[size_t(i) << b | size_t(j)];
+                        }
+                        for (int c : cells)
+                            ASSERT_EQ(c, 1) << "seed " << seed << ", pixel " << pixel.x << "," << pixel.y
+                                            << ", pair " << pair << ": " << (1 << m)
+                                            << " points in cells of 2^-" << a << " x 2^-" << b;
+                    }
+        }
+}
+
+// The scramble is a pure function of (seed, pixel, sample, pair): the same numbers twice, other numbers
+// for another seed, another pixel or another pair, and no visible correlation between pairs (Burley's
+// padding: each pair shuffles the samples with its own hash).
+TEST(SobolSampler, ScramblesAreDeterministicAndDifferBySeedPixelAndPair) {
+    ensureGlContext();
+    Program program = probeProgram(1);
+    const int n = 256;
+    std::vector<glm::vec4> a = pixelSamples(program, 3, {9, 4}, n),
+                           again = pixelSamples(program, 3, {9, 4}, n);
+    std::vector<glm::vec4> otherSeed = pixelSamples(program, 4, {9, 4}, n),
+                           otherPixel = pixelSamples(program, 3, {10, 4}, n);
+    int sameSeed = 0, sameOtherSeed = 0, sameOtherPixel = 0;
+    double sx = 0, sy = 0, sxx = 0, syy = 0, sxy = 0;
+    for (int k = 0; k < n; ++k) {
+        sameSeed += a[size_t(k)] == again[size_t(k)];
+        sameOtherSeed += a[size_t(k)].x == otherSeed[size_t(k)].x;
+        sameOtherPixel += a[size_t(k)].x == otherPixel[size_t(k)].x;
+        double x = a[size_t(k)].x, y = a[size_t(k)].z;  // the first coordinates of pairs 0 and 1
+        sx += x, sy += y, sxx += x * x, syy += y * y, sxy += x * y;
+    }
+    EXPECT_EQ(sameSeed, n);
+    EXPECT_LT(sameOtherSeed, 3);
+    EXPECT_LT(sameOtherPixel, 3);
+    double r =
+        (sxy / n - sx / n * sy / n) / std::sqrt((sxx / n - sx * sx / n / n) * (syy / n - sy * sy / n / n));
+    EXPECT_LT(std::abs(r), 0.25) << "pairs 0 and 1 correlated (independent: standard deviation 1/16)";
 }
 
 }  // namespace
