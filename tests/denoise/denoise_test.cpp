@@ -180,9 +180,14 @@ double rmseWhere(const Image& a, const Image& b, const std::vector<bool>& keep) 
 // reduce the error clearly.
 class DenoiseCornell : public CornellBoxSuite {};
 
+// Independent numbers: the filters are judged on the noise of plain Monte Carlo. With the Sobol sampler
+// the 16-sample input is already far cleaner (measured: RMSE 0.0249 against 0.1077, on surfaces alone
+// 0.0120 against 0.0159) and the bilateral filter buys less there (0.86 of the raw error on surfaces
+// against 0.71 here).
 TEST_F(DenoiseCornell, FiltersBringSixteenSamplesCloserToConverged) {
     const int size = 48;
     RenderSettings s = guided(size, Integrator::Nee, 5);
+    s.sampler = Sampler::Independent;
     s.samplesPerPass = RenderSettings::kMaxSamplesPerPass;
     s.seed = 1000;
     renderer_->configure(s, *scene_->camera);
