@@ -36,13 +36,14 @@ def main():
         subprocess.run(command, check=True)
         return read_pfm(path)[2]
 
-    # The reference: two independent halves (different seeds), so that its own error can be estimated.
+    # The reference: two independent halves (Sobol with different seeds: independent randomisations), so
+    # that its own error can be estimated.
     half = args.reference_spp // 2
-    a, b = render("independent", half, 1000), render("independent", half, 1001)
+    a, b = render("sobol", half, 1000), render("sobol", half, 1001)
     reference = [(x + y) / 2 for x, y in zip(a, b)]
     # Var(mean of halves) = E[(a - b)^2] / 4 per pixel.
     reference_mse = sum((x - y) ** 2 for x, y in zip(a, b)) / len(a) / 4.0
-    print("reference: %d spp (independent), its own RMSE about %.5f" % (args.reference_spp, math.sqrt(reference_mse)))
+    print("reference: %d spp (sobol), its own RMSE about %.5f" % (args.reference_spp, math.sqrt(reference_mse)))
     counts = [int(c) for c in args.spp.split(",")]
     for sampler in ("independent", "sobol"):
         rmse = []
@@ -51,7 +52,7 @@ def main():
             for seed in range(1, args.seeds + 1):
                 image = render(sampler, spp, seed)
                 mse += sum((x - r) ** 2 for x, r in zip(image, reference)) / len(image) / args.seeds
-            rmse.append(math.sqrt(max(mse - reference_mse, 0.0)))
+            rmse.append(math.sqrt(max(mse - reference_mse, 1e-12)))
         slope = math.log(rmse[-1] / rmse[0]) / math.log(counts[-1] / counts[0])
         print("%-12s %s   slope %.3f" % (sampler, "  ".join("%d spp %.5f" % (c, e) for c, e in zip(counts, rmse)), slope))
 

@@ -68,6 +68,28 @@ bool sameSide(Surface s, vec3 local, vec3 world) { return (local.z > 0.0) == (do
 // A ray leaving the surface, nudged off it to the side it leaves on.
 Ray spawnRay(Surface s, vec3 dir) { return Ray(offsetToward(s.position, s.geometricNormal, s.offset, dir), dir); }
 
+// --clamp-indirect X (src/render/settings.h): light that reached the first surface the camera sees after
+// bouncing off another one (paths of two bounces or more) is summed apart, and each sample's sum is
+// scaled down to a largest channel of at most X; direct light is never clamped. Biased (energy is
+// lost), off by default (uClampIndirect 0): it trades rare bright fireflies through glass and glossy
+// lobes for a darker image, as Cycles' "Clamp Indirect" does.
+uniform float uClampIndirect;
+vec3 gIndirect = vec3(0.0);
+
+// Adds light c that reached the camera after `bounces` bounces.
+void addLight(inout vec3 L, vec3 c, int bounces) {
+    if (bounces >= 2) gIndirect += c;
+    else L += c;
+}
+
+// The path's indirect light, clamped; restarts the sum for the next path.
+vec3 takeIndirect() {
+    vec3 c = gIndirect;
+    gIndirect = vec3(0.0);
+    float m = max(c.r, max(c.g, c.b));
+    return uClampIndirect > 0.0 && m > uClampIndirect ? c * (uClampIndirect / m) : c;
+}
+
 // Russian roulette (as in pbrt-v4 PathIntegrator::Li): after a few bounces, stop a path with probability
 // 1 - max(beta) and reweight the survivors, which keeps the estimate unbiased.
 int gBounces = 0;  // bounces the current path survived, for the bounces view

@@ -8,12 +8,12 @@ vec3 radiance(Ray ray) {
     for (int depth = 0;; ++depth) {
         Hit hit;
         if (!traceClosest(ray, hit)) {
-            L += beta * environmentRadiance(ray.dir);
+            addLight(L, beta * environmentRadiance(ray.dir), depth);
             break;
         }
         Surface s = surfaceAt(ray, hit);
         applyDispersion(s, beta);
-        L += beta * emittedRadiance(s);
+        addLight(L, beta * emittedRadiance(s), depth);
         if (depth == uMaxDepth) break;
         // The view direction below the shading normal: f = 0, as in the other integrators.
         if (dot(-ray.dir, s.shadingNormal) <= 0.0) break;
@@ -32,5 +32,5 @@ vec3 radiance(Ray ray) {
         if (!survivesRoulette(beta, depth)) break;
         ray = spawnRay(s, dir);
     }
-    return L;
+    return L + takeIndirect();
 }

@@ -11,13 +11,14 @@ vec3 radiance(Ray ray) {
         Hit hit;
         if (!traceClosest(ray, hit)) {
             vec3 Le = environmentRadiance(ray.dir);
-            L += beta * Le * (fullWeight ? 1.0 : powerHeuristic(lastPdf, environmentPdf(ray.dir)));
+            addLight(L, beta * Le * (fullWeight ? 1.0 : powerHeuristic(lastPdf, environmentPdf(ray.dir))), depth);
             break;
         }
         Surface s = surfaceAt(ray, hit);
         applyDispersion(s, beta);
         vec3 Le = emittedRadiance(s);
-        if (Le != vec3(0.0)) L += beta * Le * (fullWeight ? 1.0 : powerHeuristic(lastPdf, lightPdf(ray, hit)));
+        if (Le != vec3(0.0))
+            addLight(L, beta * Le * (fullWeight ? 1.0 : powerHeuristic(lastPdf, lightPdf(ray, hit))), depth);
         if (depth == uMaxDepth) break;
 
         vec3 wo = toLocal(s, -ray.dir);
@@ -28,7 +29,8 @@ vec3 radiance(Ray ray) {
             if (ls.pdf > 0.0 && sameSide(s, wi, ls.dir)) {
                 vec3 f = bsdfEval(s.material, wo, wi, s.eta);
                 if (f != vec3(0.0) && lightVisible(s, ls))
-                    L += beta * f * ls.radiance * powerHeuristic(ls.pdf, bsdfPdf(s.material, wo, wi, s.eta)) / ls.pdf;
+                    addLight(L, beta * f * ls.radiance * powerHeuristic(ls.pdf, bsdfPdf(s.material, wo, wi, s.eta)) / ls.pdf,
+                             depth + 1);
             }
         }
 
@@ -42,5 +44,5 @@ vec3 radiance(Ray ray) {
         if (!survivesRoulette(beta, depth)) break;
         ray = spawnRay(s, dir);
     }
-    return L;
+    return L + takeIndirect();
 }

@@ -46,6 +46,8 @@ const char* kRenderUsage =
     "  --seed S              random seed; the same seed gives the same image bit for bit (default 0)\n"
     "  --integrator NAME     naive | bsdf | nee | bdpt (default nee: light sampling with MIS; bdpt:\n"
     "                        bidirectional path tracing with MIS)\n"
+    "  --clamp-indirect X    scale each sample's indirect light (two bounces or more) down to at most X\n"
+    "                        per channel: fewer fireflies, but BIASED (darker); nee, bsdf, naive; off\n"
     "  --sampler NAME        sobol (default: Owen-scrambled Sobol points, stratified in every pixel) |\n"
     "                        independent (independent uniform numbers, the textbook's Monte Carlo)\n"
     "  --eye X,Y,Z --target X,Y,Z --up X,Y,Z --fov DEG\n"
@@ -110,30 +112,30 @@ void checkOutputPath(const std::string& path) {
 }  // namespace
 
 int renderCommand(const std::vector<std::string>& argv) {
-    Args args(argv,
-              {"-o",
-               "--output",
-               "--size",
-               "--spp",
-               "--max-depth",
-               "--seed",
-               "--integrator",
-               "--sampler",
-               "--eye",
-               "--target",
-               "--up",
-               "--fov",
-               "--view",
-               "--exposure",
-               "--tonemap",
-               "--samples-per-pass",
-               "--shader-dir",
-               "--backend",
-               "--sample-offset",
-               "--time-budget",
-               "--resume",
-               "--denoise",
-               "--denoised-out"},
+    Args args(argv, {"-o",
+                     "--output",
+                     "--size",
+                     "--spp",
+                     "--max-depth",
+                     "--seed",
+                     "--integrator",
+                     "--sampler",
+                     "--clamp-indirect",
+                     "--eye",
+                     "--target",
+                     "--up",
+                     "--fov",
+                     "--view",
+                     "--exposure",
+                     "--tonemap",
+                     "--samples-per-pass",
+                     "--shader-dir",
+                     "--backend",
+                     "--sample-offset",
+                     "--time-budget",
+                     "--resume",
+                     "--denoise",
+                     "--denoised-out"},
               {"--stats", "--quiet", "-h", "--help"});
     if (args.has("-h") || args.has("--help")) {
         std::fputs(kRenderUsage, stdout);
@@ -182,6 +184,7 @@ int renderCommand(const std::vector<std::string>& argv) {
     settings.seed = uint32_t(args.integer("--seed", 0, 2147483647).value_or(int(d.seed.value_or(0))));
     settings.integrator = parseIntegrator(args.text("--integrator").value_or(d.integrator.value_or("nee")));
     if (auto s = args.text("--sampler")) settings.sampler = parseSampler(*s);
+    settings.clampIndirect = args.number("--clamp-indirect").value_or(0.0f);
     if (auto v = args.text("--view")) settings.view = parseView(*v);
     settings.samplesPerPass =
         args.integer("--samples-per-pass", 1, RenderSettings::kMaxSamplesPerPass).value_or(1);

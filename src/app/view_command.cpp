@@ -30,6 +30,7 @@ const char* kViewUsage =
     "  --seed S              random seed (default: the scene file's, else 0)\n"
     "  --integrator NAME     naive | bsdf | nee | bdpt (default: the scene file's, else nee)\n"
     "  --sampler NAME        sobol (default) | independent: where the random numbers come from\n"
+    "  --clamp-indirect X    clamp each sample's indirect light to X per channel (biased; off)\n"
     "  --view NAME           radiance | depth | normal | albedo | bounces | nodes | triangles | cost\n"
     "  --split NAME          split view: the right half uses integrator NAME\n"
     "  --split-depth D       max depth of the right half (default: --max-depth)\n"
@@ -62,11 +63,29 @@ void checkImagePath(const std::string& flag, const std::string& path, bool pngOn
 }  // namespace
 
 int viewCommand(const std::vector<std::string>& argv) {
-    Args args(argv, {"--size",    "--spp",        "--max-depth", "--seed",        "--integrator",
-                     "--sampler", "--view",       "--split",     "--split-depth", "--eye",
-                     "--target",  "--up",         "--fov",       "--exposure",    "--tonemap",
-                     "--scale",   "--shader-dir", "--frames",    "--screenshot",  "--screenshot-window",
-                     "--denoise"},
+    Args args(argv,
+              {"--size",
+               "--spp",
+               "--max-depth",
+               "--seed",
+               "--integrator",
+               "--sampler",
+               "--clamp-indirect",
+               "--view",
+               "--split",
+               "--split-depth",
+               "--eye",
+               "--target",
+               "--up",
+               "--fov",
+               "--exposure",
+               "--tonemap",
+               "--scale",
+               "--shader-dir",
+               "--frames",
+               "--screenshot",
+               "--screenshot-window",
+               "--denoise"},
               {"--no-ui", "-h", "--help"});
     if (args.has("-h") || args.has("--help")) {
         std::fputs(kViewUsage, stdout);
@@ -95,6 +114,7 @@ int viewCommand(const std::vector<std::string>& argv) {
     c.render.seed = uint32_t(args.integer("--seed", 0, 2147483647).value_or(int(d.seed.value_or(0))));
     c.render.integrator = parseIntegrator(args.text("--integrator").value_or(d.integrator.value_or("nee")));
     if (auto s = args.text("--sampler")) c.render.sampler = parseSampler(*s);
+    c.render.clampIndirect = args.number("--clamp-indirect").value_or(0.0f);
     if (auto v = args.text("--view")) c.render.view = parseView(*v);
     if (auto s = args.text("--split")) {
         c.split = true;

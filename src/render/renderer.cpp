@@ -169,6 +169,11 @@ void Renderer::configure(const RenderSettings& settings, const Camera& camera) {
     if (settings.samplesPerPass < 1 || settings.samplesPerPass > RenderSettings::kMaxSamplesPerPass)
         throw Error("samples per pass must be between 1 and " +
                     std::to_string(RenderSettings::kMaxSamplesPerPass));
+    if (!(settings.clampIndirect >= 0.0f) || !std::isfinite(settings.clampIndirect))
+        throw Error("the indirect clamp must be a finite number, 0 or more (0: no clamp)");
+    if (settings.clampIndirect > 0.0f && (settings.integrator == Integrator::Bdpt ||
+                                          (settings.split && settings.split->integrator == Integrator::Bdpt)))
+        throw Error("the indirect clamp is implemented for nee, bsdf and naive, not for bdpt");
     bool splitChanged = settings.split.has_value() != settings_.split.has_value() ||
                         (settings.split && settings.split->integrator != settings_.split->integrator);
     bool recompile = !program_ || settings.integrator != settings_.integrator ||
@@ -224,6 +229,7 @@ void Renderer::setTraceUniforms(Program& p, int maxDepth) {
     }
     p.set("uMaxDepth", maxDepth);
     p.set("uSeed", settings_.seed);
+    p.set("uClampIndirect", settings_.clampIndirect);
 
     // Camera basis: right and up are scaled so that normalised device coordinates map onto the image plane.
     glm::vec3 forward = glm::normalize(camera_.target - camera_.eye);

@@ -69,6 +69,10 @@ struct RenderSettings {
     // Also accumulate the first-hit guides (normal, depth, albedo) that the denoisers (src/denoise/)
     // need. Off by default: it traces each camera ray once more (about 10% of a Cornell-box path).
     bool guides = false;
+    // Each sample's indirect light (paths of two bounces or more) scaled down to a largest channel of at
+    // most this (glsl/common/surface.glsl, takeIndirect); 0 clamps nothing. Biased: it removes
+    // fireflies by removing energy. nee, bsdf and naive only.
+    float clampIndirect = 0.0f;
 };
 
 }  // namespace fp
