@@ -8,6 +8,7 @@
 # of view, a 1-pixel box filter, the same bounce limit for every kind of bounce, no adaptive sampling, no
 # denoising, no clamping, a fixed thread count.
 #   ARGS: OBJ PFM_OUT WIDTH HEIGHT SPP MAX_DEPTH THREADS SEED EYE(x,y,z) TARGET UP FOV_DEGREES
+# (MAX_DEPTH as fragpath counts it: 0 emitters only, 1 direct light)
 import math
 import struct
 import sys
@@ -120,11 +121,13 @@ scene.cycles.use_denoising = False
 scene.cycles.seed = seed
 scene.cycles.pixel_filter_type = "BOX"
 scene.cycles.filter_width = 1.0
-scene.cycles.max_bounces = depth
-scene.cycles.diffuse_bounces = depth
-scene.cycles.glossy_bounces = depth
-scene.cycles.transmission_bounces = depth
-scene.cycles.transparent_max_bounces = depth
+# Cycles counts bounces after the first: its 0 is fragpath's depth 1 (direct light).
+bounces = max(depth - 1, 0)
+scene.cycles.max_bounces = bounces
+scene.cycles.diffuse_bounces = bounces
+scene.cycles.glossy_bounces = bounces
+scene.cycles.transmission_bounces = bounces
+scene.cycles.transparent_max_bounces = bounces
 scene.cycles.sample_clamp_direct = 0.0
 scene.cycles.sample_clamp_indirect = 0.0
 scene.cycles.caustics_reflective = True
