@@ -72,6 +72,8 @@ struct RenderDefaults {
     std::optional<int> width, height, spp, maxDepth;
     std::optional<uint32_t> seed;
     std::optional<std::string> integrator;
+    std::optional<std::string> sampler;  // "sobol" or "independent"
+    std::optional<float> clampIndirect;  // 0: no clamp (src/render/settings.h)
 };
 
 // Light arriving from infinitely far away, from every direction no surface blocks: a constant colour,

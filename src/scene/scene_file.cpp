@@ -140,7 +140,9 @@ Camera parseCamera(const json& camera, Fields& fields) {
 
 RenderDefaults parseRender(const json& render, Fields& fields) {
     fields.object(render, "render");
-    fields.checkKeys(render, "render.", {"width", "height", "spp", "max_depth", "seed", "integrator"});
+    fields.checkKeys(
+        render, "render.",
+        {"width", "height", "spp", "max_depth", "seed", "integrator", "sampler", "clamp_indirect"});
     constexpr long long kIntMax = std::numeric_limits<int>::max();
     RenderDefaults d;
     if (render.contains("width"))
@@ -159,6 +161,17 @@ RenderDefaults parseRender(const json& render, Fields& fields) {
         if (integrator != "naive" && integrator != "bsdf" && integrator != "nee" && integrator != "bdpt")
             fields.fail("render.integrator must be one of naive, bsdf, nee, bdpt; got '" + integrator + "'");
         d.integrator = integrator;
+    }
+    if (render.contains("sampler")) {
+        std::string sampler = fields.string(render["sampler"], "render.sampler");
+        if (sampler != "sobol" && sampler != "independent")
+            fields.fail("render.sampler must be sobol or independent; got '" + sampler + "'");
+        d.sampler = sampler;
+    }
+    if (render.contains("clamp_indirect")) {
+        float clamp = fields.real(render["clamp_indirect"], "render.clamp_indirect");
+        if (!(clamp >= 0.0f)) fields.fail("render.clamp_indirect must be 0 (off) or more");
+        d.clampIndirect = clamp;
     }
     return d;
 }

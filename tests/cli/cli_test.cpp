@@ -79,6 +79,31 @@ TEST_F(Cli, StatsCountTheImageBuffersOfTheIntegrator) {
         << bdpt.output;
 }
 
+// The sampler and the indirect clamp come from the flags, else the scene file, else the defaults (sobol,
+// no clamp): the scene file's "independent" renders what --sampler independent renders, bit for bit, and
+// not what the default renders. Catches a front end that ignores the scene file's choice.
+TEST_F(Cli, SamplerAndClampFromTheSceneFile) {
+    auto bytes = [](const std::string& file) {
+        std::ifstream in(file, std::ios::binary);
+        return std::string(std::istreambuf_iterator<char>(in), {});
+    };
+    std::string mesh = std::string(FP_SOURCE_DIR) + "/assets/cornell/cornell.obj";
+    std::string camera = R"("camera": {"eye": [278, 273, -800], "target": [278, 273, 0], "fov": 39.3})";
+    std::string plain = write("plain.json", R"({"mesh": ")" + mesh + R"(", )" + camera + "}");
+    std::string chosen =
+        write("chosen.json", R"({"mesh": ")" + mesh + R"(", )" + camera +
+                                 R"(, "render": {"sampler": "independent", "clamp_indirect": 0.5}})");
+    const std::string common = " --size 8x8 --spp 4 -o ";
+    ASSERT_EQ(fragpath("render " + chosen + common + path("chosen.pfm")).exitCode, 0);
+    ASSERT_EQ(fragpath("render " + plain + common + path("flags.pfm") +
+                       " --sampler independent --clamp-indirect 0.5")
+                  .exitCode,
+              0);
+    ASSERT_EQ(fragpath("render " + plain + common + path("default.pfm")).exitCode, 0);
+    EXPECT_EQ(bytes(path("chosen.pfm")), bytes(path("flags.pfm")));
+    EXPECT_NE(bytes(path("chosen.pfm")), bytes(path("default.pfm")));
+}
+
 TEST_F(Cli, CameraFlagsOverrideTheScene) {
     ASSERT_EQ(fragpath("render --size 8x8 --spp 1 -o " + path("a.pfm")).exitCode, 0);
     CliRun r = fragpath("render --size 8x8 --spp 1 --eye 278,273,-800 --target 278,273,0 --fov 10 -o " +

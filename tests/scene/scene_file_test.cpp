@@ -37,7 +37,7 @@ std::string sceneWith(const std::string& body) {
 TEST(SceneFile, CameraAndRenderParsed) {
     SceneDir s(sceneWith(R"("camera": {"eye": [1, 2, 3], "target": [4, 5, 6], "up": [0, 0, 1], "fov": 55.5},
         "render": {"width": 640, "height": 480, "spp": 16, "max_depth": 0, "seed": 4294967295,
-                   "integrator": "bsdf"})"));
+                   "integrator": "bsdf", "sampler": "independent", "clamp_indirect": 4.5})"));
     WarningCapture capture;
     Scene scene = s.load();
     EXPECT_TRUE(capture.messages().empty()) << test::joined(capture);
@@ -54,6 +54,8 @@ TEST(SceneFile, CameraAndRenderParsed) {
     EXPECT_EQ(scene.defaults.maxDepth, 0);
     EXPECT_EQ(scene.defaults.seed, 4294967295u);
     EXPECT_EQ(scene.defaults.integrator, "bsdf");
+    EXPECT_EQ(scene.defaults.sampler, "independent");
+    EXPECT_EQ(scene.defaults.clampIndirect, 4.5f);
 }
 
 TEST(SceneFile, CameraDefaults) {
@@ -195,6 +197,11 @@ TEST(SceneFile, BadRenderSettings) {
     SceneDir(sceneWith(R"("render": {"seed": -1})")).reject("render.seed must be in [0, 4294967295]");
     SceneDir(sceneWith(R"("render": {"seed": 4294967296})")).reject("render.seed must be in");
     SceneDir(sceneWith(R"("render": {"integrator": "path"})")).reject("naive, bsdf, nee, bdpt; got 'path'");
+    SceneDir(sceneWith(R"("render": {"sampler": "halton"})")).reject("sobol or independent; got 'halton'");
+    SceneDir(sceneWith(R"("render": {"clamp_indirect": -1})"))
+        .reject("render.clamp_indirect must be 0 (off) or more");
+    SceneDir(sceneWith(R"("render": {"clamp_indirect": "big"})"))
+        .reject("render.clamp_indirect must be a number");
 }
 
 TEST(SceneFile, ErrorsBeforeMeshWarnings) {
