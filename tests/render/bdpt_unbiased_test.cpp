@@ -20,20 +20,6 @@
 namespace fp::test {
 namespace {
 
-Material diffuseMaterial(float albedo) {
-    Material m;
-    m.diffuse = glm::vec3(albedo);
-    return m;
-}
-
-Material lampMaterial(float radiance) {
-    Material m;
-    m.name = "lamp";
-    m.diffuse = glm::vec3(0.0f);
-    m.emission = glm::vec3(radiance);
-    return m;
-}
-
 Material roughGlass(float roughness, float abbe = 0.0f) {
     Material m;
     m.name = "glass";
@@ -95,7 +81,7 @@ TEST(BdptUnbiased, LampInsideRoughGlassMatchesNee) {
     ensureGlContext();
     Scene scene;
     scene.source = "lamp inside rough glass";
-    scene.materials = {diffuseMaterial(0.6f), roughGlass(0.3f), lampMaterial(30.0f)};
+    scene.materials = {diffuseMaterial(0.6f), roughGlass(0.3f), lampMaterial(glm::vec3(30.0f))};
     appendQuad(scene, {-2, 0, -2}, {-2, 0, 2}, {2, 0, 2}, {2, 0, -2}, 0);
     appendBox(scene, {-0.6f, 1.0f, -0.6f}, {0.6f, 2.0f, 0.6f}, 1);
     appendQuad(scene, {-0.2f, 1.8f, -0.2f}, {0.2f, 1.8f, -0.2f}, {0.2f, 1.8f, 0.2f}, {-0.2f, 1.8f, 0.2f}, 2);
@@ -109,7 +95,7 @@ TEST(BdptUnbiased, FloorInsideRoughGlassMatchesNee) {
     ensureGlContext();
     Scene scene;
     scene.source = "floor inside rough glass";
-    scene.materials = {diffuseMaterial(0.6f), roughGlass(0.3f), lampMaterial(20.0f)};
+    scene.materials = {diffuseMaterial(0.6f), roughGlass(0.3f), lampMaterial(glm::vec3(20.0f))};
     appendBox(scene, {-1.0f, 0.0f, -1.0f}, {1.0f, 0.6f, 1.0f}, 1);
     appendQuad(scene, {-0.8f, 0.2f, -0.8f}, {-0.8f, 0.2f, 0.8f}, {0.8f, 0.2f, 0.8f}, {0.8f, 0.2f, -0.8f}, 0);
     appendQuad(scene, {-0.3f, 2.2f, -0.3f}, {0.3f, 2.2f, -0.3f}, {0.3f, 2.2f, 0.3f}, {-0.3f, 2.2f, 0.3f}, 2);
@@ -132,7 +118,7 @@ TEST(BdptUnbiased, EnvironmentMapAndALampMatchesNee) {
     ensureGlContext();
     Scene scene;
     scene.source = "map and lamp";
-    scene.materials = {diffuseMaterial(0.5f), lampMaterial(8.0f)};
+    scene.materials = {diffuseMaterial(0.5f), lampMaterial(glm::vec3(8.0f))};
     appendQuad(scene, {-2, 0, -2}, {-2, 0, 2}, {2, 0, 2}, {2, 0, -2}, 0);
     appendQuad(scene, {-0.3f, 1.5f, -0.3f}, {0.3f, 1.5f, -0.3f}, {0.3f, 1.5f, 0.3f}, {-0.3f, 1.5f, 0.3f}, 1);
     appendBox(scene, {0.3f, 0.0f, -0.2f}, {0.8f, 0.5f, 0.3f}, 0);
@@ -162,7 +148,7 @@ TEST(BdptUnbiased, SmoothShadedSpheresMatchNee) {
     metal.type = MaterialType::Conductor;
     metal.specular = glm::vec3(0.9f);
     metal.roughness = 0.4f;
-    scene.materials = {diffuseMaterial(0.6f), lampMaterial(10.0f), diffuseMaterial(0.8f), metal};
+    scene.materials = {diffuseMaterial(0.6f), lampMaterial(glm::vec3(10.0f)), diffuseMaterial(0.8f), metal};
     appendQuad(scene, {-2, 0, -2}, {-2, 0, 2}, {2, 0, 2}, {2, 0, -2}, 0);
     appendQuad(scene, {-0.4f, 2.0f, -0.4f}, {0.4f, 2.0f, -0.4f}, {0.4f, 2.0f, 0.4f}, {-0.4f, 2.0f, 0.4f}, 1);
     appendSphere(scene, {-0.55f, 0.5f, 0.0f}, 0.5f, 5, 8, 2, true);
@@ -188,7 +174,7 @@ TEST(BdptUnbiased, SmoothDispersivePrismRainbowMatchesNee) {
     scene.source = "dispersive prism";
     Material black = diffuseMaterial(0.0f);
     Material glass = roughGlass(0.0f, 8.0f);
-    scene.materials = {diffuseMaterial(0.7f), glass, lampMaterial(30.0f), black};
+    scene.materials = {diffuseMaterial(0.7f), glass, lampMaterial(glm::vec3(30.0f)), black};
     appendQuad(scene, {-3, 0, -3}, {-3, 0, 3}, {3, 0, 3}, {3, 0, -3}, 0);
     // The prism: its cross-section the right triangle a b c (the top face a b level with the plate, the
     // face c a tilted 35 degrees, where the light leaves), 3 long along z.
@@ -252,7 +238,7 @@ TEST(BdptUnbiased, SmoothShadedCeilingPanelLightingMatchesNee) {
     ensureGlContext();
     Scene scene;
     scene.source = "smooth-shaded ceiling panel";
-    scene.materials = {diffuseMaterial(0.7f), diffuseMaterial(0.9f), lampMaterial(20.0f)};
+    scene.materials = {diffuseMaterial(0.7f), diffuseMaterial(0.9f), lampMaterial(glm::vec3(20.0f))};
     appendQuad(scene, {-3, 0, -3}, {-3, 0, 3}, {3, 0, 3}, {3, 0, -3}, 0);
     const float height = 1.8f, half = 0.8f;
     auto domeNormal = [](glm::vec3 p) { return glm::normalize(glm::vec3(p.x, -1.0f, p.z)); };

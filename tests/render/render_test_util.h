@@ -153,6 +153,22 @@ inline void expectZScoresOfNoise(const std::vector<float>& z) {
     EXPECT_LT(meanSquare, 2.0) << "differences larger than the noise explains";
 }
 
+// A Lambertian material of grey albedo `albedo`.
+inline Material diffuseMaterial(float albedo) {
+    Material m;
+    m.diffuse = glm::vec3(albedo);
+    return m;
+}
+
+// A black one-sided emitter of radiance `radiance` (its front face emits).
+inline Material lampMaterial(glm::vec3 radiance) {
+    Material m;
+    m.name = "lamp";
+    m.diffuse = glm::vec3(0.0f);
+    m.emission = radiance;
+    return m;
+}
+
 // The closed box [lo, hi] (12 triangles), faces outward: a solid for glass.
 inline void appendBox(Scene& scene, glm::vec3 lo, glm::vec3 hi, uint32_t material) {
     glm::vec3 c[8];

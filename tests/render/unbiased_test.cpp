@@ -10,20 +10,6 @@
 namespace fp::test {
 namespace {
 
-Material diffuse(float albedo) {
-    Material m;
-    m.diffuse = glm::vec3(albedo);
-    return m;
-}
-
-Material emitter(glm::vec3 radiance) {
-    Material m;
-    m.name = "lamp";
-    m.diffuse = glm::vec3(0.0f);
-    m.emission = radiance;
-    return m;
-}
-
 // ---- 1. a lamp close to the surface it faces ----
 
 // A 10 x 10 diffuse floor (albedo 0.5) at y = 0 and a 1 x 1 one-sided lamp `height` above it facing
@@ -31,7 +17,7 @@ Material emitter(glm::vec3 radiance) {
 Scene lampOverFloor(float height) {
     Scene scene;
     scene.source = "lamp over a floor";
-    scene.materials = {diffuse(0.5f), emitter(glm::vec3(4.0f))};
+    scene.materials = {diffuseMaterial(0.5f), lampMaterial(glm::vec3(4.0f))};
     appendQuad(scene, {-5, 0, -5}, {-5, 0, 5}, {5, 0, 5}, {5, 0, -5}, 0);  // facing up
     float h = height;
     appendQuad(scene, {-0.5f, h, -0.5f}, {0.5f, h, -0.5f}, {0.5f, h, 0.5f}, {-0.5f, h, 0.5f}, 1);  // down
@@ -160,7 +146,7 @@ Image shiftColumns(const Image& map, int columns) {
 // A grey sphere on a floor (the sun's shadow falls on it), lit by `map` turned `degrees` about +y.
 Scene sphereOnAFloorUnderSky(const Image& map, float degrees) {
     Scene scene = sphereUnderSky(map);
-    scene.materials.push_back(diffuse(0.6f));
+    scene.materials.push_back(diffuseMaterial(0.6f));
     appendQuad(scene, {-4, -1, -4}, {-4, -1, 4}, {4, -1, 4}, {4, -1, -4}, 1);
     scene.environment.rotationDegrees = degrees;
     return scene;
@@ -206,7 +192,7 @@ TEST(Unbiased, RotatedEnvironmentMapNeeMatchesBsdfBlockByBlock) {
 Scene lampAndSky(const Environment& sky) {
     Scene scene;
     scene.source = "lamp and sky";
-    scene.materials = {diffuse(0.5f), emitter(glm::vec3(3.0f, 2.5f, 2.0f))};
+    scene.materials = {diffuseMaterial(0.5f), lampMaterial(glm::vec3(3.0f, 2.5f, 2.0f))};
     appendQuad(scene, {-2, 0, -2}, {-2, 0, 2}, {2, 0, 2}, {2, 0, -2}, 0);
     appendQuad(scene, {-0.5f, 2, -0.5f}, {0.5f, 2, -0.5f}, {0.5f, 2, 0.5f}, {-0.5f, 2, 0.5f}, 1);
     appendBox(scene, {0.3f, 0.0f, -0.2f}, {0.8f, 0.4f, 0.3f}, 0);
@@ -335,8 +321,8 @@ INSTANTIATE_TEST_SUITE_P(Spheres, ShadingNormalFurnace,
 Scene hundredThousandEmitters() {
     Scene scene;
     scene.source = "100k emitters";
-    scene.materials = {diffuse(0.5f), emitter(glm::vec3(100.0f)), emitter(glm::vec3(2000.0f)),
-                       emitter(glm::vec3(962.5f))};
+    scene.materials = {diffuseMaterial(0.5f), lampMaterial(glm::vec3(100.0f)),
+                       lampMaterial(glm::vec3(2000.0f)), lampMaterial(glm::vec3(962.5f))};
     const int n = 224;
     const float h = 2.5f, half = 0.125f;
     for (int j = 0; j < n; ++j)
@@ -381,7 +367,7 @@ TEST(Unbiased, EmitterTooDimToBePickedIsFoundInFull) {
     ensureGlContext();
     Scene scene;
     scene.source = "a dim and a bright lamp";
-    scene.materials = {diffuse(0.5f), emitter(glm::vec3(1.0f)), emitter(glm::vec3(1e8f))};
+    scene.materials = {diffuseMaterial(0.5f), lampMaterial(glm::vec3(1.0f)), lampMaterial(glm::vec3(1e8f))};
     appendQuad(scene, {-2, 0, -2}, {-2, 0, 2}, {2, 0, 2}, {2, 0, -2}, 0);  // the floor, facing up
     appendQuad(scene, {-0.5f, 1, -0.5f}, {0.5f, 1, -0.5f}, {0.5f, 1, 0.5f}, {-0.5f, 1, 0.5f}, 1);  // down
     appendQuad(scene, {5.5f, 3, -0.5f}, {5.5f, 3, 0.5f}, {6.5f, 3, 0.5f}, {6.5f, 3, -0.5f}, 2);    // up
