@@ -255,7 +255,9 @@ bool dielectricSample(MaterialData m, vec3 wo, vec3 u, float eta, out BsdfSample
 #define HAS_TYPE(t) ((MATERIAL_TYPES & (1 << t)) != 0)
 
 // wo below the shading frame's horizon (a view direction under an interpolated normal) has f = 0 and
-// no samples: the models' formulas assume wo.z > 0 and would give negative or NaN values there.
+// no samples: the models' formulas assume wo.z > 0 and would give negative or NaN values there. So a
+// path that arrives there ends, in nee and bsdf (bsdfSample fails) as in bdpt; naive, which samples
+// diffuse surfaces itself, checks the same.
 vec3 bsdfEval(MaterialData m, vec3 wo, vec3 wi, float eta) {
     if (!(wo.z > 0.0)) return vec3(0.0);
 #if HAS_TYPE(MATERIAL_CONDUCTOR)

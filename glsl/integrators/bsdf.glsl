@@ -13,10 +13,8 @@ vec3 radiance(Ray ray) {
         applyDispersion(s, beta);
         addLight(L, beta * emittedRadiance(s), depth);
         if (depth == uMaxDepth) break;
-        vec3 wo = toLocal(s, -ray.dir);
-        if (wo.z <= 0.0) break;  // the view direction is below the shading normal: f = 0 (as in bdpt)
         BsdfSample bs;
-        if (!bsdfSample(s.material, wo, vec3(rand2(), rand()), s.eta, bs)) break;
+        if (!bsdfSample(s.material, toLocal(s, -ray.dir), vec3(rand2(), rand()), s.eta, bs)) break;
         vec3 dir = toWorld(s, bs.wi);
         if (!sameSide(s, bs.wi, dir)) break;
         beta *= bs.weight;

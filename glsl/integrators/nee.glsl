@@ -22,7 +22,6 @@ vec3 radiance(Ray ray) {
         if (depth == uMaxDepth) break;
 
         vec3 wo = toLocal(s, -ray.dir);
-        if (wo.z <= 0.0) break;  // the view direction is below the shading normal: f = 0 (as in bdpt)
         if (!isDeltaOnly(s.material)) {
             LightSample ls = sampleLight(s.position);
             vec3 wi = toLocal(s, ls.dir);
