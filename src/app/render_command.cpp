@@ -183,8 +183,11 @@ int renderCommand(const std::vector<std::string>& argv) {
     settings.maxDepth = args.integer("--max-depth", 0, 1000).value_or(d.maxDepth.value_or(5));
     settings.seed = uint32_t(args.integer("--seed", 0, 2147483647).value_or(int(d.seed.value_or(0))));
     settings.integrator = parseIntegrator(args.text("--integrator").value_or(d.integrator.value_or("nee")));
-    settings.sampler = parseSampler(args.text("--sampler").value_or(d.sampler.value_or("sobol")));
-    settings.clampIndirect = args.number("--clamp-indirect").value_or(d.clampIndirect.value_or(0.0f));
+    // Flags, else the scene file, else RenderSettings' defaults (written once, in render/settings.h).
+    settings.sampler =
+        parseSampler(args.text("--sampler").value_or(d.sampler.value_or(samplerName(settings.sampler))));
+    settings.clampIndirect =
+        args.number("--clamp-indirect").value_or(d.clampIndirect.value_or(settings.clampIndirect));
     if (auto v = args.text("--view")) settings.view = parseView(*v);
     settings.samplesPerPass =
         args.integer("--samples-per-pass", 1, RenderSettings::kMaxSamplesPerPass).value_or(1);

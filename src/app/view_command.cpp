@@ -113,8 +113,10 @@ int viewCommand(const std::vector<std::string>& argv) {
     c.render.maxDepth = args.integer("--max-depth", 0, 1000).value_or(d.maxDepth.value_or(5));
     c.render.seed = uint32_t(args.integer("--seed", 0, 2147483647).value_or(int(d.seed.value_or(0))));
     c.render.integrator = parseIntegrator(args.text("--integrator").value_or(d.integrator.value_or("nee")));
-    c.render.sampler = parseSampler(args.text("--sampler").value_or(d.sampler.value_or("sobol")));
-    c.render.clampIndirect = args.number("--clamp-indirect").value_or(d.clampIndirect.value_or(0.0f));
+    c.render.sampler =
+        parseSampler(args.text("--sampler").value_or(d.sampler.value_or(samplerName(c.render.sampler))));
+    c.render.clampIndirect =
+        args.number("--clamp-indirect").value_or(d.clampIndirect.value_or(c.render.clampIndirect));
     if (auto v = args.text("--view")) c.render.view = parseView(*v);
     if (auto s = args.text("--split")) {
         c.split = true;
