@@ -74,21 +74,26 @@ uint nestedUniformScramble(uint x, uint seed) {
     return bitfieldReverse(laineKarrasPermutation(bitfieldReverse(x), seed));
 }
 
-// The second Sobol dimension (primitive polynomial x + 1): its generator matrix applied to index i.
-uint sobolSecond(uint i) {
-    uint r = 0u;
-    for (uint v = 1u << 31; i != 0u; i >>= 1u, v ^= v >> 1u)
-        if ((i & 1u) != 0u) r ^= v;
-    return r;
+// The second Sobol dimension (primitive polynomial x + 1) with its bits reversed: its generator matrix
+// is Pascal's triangle mod 2, so by Lucas' theorem bit j of the reversed point is the parity of the index
+// bits k whose binary digits contain j's (a superset, or zeta, transform over GF(2)): five shifts in
+// place of a loop over the index bits.
+uint sobolSecondReversed(uint i) {
+    i ^= (i >> 1u) & 0x55555555u;
+    i ^= (i >> 2u) & 0x33333333u;
+    i ^= (i >> 4u) & 0x0f0f0f0fu;
+    i ^= (i >> 8u) & 0x00ff00ffu;
+    return i ^ (i >> 16u);
 }
 
 vec2 rand2() {
     uvec3 h = pcg4d(uvec4(rngKey.x, rngKey.z, rngKey.w, 0x5eed50b1u)).xyz;
     ++rngKey.w;
     uint i = nestedUniformScramble(rngKey.y, h.x);  // shuffle the pixel's samples, per pair
-    // The first dimension is the radical inverse, bitfieldReverse(i): scrambled, reverse(LK(i)).
+    // Both dimensions are reversed-bit values: the first is the radical inverse, reverse(i). Owen
+    // scrambling a value is reverse(LK(reverse(value))), so each point is reverse(LK(reversed point)).
     uint x = bitfieldReverse(laineKarrasPermutation(i, h.y));
-    uint y = nestedUniformScramble(sobolSecond(i), h.z);
+    uint y = bitfieldReverse(laineKarrasPermutation(sobolSecondReversed(i), h.z));
     return vec2(uvec2(x, y) >> 8u) * (1.0 / 16777216.0);
 }
 
