@@ -111,6 +111,28 @@ int pickLight(float u) {
     return lo;
 }
 
+// An emitter triangle picked by power and a point uniform on it (barycentrics), from one 2D sample:
+// x picks by the cdf and, rescaled to the picked entry's share of [0, 1), places the point with y
+// (the reuse of a light pick's number that Cycles and pbrt make too). One stratified 2D point then
+// spreads over all the emitters' area, where a pick and a point from two pairs would pair them at
+// random, and (with the blue-noise sampler, rng.glsl) the same way in every pixel. The pick is exact:
+// the cdf lies on rand()'s 2^-24 grid and the picked entry's bounds differ by its pmf exactly. The
+// rescaled x keeps pmf * 2^24 levels; below 2^-12 of the power (fewer than 4096 levels across the
+// triangle) the point takes a pair of its own.
+struct EmitterPoint {
+    TriangleData tri;
+    vec2 barycentric;
+};
+
+EmitterPoint sampleEmitterPoint() {
+    vec2 u = rand2();
+    int entry = pickLight(u.x);
+    TriangleData tri = fetchTriangle(int(lightTexel(entry).x));
+    float below = entry > 0 ? lightTexel(entry - 1).y : 0.0;
+    vec2 v = tri.lightPmf >= 1.0 / 4096.0 ? vec2((u.x - below) / tri.lightPmf, u.y) : rand2();
+    return EmitterPoint(tri, sampleTriangle(v));
+}
+
 // The area density of sampleLight's emitter points on triangle tri: its pmf (the probability that
 // pickLight returns it: the packer stores the cdf on a 2^-24 grid, the resolution of rand(), and the pmf
 // as the exact difference of two entries, gpu/pack.cpp) over its area. Every estimator that needs the
@@ -128,10 +150,9 @@ LightSample sampleLight(vec3 from) {
         return ls;
     }
     if (uLightCount == 0) return ls;
-    // A number of its own for the pick: a remapped share of the first would leave the 2^-24 grid the
-    // cdf lies on, and the pick probabilities would no longer be the stored pmfs exactly.
-    TriangleData tri = fetchTriangle(int(lightTexel(pickLight(rand())).x));
-    vec2 b = sampleTriangle(rand2());
+    EmitterPoint e = sampleEmitterPoint();
+    TriangleData tri = e.tri;
+    vec2 b = e.barycentric;
     ls.point = tri.v0 + b.x * tri.e1 + b.y * tri.e2;
     ls.normal = normalize(cross(tri.e1, tri.e2));
     ls.offset = surfaceOffset(tri);

@@ -31,10 +31,13 @@ uvec4 rngKey;  // (pixel.x | pixel.y << 16, sample index, seed, counter)
 uvec2 gRngPixel;  // the pixel and sample index of the last rngInit: the sample being traced
 uint gRngSample;
 
+void samplerInitPixel(uint seed, uvec2 pixel);  // per sampler, below: what depends on the pixel alone
+
 void rngInit(uint seed, uvec2 pixel, uint sampleIndex) {
     gRngPixel = pixel;
     gRngSample = sampleIndex;
     rngKey = uvec4(pixel.x | (pixel.y << 16u), sampleIndex, seed, 0u);
+    samplerInitPixel(seed, pixel);
 }
 
 // A second stream of the same sample, disjoint from the first (bdpt's light subpath): its counter
@@ -45,14 +48,34 @@ void rngInitSecondStream(uint seed, uvec2 pixel, uint sampleIndex) {
 }
 
 #if SAMPLER == 1
-// ---- Owen-scrambled Sobol points (the default sampler, `--sampler sobol`) ----
+// ---- Owen-scrambled Sobol points, their error spread as blue noise (the default, `--sampler sobol`) ----
 // Burley 2020, "Practical Hash-based Owen Scrambling", JCGT 9(4). Every call of rand2() takes the next
 // 2D "dimension pair" d (counter rngKey.w) and returns point k (the sample index) of the first two
-// Sobol dimensions, shuffled and Owen-scrambled with hashes of (pixel, seed, d): the samples of one pixel
-// in one pair are a (0, 2)-sequence, so every power-of-two prefix puts one point in each elementary
-// interval (a pixel's jitter, a light's point, a BSDF direction: all stratified), and pairs are
-// independent of each other (Burley's padding by independent shuffles). rand() is the first coordinate
-// of a pair of its own. Sample k of pixel p still depends only on (seed, p, k).
+// Sobol dimensions, its index shuffled and its digits Owen-scrambled with hashes of (seed, d): the
+// samples of one pixel in one pair are a (0, 2)-sequence, so every power-of-two prefix puts one point in
+// each elementary interval (a pixel's jitter, a light's point, a BSDF direction: all stratified), and
+// pairs are independent of each other (Burley's padding by independent shuffles). rand() is the first
+// coordinate of a pair of its own.
+//
+// Blue noise over the screen (after Ahmed & Wonka 2020, "Screen-space blue-noise diffusion of Monte
+// Carlo sampling error via hierarchical ordering of pixels", ACM TOG 39(6)): the scramble is the same
+// for every pixel, and each pixel XORs the point's binary digits with a shift of its own (a digital
+// shift: a (0, 2)-sequence stays one, and a scrambled point XOR a fixed shift is as uniform as the
+// scrambled point, so each pixel's estimate is exactly as good as before). The shift is a linear
+// function of a shuffled Z-order (Morton) index z of the pixel in its 64x64 tile, in which an aligned
+// 2^j x 2^j block of pixels holds the 4^j values of z's low 2j bits. Digit q of the shift (from the
+// top) is the XOR of z's bits i with i a bitwise subset of q: binomial coefficients C(q, i) mod 2
+// (Lucas). Every run of n consecutive rows of that matrix is invertible on z's low n bits (the integer
+// matrix C(L + a, i) factors into two unitriangular ones), so at 2^L samples per pixel, when each
+// pixel's points fill every interval of 2^-L, the block's pixels still differ in the next digits, and
+// the block's points together fill the intervals of 2^-(L+2j): neighbours sample different parts of
+// the light, of the lobe, of the pixel, and their errors cancel, at every sample count. (pbrt-v4's
+// ZSobol, index = Morton << log2(spp) | k, needs the sample count in advance.) The second coordinate
+// takes z through the second Sobol dimension first, so that at one sample per pixel the block's points
+// are a (0, 2j, 2)-net. The Z-order is shuffled in base 4 once per pixel (a random permutation of each
+// node's four children, chosen per node: Ahmed & Wonka's isotropy) and by a binary Owen scramble per
+// pair, so that pairs do not share one arrangement.
+// Sample k of pixel p depends only on (seed, p, k): any range of samples renders on its own.
 // Dimension layout (the order of the calls): pair 0 the pixel jitter; then per bounce, nee: light
 // choice, emitter pick, point on the emitter (2D), BSDF direction (2D), BSDF lobe, roulette; bsdf and
 // naive: BSDF direction, lobe, roulette; bdpt's light subpath starts at pair 2^31 (its second stream).
@@ -86,19 +109,74 @@ uint sobolSecondReversed(uint i) {
     return i ^ (i >> 16u);
 }
 
+// A 32-bit hash of one word (Jarzynski & Olano 2020, "pcg").
+uint hashWord(uint v) {
+    uint state = v * 747796405u + 2891336453u;
+    uint word = ((state >> ((state >> 28u) + 4u)) ^ state) * 277803737u;
+    return (word >> 22u) ^ word;
+}
+
+// The 24 permutations of a node's four children, each as four 2-bit digits (the image of 0 lowest).
+const uint kChildPermutations[24] = uint[24](0xe4u, 0xb4u, 0xd8u, 0x78u, 0x9cu, 0x6cu, 0xe1u, 0xb1u, 0xc9u,
+    0x39u, 0x8du, 0x2du, 0xd2u, 0x72u, 0xc6u, 0x36u, 0x4eu, 0x1eu, 0x93u, 0x63u, 0x87u, 0x27u, 0x4bu,
+    0x1bu);
+
+const uint kTileLevels = 6u;  // the Z-order covers 64x64 tiles: 12 digits of the shifts
+
+// The pixel's Z-order index in its tile (x's bits in the even places), each base-4 digit permuted by
+// a permutation hashed from the digits above it, the tile and the seed.
+uint shuffledZOrder(uvec2 pixel, uint seed) {
+    uvec2 local = pixel & ((1u << kTileLevels) - 1u);
+    uint z = 0u;
+    for (uint bit = 0u; bit < kTileLevels; ++bit)
+        z |= (((local.x >> bit) & 1u) << (2u * bit)) | (((local.y >> bit) & 1u) << (2u * bit + 1u));
+    uvec2 tile = pixel >> kTileLevels;
+    uint tileSeed = hashWord(seed ^ hashWord(tile.x | (tile.y << 16u)));
+    uint shuffled = 0u;
+    for (uint level = 0u; level < kTileLevels; ++level) {
+        uint shift = 2u * (kTileLevels - 1u - level);  // the digit's place, from the top
+        uint node = (z >> (shift + 2u)) | (1u << (2u * level));  // which node: the digits above, tagged
+        uint h = hashWord(tileSeed ^ node);
+        uint permutation = kChildPermutations[((h >> 16u) * 24u) >> 16u];
+        shuffled |= ((permutation >> (2u * ((z >> shift) & 3u))) & 3u) << shift;
+    }
+    return shuffled;
+}
+
+uint gZOrderReversed;  // the pixel's shuffled Z-order index, its bits reversed
+
+void samplerInitPixel(uint seed, uvec2 pixel) {
+    gZOrderReversed = bitfieldReverse(shuffledZOrder(pixel, seed));
+}
+
+// Digit q of the result is the XOR of the bits i of z with i a subset of q (a subset, or zeta,
+// transform over GF(2), the transpose of sobolSecondReversed's).
+uint subsetParities(uint z) {
+    z ^= (z << 1u) & 0xaaaaaaaau;
+    z ^= (z << 2u) & 0xccccccccu;
+    z ^= (z << 4u) & 0xf0f0f0f0u;
+    z ^= (z << 8u) & 0xff00ff00u;
+    return z ^ (z << 16u);
+}
+
 vec2 rand2() {
-    uvec3 h = pcg4d(uvec4(rngKey.x, rngKey.z, rngKey.w, 0x5eed50b1u)).xyz;
+    uvec4 h = pcg4d(uvec4(rngKey.z, rngKey.w, 0x5eed50b1u, 0x0b1ad5u));  // the same for every pixel
     ++rngKey.w;
-    uint i = nestedUniformScramble(rngKey.y, h.x);  // shuffle the pixel's samples, per pair
-    // Both dimensions are reversed-bit values: the first is the radical inverse, reverse(i). Owen
-    // scrambling a value is reverse(LK(reverse(value))), so each point is reverse(LK(reversed point)).
-    uint x = bitfieldReverse(laineKarrasPermutation(i, h.y));
-    uint y = bitfieldReverse(laineKarrasPermutation(sobolSecondReversed(i), h.z));
-    return vec2(uvec2(x, y) >> 8u) * (1.0 / 16777216.0);
+    uint i = nestedUniformScramble(rngKey.y, h.x);  // shuffle the samples, per pair
+    // The pixel's Z-order index, Owen-scrambled per pair (in reversed form, as nestedUniformScramble).
+    uint z = bitfieldReverse(laineKarrasPermutation(gZOrderReversed, h.w)) & ((1u << (2u * kTileLevels)) - 1u);
+    // All values in reversed-bit form (bit q is the digit of 2^-(q+1)): the first dimension is the
+    // radical inverse, reverse(i). XOR with the pixel's shift, Owen-scramble (reverse(LK(reverse(v))):
+    // the shift goes first, so that every pixel's k-th point lands in a different place), reverse.
+    uint x = laineKarrasPermutation(i ^ subsetParities(z), h.y);
+    uint y = laineKarrasPermutation(sobolSecondReversed(i) ^ subsetParities(sobolSecondReversed(z)), h.z);
+    return vec2(uvec2(bitfieldReverse(x), bitfieldReverse(y)) >> 8u) * (1.0 / 16777216.0);
 }
 
 float rand() { return rand2().x; }
 #else
+void samplerInitPixel(uint seed, uvec2 pixel) {}
+
 // ---- independent numbers (`--sampler independent`): the plain Monte Carlo of the textbooks ----
 // Uniform in [0, 1): the hash's top 24 bits, so the float is exact.
 float rand() {

@@ -53,8 +53,9 @@
 // triangle): the unweighted contribution beta_z f(z -> y) Le(y -> z) |cos(theta_y)| / (r^2 p_A(y)).
 vec3 connectToLight(int t) {
     PathVertex c = gCamera[t - 1];
-    TriangleData tri = fetchTriangle(int(lightTexel(pickLight(rand())).x));
-    vec2 b = sampleTriangle(rand2());
+    EmitterPoint e = sampleEmitterPoint();
+    TriangleData tri = e.tri;
+    vec2 b = e.barycentric;
     vec3 normal = normalize(cross(tri.e1, tri.e2));
     PathVertex y = PathVertex(tri.v0 + b.x * tri.e1 + b.y * tri.e2, normal, normal, normal, vec3(0.0),
                               tri.material, 1.0, emitterAreaPdf(tri), 0.0, false, false, surfaceOffset(tri));

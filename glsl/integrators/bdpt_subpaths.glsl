@@ -180,8 +180,9 @@ int traceLightSubpath(int maxDepth) {
     int n = min(BDPT_MAX_LIGHT_VERTICES, maxDepth + 1);
     for (int i = 0; i < BDPT_MAX_LIGHT_VERTICES; ++i) gLightDelta[i] = false;
     if (n == 0 || uLightCount == 0) return 0;
-    TriangleData tri = fetchTriangle(int(lightTexel(pickLight(rand())).x));
-    vec2 b = sampleTriangle(rand2());
+    EmitterPoint e = sampleEmitterPoint();
+    TriangleData tri = e.tri;
+    vec2 b = e.barycentric;
     vec3 normal = normalize(cross(tri.e1, tri.e2));
     float pdfPosition = emitterAreaPdf(tri);
     vec3 Le = materialEmission(tri.material);

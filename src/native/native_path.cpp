@@ -219,7 +219,8 @@ class PathTracer {
             return ls;
         }
         if (scene_.lights.empty()) return ls;
-        // A number of its own for the pick, on the 2^-24 grid the cdf lies on (buildScene).
+        // lights.glsl sampleEmitterPoint(): the pick's number, rescaled to the picked entry's share,
+        // is the point's first coordinate (exact: the cdf lies on the 2^-24 grid, buildScene).
         float v = rng.next();
         int lo = 0, hi = int(scene_.lights.size()) - 1;
         while (lo < hi) {  // first entry whose cdf exceeds v
@@ -230,7 +231,14 @@ class PathTracer {
                 hi = mid;
         }
         const Tri& tri = scene_.tris[scene_.lights[lo].triangle];
-        float b0 = rng.next(), b1 = rng.next();
+        float below = lo > 0 ? scene_.lights[size_t(lo) - 1].cdf : 0.0f;
+        float b0, b1 = rng.next();
+        if (tri.lightPmf >= 1.0f / 4096.0f) {
+            b0 = (v - below) / tri.lightPmf;
+        } else {  // a pair of its own (the second number is drawn and unused, as in the shader)
+            b0 = rng.next();
+            b1 = rng.next();
+        }
         float su = std::sqrt(b0);  // uniform on the triangle: sampling.glsl sampleTriangle()
         ls.point = tri.v0 + (1.0f - su) * tri.e1 + b1 * su * tri.e2;
         ls.normal = glm::normalize(glm::cross(tri.e1, tri.e2));

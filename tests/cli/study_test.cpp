@@ -63,12 +63,13 @@ TEST_F(StudyTest, WritesEveryArtefact) {
     for (std::string line; std::getline(csv, line); ++rows) {
         std::vector<std::string> cells = splitCsvLine(line);
         ASSERT_EQ(cells.size(), 10u) << line;
-        for (size_t i = 3; i < cells.size(); ++i) {
+        for (size_t i = 3; i < 9; ++i) {
             double v = std::strtod(cells[i].c_str(), nullptr);
             EXPECT_TRUE(std::isfinite(v) && v >= 0.0) << line;
         }
+        // SSIM lies in [-1, 1]: a noisy 16x16 image can correlate negatively with the reference.
         double ssim = std::strtod(cells[9].c_str(), nullptr);
-        EXPECT_LE(ssim, 1.0) << line;
+        EXPECT_TRUE(std::isfinite(ssim) && ssim >= -1.0 && ssim <= 1.0) << line;
         int spp = std::stoi(cells[2]);
         levels[{cells[0], cells[1]}].insert(spp);
         denoisers.insert(cells[1]);
