@@ -87,7 +87,9 @@ def main():
                 str(args.max_depth), "--seed", str(seed), "--samples-per-pass", "16", "--quiet", "-o", path]
 
     def cycles(spp, seed, path):
-        return ["blender", "-b", "--factory-startup", "--python", os.path.join(ROOT, "tools/race/cycles_render.py"),
+        # --python-exit-code: a failing script makes Blender exit non-zero (it exits 0 by default).
+        return ["blender", "-b", "--factory-startup", "--python-exit-code", "1",
+                "--python", os.path.join(ROOT, "tools/race/cycles_render.py"),
                 "--", obj, path, str(args.size), str(args.size), str(spp), str(args.max_depth), str(args.threads),
                 str(seed), vec(cam["eye"]), vec(cam["target"]), vec(cam.get("up", [0, 1, 0])), str(cam.get("fov", 45))]
 

@@ -1,12 +1,15 @@
 # Runs inside Blender (`blender -b --factory-startup --python tools/race/cycles_render.py -- ARGS`):
-# renders a fragpath scene (an OBJ with Lambertian and emissive MTL materials, and a camera) with Cycles
-# on the CPU, as tools/race_cycles.py asks, and writes the linear image as a PFM (rows bottom first).
+# renders a fragpath scene (an OBJ with Lambertian, glass, metal and emissive MTL materials, and a camera)
+# with Cycles on the CPU, as tools/race_cycles.py asks, and writes the linear image as a PFM (rows bottom
+# first).
 #
 # Matched to fragpath: Lambertian surfaces (Diffuse BSDF, roughness 0), glass (illum 4/6/7/9 or Tf: Glass
 # BSDF with Ni and Pr), metals (Pm: Principled, metallic, GGX, roughness Pr), emitters that emit from their
-# front face only (a counter-clockwise face, as fragpath's), a pinhole camera with the vertical field
-# of view, a 1-pixel box filter, the same bounce limit for every kind of bounce, no adaptive sampling, no
-# denoising, no clamping, a fixed thread count.
+# front face only (a counter-clockwise face, as fragpath's), the OBJ's vertex normals where a face gives
+# them and the flat face normal where it does not (Blender's C++ OBJ importer, wm.obj_import; the legacy
+# import_scene.obj gave every face without normals the file's first `vn`), a pinhole camera with the
+# vertical field of view, a 1-pixel box filter, the same bounce limit for every kind of bounce, no
+# adaptive sampling, no denoising, no clamping, a fixed thread count.
 #   ARGS: OBJ PFM_OUT WIDTH HEIGHT SPP MAX_DEPTH THREADS SEED EYE(x,y,z) TARGET UP FOV_DEGREES
 # (MAX_DEPTH as fragpath counts it: 0 emitters only, 1 direct light)
 import math
@@ -45,8 +48,10 @@ def read_mtl(path):
 
 
 bpy.ops.wm.read_factory_settings(use_empty=True)
-bpy.ops.import_scene.obj(filepath=obj_path, axis_forward="-Z", axis_up="Y", use_split_objects=True,
-                         use_split_groups=False, use_image_search=False)
+# Not the legacy import_scene.obj: it sets the normal of every corner the file gives none to the file's
+# first `vn` (any object's), where fragpath (and this importer: a zero custom normal) uses the face's.
+# It makes one object per `o` statement (3.4 has no option for it); rendering does not depend on that.
+bpy.ops.wm.obj_import(filepath=obj_path, forward_axis="NEGATIVE_Z", up_axis="Y")
 mtl = {}
 for line in open(obj_path):
     if line.startswith("mtllib"):
