@@ -111,7 +111,7 @@ int pickLight(float u) {
     return lo;
 }
 
-// An emitter triangle picked by power and a point uniform on it (barycentrics), from one 2D sample:
+// An emitter triangle picked by power and a point of the unit square for the point on it, from one 2D sample:
 // x picks by the cdf and, rescaled to the picked entry's share of [0, 1), places the point with y
 // (the reuse of a light pick's number that Cycles and pbrt make too). One stratified 2D point then
 // spreads over all the emitters' area, where a pick and a point from two pairs would pair them at
@@ -121,7 +121,7 @@ int pickLight(float u) {
 // triangle) the point takes a pair of its own.
 struct EmitterPoint {
     TriangleData tri;
-    vec2 barycentric;
+    vec2 unitSquare;  // for the point on it: sampleTriangle (uniform by area) or sampleSphericalTriangle
 };
 
 EmitterPoint sampleEmitterPoint() {
@@ -130,7 +130,7 @@ EmitterPoint sampleEmitterPoint() {
     TriangleData tri = fetchTriangle(int(lightTexel(entry).x));
     float below = entry > 0 ? lightTexel(entry - 1).y : 0.0;
     vec2 v = tri.lightPmf >= 1.0 / 4096.0 ? vec2((u.x - below) / tri.lightPmf, u.y) : rand2();
-    return EmitterPoint(tri, sampleTriangle(v));
+    return EmitterPoint(tri, v);
 }
 
 // The area density of sampleLight's emitter points on triangle tri: its pmf (the probability that
@@ -138,6 +138,30 @@ EmitterPoint sampleEmitterPoint() {
 // as the exact difference of two entries, gpu/pack.cpp) over its area. Every estimator that needs the
 // density of an emitter point reads it from here, so sampling and MIS weights agree to the last bit.
 float emitterAreaPdf(TriangleData tri) { return tri.lightPmf / (0.5 * length(cross(tri.e1, tri.e2))); }
+
+// Emitters that subtend between these solid angles (steradians) from the shading point are sampled
+// uniformly in solid angle (sampleSphericalTriangle), which removes the 1 / r^2 and the emitter's cosine
+// from the estimate: what area sampling leaves noisy next to a large or near light. Smaller ones are
+// sampled by area: the spherical formulas lose precision there and the two densities barely differ;
+// beyond the upper bound (nearly a hemisphere) the spherical triangle is ill-conditioned. As pbrt-v4's
+// triangle light (pbrt-v4 6.5.4 uses the same bounds).
+#ifndef SPHERICAL_LIGHT_SAMPLING
+#define SPHERICAL_LIGHT_SAMPLING 1
+#endif
+const float kMinSphericalArea = 3e-4, kMaxSphericalArea = 6.22;
+
+// The solid angle of triangle tri seen from `from`, or 0 when sampleLight samples it by area (too small,
+// too large, or seen from behind: one-sided emitters).
+float sphericalSamplingArea(TriangleData tri, vec3 from) {
+#if SPHERICAL_LIGHT_SAMPLING
+    vec3 a = tri.v0 - from;
+    if (dot(cross(tri.e1, tri.e2), a) >= 0.0) return 0.0;
+    float area = sphericalTriangleArea(normalize(a), normalize(a + tri.e1), normalize(a + tri.e2));
+    return area > kMinSphericalArea && area < kMaxSphericalArea ? area : 0.0;
+#else
+    return 0.0;
+#endif
+}
 
 LightSample sampleLight(vec3 from) {
     LightSample ls = LightSample(vec3(0.0, 0.0, 1.0), 0.0, vec3(0.0), 0.0, vec3(0.0), vec3(0.0), 0.0);
@@ -152,10 +176,23 @@ LightSample sampleLight(vec3 from) {
     if (uLightCount == 0) return ls;
     EmitterPoint e = sampleEmitterPoint();
     TriangleData tri = e.tri;
-    vec2 b = e.barycentric;
-    ls.point = tri.v0 + b.x * tri.e1 + b.y * tri.e2;
     ls.normal = normalize(cross(tri.e1, tri.e2));
     ls.offset = surfaceOffset(tri);
+    float solidAngle = sphericalSamplingArea(tri, from);
+    if (solidAngle > 0.0) {
+        vec3 a = tri.v0 - from;
+        ls.dir = sampleSphericalTriangle(normalize(a), normalize(a + tri.e1), normalize(a + tri.e2),
+                                         e.unitSquare);
+        float cosLight = -dot(ls.normal, ls.dir);
+        if (cosLight <= 0.0) return ls;
+        ls.dist = -dot(a, ls.normal) / cosLight;  // to the emitter's plane along ls.dir
+        ls.point = from + ls.dist * ls.dir;
+        ls.radiance = materialEmission(tri.material);
+        ls.pdf = (1.0 - pEnvironment) * tri.lightPmf / solidAngle;
+        return ls;
+    }
+    vec2 b = sampleTriangle(e.unitSquare);
+    ls.point = tri.v0 + b.x * tri.e1 + b.y * tri.e2;
     vec3 toLight = ls.point - from;
     float dist2 = dot(toLight, toLight);
     ls.dist = sqrt(dist2);
@@ -180,9 +217,12 @@ bool lightVisible(Surface s, LightSample ls) {
     return !occluded(ray, tMax);
 }
 
-// Solid-angle density with which sampleLight would have chosen the emitter point a ray hit at hit.t.
-float lightPdf(Ray ray, Hit hit) {
+// Solid-angle density with which sampleLight(from) would have chosen the emitter point a ray from
+// `from` hit at hit.t.
+float lightPdf(vec3 from, Ray ray, Hit hit) {
     TriangleData tri = fetchTriangle(hit.triangle);
+    float solidAngle = sphericalSamplingArea(tri, from);
+    if (solidAngle > 0.0) return (1.0 - environmentSelection()) * tri.lightPmf / solidAngle;
     float cosLight = abs(dot(normalize(cross(tri.e1, tri.e2)), ray.dir));
     return (1.0 - environmentSelection()) * emitterAreaPdf(tri) * hit.t * hit.t / cosLight;
 }

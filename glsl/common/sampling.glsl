@@ -44,6 +44,35 @@ vec2 sampleTriangle(vec2 u) {
     return vec2(1.0 - su, u.y * su);
 }
 
+// Solid angle of the triangle with unit corner directions a, b, c seen from their origin (Van Oosterom
+// & Strackee 1983, "The solid angle of a plane triangle", eq. 8): atan2 keeps it right beyond pi.
+float sphericalTriangleArea(vec3 a, vec3 b, vec3 c) {
+    return 2.0 * atan(abs(dot(a, cross(b, c))), 1.0 + dot(a, b) + dot(b, c) + dot(c, a));
+}
+
+// A direction uniform in solid angle over the spherical triangle with unit corners A, B, C (Arvo 1995,
+// "Stratified sampling of spherical triangles", fig. 2): u.x picks the area of a sub-triangle A B C'
+// (C' on the arc from A to C), u.y a point on the arc from B to C'. Continuous and area-preserving, so a
+// stratified u stays stratified over the emitter as seen from the shading point.
+vec3 sampleSphericalTriangle(vec3 A, vec3 B, vec3 C, vec2 u) {
+    vec3 nAB = normalize(cross(A, B)), nBC = normalize(cross(B, C)), nCA = normalize(cross(C, A));
+    float alpha = acos(clamp(-dot(nAB, nCA), -1.0, 1.0));  // the interior angles at A, B, C
+    float beta = acos(clamp(-dot(nBC, nAB), -1.0, 1.0));
+    float gamma = acos(clamp(-dot(nCA, nBC), -1.0, 1.0));
+    float subArea = u.x * (alpha + beta + gamma - PI);
+    float s = sin(subArea - alpha), t = cos(subArea - alpha);
+    float cosAlpha = cos(alpha), sinAlpha = sin(alpha);
+    float p = t - cosAlpha, r = s + sinAlpha * dot(A, B);
+    float denominator = (r * s + p * t) * sinAlpha;
+    float q = denominator != 0.0 ? clamp(((r * t - p * s) * cosAlpha - r) / denominator, -1.0, 1.0) : 1.0;
+    vec3 towardC = C - dot(C, A) * A;
+    vec3 Cp = q * A + sqrt(max(0.0, 1.0 - q * q)) * (dot(towardC, towardC) > 0.0 ? normalize(towardC) : vec3(0.0));
+    float z = clamp(1.0 - u.y * (1.0 - dot(Cp, B)), -1.0, 1.0);
+    vec3 towardCp = Cp - dot(Cp, B) * B;
+    if (dot(towardCp, towardCp) <= 0.0) return B;
+    return z * B + sqrt(max(0.0, 1.0 - z * z)) * normalize(towardCp);
+}
+
 // Power heuristic with beta = 2: Veach 1997, eq. 9.13, one sample from each strategy.
 float powerHeuristic(float pdfA, float pdfB) {
     float a = pdfA * pdfA, b = pdfB * pdfB;

@@ -55,7 +55,7 @@ vec3 connectToLight(int t) {
     PathVertex c = gCamera[t - 1];
     EmitterPoint e = sampleEmitterPoint();
     TriangleData tri = e.tri;
-    vec2 b = e.barycentric;
+    vec2 b = sampleTriangle(e.unitSquare);  // by area: bdpt's vertices carry area densities
     vec3 normal = normalize(cross(tri.e1, tri.e2));
     PathVertex y = PathVertex(tri.v0 + b.x * tri.e1 + b.y * tri.e2, normal, normal, normal, vec3(0.0),
                               tri.material, 1.0, emitterAreaPdf(tri), 0.0, false, false, surfaceOffset(tri));

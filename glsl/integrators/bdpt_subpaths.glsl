@@ -182,7 +182,7 @@ int traceLightSubpath(int maxDepth) {
     if (n == 0 || uLightCount == 0) return 0;
     EmitterPoint e = sampleEmitterPoint();
     TriangleData tri = e.tri;
-    vec2 b = e.barycentric;
+    vec2 b = sampleTriangle(e.unitSquare);  // by area: bdpt's vertices carry area densities
     vec3 normal = normalize(cross(tri.e1, tri.e2));
     float pdfPosition = emitterAreaPdf(tri);
     vec3 Le = materialEmission(tri.material);

@@ -6,6 +6,7 @@
 vec3 radiance(Ray ray) {
     vec3 L = vec3(0.0), beta = vec3(1.0);
     float lastPdf = 0.0;      // solid-angle density of the direction that led here
+    vec3 lastPosition = ray.origin;  // the vertex it left from, where sampleLight would have sampled
     bool fullWeight = true;  // camera rays and delta bounces: no light sample competed
     for (int depth = 0;; ++depth) {
         Hit hit;
@@ -18,7 +19,7 @@ vec3 radiance(Ray ray) {
         applyDispersion(s, beta);
         vec3 Le = emittedRadiance(s);
         if (Le != vec3(0.0))
-            addLight(L, beta * Le * (fullWeight ? 1.0 : powerHeuristic(lastPdf, lightPdf(ray, hit))), depth);
+            addLight(L, beta * Le * (fullWeight ? 1.0 : powerHeuristic(lastPdf, lightPdf(lastPosition, ray, hit))), depth);
         if (depth == uMaxDepth) break;
 
         vec3 wo = toLocal(s, -ray.dir);
@@ -39,6 +40,7 @@ vec3 radiance(Ray ray) {
         if (!sameSide(s, bs.wi, dir)) break;
         beta *= bs.weight;
         lastPdf = bs.pdf;
+        lastPosition = s.position;
         fullWeight = bs.delta;
         if (!survivesRoulette(beta, depth)) break;
         ray = spawnRay(s, dir);

@@ -99,6 +99,46 @@ float emitterAreaPdf(const Tri& tri) {
     return tri.lightPmf / (0.5f * glm::length(glm::cross(tri.e1, tri.e2)));
 }
 
+// sampling.glsl sphericalTriangleArea(): Van Oosterom & Strackee 1983, eq. 8.
+float sphericalTriangleArea(const glm::vec3& a, const glm::vec3& b, const glm::vec3& c) {
+    return 2.0f * std::atan2(std::abs(glm::dot(a, glm::cross(b, c))),
+                             1.0f + glm::dot(a, b) + glm::dot(b, c) + glm::dot(c, a));
+}
+
+// sampling.glsl sampleSphericalTriangle(): Arvo 1995, fig. 2.
+glm::vec3 sampleSphericalTriangle(const glm::vec3& A, const glm::vec3& B, const glm::vec3& C, float u0,
+                                  float u1) {
+    glm::vec3 nAB = glm::normalize(glm::cross(A, B)), nBC = glm::normalize(glm::cross(B, C)),
+              nCA = glm::normalize(glm::cross(C, A));
+    float alpha = std::acos(glm::clamp(-glm::dot(nAB, nCA), -1.0f, 1.0f));
+    float beta = std::acos(glm::clamp(-glm::dot(nBC, nAB), -1.0f, 1.0f));
+    float gamma = std::acos(glm::clamp(-glm::dot(nCA, nBC), -1.0f, 1.0f));
+    float subArea = u0 * (alpha + beta + gamma - kPi);
+    float s = std::sin(subArea - alpha), t = std::cos(subArea - alpha);
+    float cosAlpha = std::cos(alpha), sinAlpha = std::sin(alpha);
+    float p = t - cosAlpha, r = s + sinAlpha * glm::dot(A, B);
+    float denominator = (r * s + p * t) * sinAlpha;
+    float q =
+        denominator != 0.0f ? glm::clamp(((r * t - p * s) * cosAlpha - r) / denominator, -1.0f, 1.0f) : 1.0f;
+    glm::vec3 towardC = C - glm::dot(C, A) * A;
+    glm::vec3 Cp =
+        q * A + std::sqrt(std::max(0.0f, 1.0f - q * q)) *
+                    (glm::dot(towardC, towardC) > 0.0f ? glm::normalize(towardC) : glm::vec3(0.0f));
+    float z = glm::clamp(1.0f - u1 * (1.0f - glm::dot(Cp, B)), -1.0f, 1.0f);
+    glm::vec3 towardCp = Cp - glm::dot(Cp, B) * B;
+    if (glm::dot(towardCp, towardCp) <= 0.0f) return B;
+    return z * B + std::sqrt(std::max(0.0f, 1.0f - z * z)) * glm::normalize(towardCp);
+}
+
+// lights.glsl sphericalSamplingArea(): the solid angle when the emitter is sampled by it, else 0.
+float sphericalSamplingArea(const Tri& tri, const glm::vec3& from) {
+    glm::vec3 a = tri.v0 - from;
+    if (glm::dot(glm::cross(tri.e1, tri.e2), a) >= 0.0f) return 0.0f;
+    float area =
+        sphericalTriangleArea(glm::normalize(a), glm::normalize(a + tri.e1), glm::normalize(a + tri.e2));
+    return area > 3e-4f && area < 6.22f ? area : 0.0f;
+}
+
 class PathTracer {
   public:
     PathTracer(const Scene& scene, int maxDepth) : scene_(scene), maxDepth_(maxDepth) {
@@ -113,6 +153,7 @@ class PathTracer {
     glm::vec3 radiance(Ray ray, Rng& rng) {
         glm::vec3 L(0.0f), beta(1.0f);
         float lastPdf = 0.0f;
+        glm::vec3 lastPosition = ray.origin;
         bool fullWeight = true;
         for (int depth = 0;; ++depth) {
             Hit hit;
@@ -125,7 +166,8 @@ class PathTracer {
             Surface s = surfaceAt(ray, hit);
             glm::vec3 Le = s.frontFace ? scene_.emission[s.material] : glm::vec3(0.0f);
             if (Le != glm::vec3(0.0f))
-                L += beta * Le * (fullWeight ? 1.0f : powerHeuristic(lastPdf, lightPdf(ray, hit)));
+                L += beta * Le *
+                     (fullWeight ? 1.0f : powerHeuristic(lastPdf, lightPdf(lastPosition, ray, hit)));
             if (depth == maxDepth_) break;
 
             // The view direction below the shading normal: f = 0 (nee.glsl, as bdpt.glsl).
@@ -151,6 +193,7 @@ class PathTracer {
             if (!s.sameSide(local, dir)) break;
             beta *= kd;
             lastPdf = local.z / kPi;
+            lastPosition = s.position;
             fullWeight = false;
             // surface.glsl survivesRoulette() (pbrt-v4 PathIntegrator::Li).
             if (depth >= 3) {
@@ -239,10 +282,23 @@ class PathTracer {
             b0 = rng.next();
             b1 = rng.next();
         }
-        float su = std::sqrt(b0);  // uniform on the triangle: sampling.glsl sampleTriangle()
-        ls.point = tri.v0 + (1.0f - su) * tri.e1 + b1 * su * tri.e2;
         ls.normal = glm::normalize(glm::cross(tri.e1, tri.e2));
         ls.offset = surfaceOffset(tri);
+        float solidAngle = sphericalSamplingArea(tri, from);
+        if (solidAngle > 0.0f) {
+            glm::vec3 a = tri.v0 - from;
+            ls.dir = sampleSphericalTriangle(glm::normalize(a), glm::normalize(a + tri.e1),
+                                             glm::normalize(a + tri.e2), b0, b1);
+            float cosLight = -glm::dot(ls.normal, ls.dir);
+            if (cosLight <= 0.0f) return ls;
+            ls.dist = -glm::dot(a, ls.normal) / cosLight;
+            ls.point = from + ls.dist * ls.dir;
+            ls.radiance = scene_.emission[tri.material];
+            ls.pdf = (1.0f - environmentSelection_) * tri.lightPmf / solidAngle;
+            return ls;
+        }
+        float su = std::sqrt(b0);  // uniform on the triangle: sampling.glsl sampleTriangle()
+        ls.point = tri.v0 + (1.0f - su) * tri.e1 + b1 * su * tri.e2;
         glm::vec3 toLight = ls.point - from;
         float dist2 = glm::dot(toLight, toLight);
         ls.dist = std::sqrt(dist2);
@@ -255,8 +311,10 @@ class PathTracer {
     }
 
     // lights.glsl lightPdf()
-    float lightPdf(const Ray& ray, const Hit& hit) const {
+    float lightPdf(const glm::vec3& from, const Ray& ray, const Hit& hit) const {
         const Tri& tri = scene_.tris[hit.triangle];
+        float solidAngle = sphericalSamplingArea(tri, from);
+        if (solidAngle > 0.0f) return (1.0f - environmentSelection_) * tri.lightPmf / solidAngle;
         float cosLight = std::abs(glm::dot(glm::normalize(glm::cross(tri.e1, tri.e2)), ray.dir));
         return (1.0f - environmentSelection_) * emitterAreaPdf(tri) * hit.t * hit.t / cosLight;
     }

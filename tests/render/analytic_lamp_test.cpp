@@ -37,5 +37,27 @@ TEST(AnalyticLamp, BdptLightsTheFloorUnderALampCloseAboveIt) {
     expectAnalyticLamp(Integrator::Bdpt);
 }
 
+// nee samples a lamp that subtends a large solid angle uniformly in that solid angle (lights.glsl,
+// Arvo 1995), not by area: the floor under a lamp 0.2 of its side above it gets the same radiance with
+// less than half the variance (the 1 / r^2 and the lamp's cosine leave the estimate). Both by the
+// analytic value, and against the shaders with SPHERICAL_LIGHT_SAMPLING 0.
+TEST(AnalyticLamp, NeeSamplesACloseLampBySolidAngle) {
+    ensureGlContext();
+    const LampCase c = lampCases()[0];
+    Scene scene = lampOverFloor(c);
+    Renderer spherical(scene, testShaders());
+    Renderer byArea(scene, shadersWithDefine("common/lights.glsl", "SPHERICAL_LIGHT_SAMPLING", "0"));
+    auto meanVariance = [&](Renderer& renderer) {
+        Accumulation acc = renderScene(renderer, lampCamera(c), Integrator::Nee, 16, 64, 1, 11);
+        expectLampRadiance(acc, c, 4);
+        double se = estimate(acc).standardError.g;
+        return se * se;
+    };
+    double sphericalVariance = meanVariance(spherical), areaVariance = meanVariance(byArea);
+    std::printf("  variance of the image mean: by solid angle %.3g, by area %.3g\n", sphericalVariance,
+                areaVariance);
+    EXPECT_LT(sphericalVariance, 0.5 * areaVariance);
+}
+
 }  // namespace
 }  // namespace fp::test

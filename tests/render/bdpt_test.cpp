@@ -73,6 +73,7 @@ Accumulation renderPasses(Renderer& renderer, const Camera& camera, Integrator i
     s.maxDepth = depth;
     s.seed = seed;
     s.samplesPerPass = 16;
+    s.sampler = Sampler::Independent;  // the z-scores take pixels' errors as independent
     renderer.configure(s, camera);
     renderer.render(spp);
     Accumulation acc = renderer.readback();
@@ -139,24 +140,11 @@ double regionVariance(const Accumulation& acc, const PixelRect& r) {
     return meanColor(acc.varianceOfMean(), r).y * double(r.width) * double(r.height);
 }
 
-// A copy of the shaders with BDPT_LIGHT_TRACING_ONLY defined: every MIS weight is 0 but those of the
+// The shaders with BDPT_LIGHT_TRACING_ONLY defined: every MIS weight is 0 but those of the
 // light-tracing strategies, which are 1. Light tracing alone then estimates every path whose
 // camera-side vertex z_1 is not delta and that has at most BDPT_MAX_LIGHT_VERTICES light vertices.
 ShaderLibrary lightTracingOnlyShaders() {
-    namespace fs = std::filesystem;
-    fs::path dir = fs::temp_directory_path() / ("fragpath_light_tracing_only_" + std::to_string(::getpid()));
-    static struct RemoveAtExit {
-        fs::path dir;
-        ~RemoveAtExit() { fs::remove_all(dir); }
-    } removeAtExit{dir};
-    fs::remove_all(dir);
-    fs::copy(fs::path(FP_SOURCE_DIR) / "glsl", dir, fs::copy_options::recursive);
-    fs::path file = dir / "integrators" / "bdpt_subpaths.glsl";
-    std::ifstream in(file);
-    std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-    in.close();
-    std::ofstream(file) << "#define BDPT_LIGHT_TRACING_ONLY\n" << text;
-    return ShaderLibrary(dir.string());
+    return shadersWithDefine("integrators/bdpt_subpaths.glsl", "BDPT_LIGHT_TRACING_ONLY", "1");
 }
 
 // The caustic on the floor is seen directly: light -> glass -> glass -> floor -> camera. With smooth

@@ -9,10 +9,15 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <memory>
 #include <optional>
 #include <string>
 #include <vector>
+
+#include <unistd.h>
 
 #include "gl/context.h"
 #include "image/image_stats.h"
@@ -253,6 +258,30 @@ inline void expectSameImage(const Accumulation& a, const Accumulation& b, int bl
 inline ShaderLibrary testShaders() {
     const char* shaders = std::getenv("FP_RENDER_TEST_SHADERS");
     return ShaderLibrary(shaders ? shaders : "");
+}
+
+// A copy of the shaders (source tree's glsl/) with `#define NAME VALUE` put first in one file, to test
+// a variant the build does not ship (a strategy switched off); removed when the test program exits.
+inline ShaderLibrary shadersWithDefine(const std::string& file, const std::string& name,
+                                       const std::string& value) {
+    namespace fs = std::filesystem;
+    fs::path dir =
+        fs::temp_directory_path() / ("fragpath_" + name + "_" + value + "_" + std::to_string(::getpid()));
+    static std::vector<fs::path> made;
+    static struct RemoveAtExit {
+        ~RemoveAtExit() {
+            for (const fs::path& d : made) fs::remove_all(d);
+        }
+    } removeAtExit;
+    fs::remove_all(dir);
+    fs::copy(fs::path(FP_SOURCE_DIR) / "glsl", dir, fs::copy_options::recursive);
+    made.push_back(dir);
+    fs::path path = dir / file;
+    std::ifstream in(path);
+    std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    in.close();
+    std::ofstream(path) << "#define " << name << " " << value << "\n" << text;
+    return ShaderLibrary(dir.string());
 }
 
 // A test suite sharing one renderer of the built-in Cornell box (BVH build and shader compile once).

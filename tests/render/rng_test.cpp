@@ -201,7 +201,8 @@ TEST(SobolSampler, NeighbouringPixelsFillFinerIntervals) {
                         for (int k = 0; k < spp; ++k)
                             for (int y = by; y < by + b; ++y)
                                 for (int x = bx; x < bx + b; ++x) {
-                                    uint32_t n = samples[size_t(k)][size_t(y * kSize + x) * kNumbers + size_t(pair)];
+                                    uint32_t n =
+                                        samples[size_t(k)][size_t(y * kSize + x) * kNumbers + size_t(pair)];
                                     ++cells[size_t((uint64_t(n) * uint64_t(points)) >> 24)];
                                 }
                         for (int c : cells)
