@@ -105,6 +105,27 @@ void statistics(const ViewerControls& c, const PanelInfo& info) {
 void renderSettings(ViewerControls& c) {
     integratorCombo("integrator", c.render.integrator);
     depthSlider("max depth", c.render.maxDepth);
+    int sampler = 0;
+    const char* samplerNames[std::size(kAllSamplers)];
+    for (size_t i = 0; i < std::size(kAllSamplers); ++i) {
+        samplerNames[i] = samplerName(kAllSamplers[i]);
+        if (kAllSamplers[i] == c.render.sampler) sampler = int(i);
+    }
+    if (ImGui::Combo("sampler", &sampler, samplerNames, int(std::size(samplerNames))))
+        c.render.sampler = kAllSamplers[sampler];
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip(
+            "sobol: stratified points, error spread as blue noise; independent: the textbook's");
+    if (c.render.integrator == Integrator::Bdpt) {
+        c.render.clampIndirect = 0.0f;  // bdpt has no clamp (its strategies share paths)
+    } else {
+        ImGui::InputFloat("clamp indirect", &c.render.clampIndirect, 0.0f, 0.0f, "%.3g");
+        c.render.clampIndirect = std::max(c.render.clampIndirect, 0.0f);
+        if (ImGui::IsItemHovered())
+            ImGui::SetTooltip(
+                "scale indirect light down to at most this per channel: fewer fireflies, but "
+                "BIASED (darker); 0: off");
+    }
     int view = 0;
     const char* names[std::size(kAllViews)];
     for (size_t i = 0; i < std::size(kAllViews); ++i) {

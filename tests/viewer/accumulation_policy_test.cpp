@@ -196,6 +196,12 @@ TEST(SameAccumulation, IgnoresNothingTheRendererReads) {
     b.height = 1;
     EXPECT_FALSE(sameAccumulation(a, b));
     b = a;
+    b.sampler = Sampler::Independent;
+    EXPECT_FALSE(sameAccumulation(a, b)) << "another sampler";
+    b = a;
+    b.clampIndirect = 4.0f;
+    EXPECT_FALSE(sameAccumulation(a, b)) << "a clamp";
+    b = a;
     a.split = SplitView{};
     b.split = SplitView{};
     EXPECT_TRUE(sameAccumulation(a, b));
