@@ -31,13 +31,13 @@ uvec4 rngKey;  // (pixel.x | pixel.y << 16, sample index, seed, counter)
 uvec2 gRngPixel;  // the pixel and sample index of the last rngInit: the sample being traced
 uint gRngSample;
 
-void samplerInitPixel(uint seed, uvec2 pixel);  // per sampler, below: what depends on the pixel alone
+void samplerInit(uint seed, uvec2 pixel, uint sampleIndex);  // per sampler, below: its per-sample state
 
 void rngInit(uint seed, uvec2 pixel, uint sampleIndex) {
     gRngPixel = pixel;
     gRngSample = sampleIndex;
     rngKey = uvec4(pixel.x | (pixel.y << 16u), sampleIndex, seed, 0u);
-    samplerInitPixel(seed, pixel);
+    samplerInit(seed, pixel, sampleIndex);
 }
 
 // A second stream of the same sample, disjoint from the first (bdpt's light subpath): its counter
@@ -91,11 +91,9 @@ uint laineKarrasPermutation(uint x, uint seed) {
     return x;
 }
 
-// Owen scrambling of the binary digits of x read from the top (Burley 2020, nested_uniform_scramble):
-// each digit flips depending on the digits above it.
-uint nestedUniformScramble(uint x, uint seed) {
-    return bitfieldReverse(laineKarrasPermutation(bitfieldReverse(x), seed));
-}
+// Owen scrambling of the binary digits of x read from the top (Burley 2020, nested_uniform_scramble),
+// each digit flipped depending on the digits above it, is reverse(LK(reverse(x))): below, values and
+// indices are kept reversed where that saves a reversal.
 
 // The second Sobol dimension (primitive polynomial x + 1) with its bits reversed: its generator matrix
 // is Pascal's triangle mod 2, so by Lucas' theorem bit j of the reversed point is the parity of the index
@@ -144,9 +142,15 @@ uint shuffledZOrder(uvec2 pixel, uint seed) {
 }
 
 uint gZOrderReversed;  // the pixel's shuffled Z-order index, its bits reversed
+uint gSampleReversed;  // the sample index, its bits reversed
+uvec3 gZOrderOf = uvec3(0xffffffffu);  // the (pixel, seed) gZOrderReversed belongs to
 
-void samplerInitPixel(uint seed, uvec2 pixel) {
-    gZOrderReversed = bitfieldReverse(shuffledZOrder(pixel, seed));
+void samplerInit(uint seed, uvec2 pixel, uint sampleIndex) {
+    if (gZOrderOf != uvec3(pixel, seed)) {  // once per pixel of a pass, not once per sample
+        gZOrderReversed = bitfieldReverse(shuffledZOrder(pixel, seed));
+        gZOrderOf = uvec3(pixel, seed);
+    }
+    gSampleReversed = bitfieldReverse(sampleIndex);
 }
 
 // Digit q of the result is the XOR of the bits i of z with i a subset of q (a subset, or zeta,
@@ -162,8 +166,8 @@ uint subsetParities(uint z) {
 vec2 rand2() {
     uvec4 h = pcg4d(uvec4(rngKey.z, rngKey.w, 0x5eed50b1u, 0x0b1ad5u));  // the same for every pixel
     ++rngKey.w;
-    uint i = nestedUniformScramble(rngKey.y, h.x);  // shuffle the samples, per pair
-    // The pixel's Z-order index, Owen-scrambled per pair (in reversed form, as nestedUniformScramble).
+    uint i = bitfieldReverse(laineKarrasPermutation(gSampleReversed, h.x));  // shuffle the samples, per pair
+    // The pixel's Z-order index, Owen-scrambled per pair.
     uint z = bitfieldReverse(laineKarrasPermutation(gZOrderReversed, h.w)) & ((1u << (2u * kTileLevels)) - 1u);
     // All values in reversed-bit form (bit q is the digit of 2^-(q+1)): the first dimension is the
     // radical inverse, reverse(i). XOR with the pixel's shift, Owen-scramble (reverse(LK(reverse(v))):
@@ -175,7 +179,7 @@ vec2 rand2() {
 
 float rand() { return rand2().x; }
 #else
-void samplerInitPixel(uint seed, uvec2 pixel) {}
+void samplerInit(uint seed, uvec2 pixel, uint sampleIndex) {}
 
 // ---- independent numbers (`--sampler independent`): the plain Monte Carlo of the textbooks ----
 // Uniform in [0, 1): the hash's top 24 bits, so the float is exact.
