@@ -6,12 +6,13 @@
 #   LP_NUM_THREADS is set from --threads for fragpath; Cycles gets the same thread count.
 #   tools/race_cycles.py [--scene assets/cornell/cornell.json] [--size 128] [--max-depth 5]
 #                        [--spp 16,64,256] [--reference-spp 8192] [--runs 3] [--threads 2]
+#                        [--integrator nee] [--reference-integrator NAME]
 #
 # Installs Debian's `blender` package when it is missing (apt-get, with sudo when not root). The scene is
 # a fragpath scene file (an OBJ of Lambertian and emissive materials, and a camera); Cycles renders it
 # through tools/race/cycles_render.py, which says how the two are matched. Times are whole-process CPU
-# seconds (user + system of the child), the median of --runs runs, less the median of 1-spp renders
-# (start-up and scene set-up, for both); the error is the RMSE over pixels and channels against a fragpath render of
+# seconds (user + system of the child), the median of --runs runs (the two renderers alternating, run by
+# run), less the median of 1-spp renders (start-up and scene set-up, for both); the error is the RMSE over pixels and channels against a fragpath render of
 # --reference-spp samples (the Cycles image's mean against it is printed, to show the renderers agree).
 import argparse
 import json
@@ -72,6 +73,9 @@ def main():
     parser.add_argument("--reference-spp", type=int, default=8192)
     parser.add_argument("--runs", type=int, default=3)
     parser.add_argument("--threads", type=int, default=2)
+    parser.add_argument("--integrator", default="nee", help="fragpath's integrator in the race")
+    parser.add_argument("--reference-integrator", default=None,
+                        help="the reference's integrator (default: --integrator; bdpt converges faster on caustics)")
     args = parser.parse_args()
     ensure_blender()
     out = tempfile.mkdtemp(prefix="race_")
@@ -82,9 +86,10 @@ def main():
     env = dict(os.environ, LP_NUM_THREADS=str(args.threads))
     size = "%dx%d" % (args.size, args.size)
 
-    def fragpath(spp, seed, path):
+    def fragpath(spp, seed, path, integrator=args.integrator):
         return [args.fragpath, "render", args.scene, "--size", size, "--spp", str(spp), "--max-depth",
-                str(args.max_depth), "--seed", str(seed), "--samples-per-pass", "16", "--quiet", "-o", path]
+                str(args.max_depth), "--seed", str(seed), "--integrator", integrator, "--samples-per-pass",
+                "16", "--quiet", "-o", path]
 
     def cycles(spp, seed, path):
         # --python-exit-code: a failing script makes Blender exit non-zero (it exits 0 by default).
@@ -94,34 +99,45 @@ def main():
                 str(seed), vec(cam["eye"]), vec(cam["target"]), vec(cam.get("up", [0, 1, 0])), str(cam.get("fov", 45))]
 
     reference_path = os.path.join(out, "reference.pfm")
-    subprocess.run(fragpath(args.reference_spp, 1000, reference_path), check=True, env=env)
+    reference_integrator = args.reference_integrator or args.integrator
+    subprocess.run(fragpath(args.reference_spp, 1000, reference_path, reference_integrator), check=True, env=env)
     reference = read_pfm(reference_path)
 
     def rmse(image):
         return math.sqrt(sum((a - b) ** 2 for a, b in zip(image, reference)) / len(reference))
 
-    print("scene %s, %s, max depth %d, %d threads; reference: fragpath %d spp" %
-          (args.scene, size, args.max_depth, args.threads, args.reference_spp))
+    print("scene %s, %s, max depth %d, %d threads; fragpath %s; reference: fragpath %s, %d spp" %
+          (args.scene, size, args.max_depth, args.threads, args.integrator, reference_integrator,
+           args.reference_spp))
+    commands = (("fragpath", fragpath), ("cycles", cycles))
+    sample_counts = [int(s) for s in args.spp.split(",")]
+    # Every measurement alternates the two renderers (fragpath, Cycles, fragpath, ...), so that a drift
+    # in the machine's speed during the race falls on both alike. Set-up (start-up and scene set-up;
+    # Blender's start is about a second) is the median CPU time of 1-spp renders, taken off the others,
+    # so that the curves compare the sampling.
+    setup = {name: [] for name, _ in commands}
+    runs = {(name, spp): [] for name, _ in commands for spp in sample_counts}
+    for run in range(args.runs):
+        for name, command in commands:
+            setup[name].append(timed(command(1, 100 + run, os.path.join(out, "%s_setup.pfm" % name)), env))
+        for spp in sample_counts:
+            for name, command in commands:
+                path = os.path.join(out, "%s_%d_%d.pfm" % (name, spp, run))
+                t = timed(command(spp, run + 1, path), env)
+                image = read_pfm(path)
+                runs[(name, spp)].append((t, rmse(image), sum(image) / sum(reference)))
     print("%-9s %6s %12s %12s %10s %14s" % ("renderer", "spp", "CPU s (med)", "minus set-up", "RMSE", "mean / ref"))
     curves = {}
-    for name, command in (("fragpath", fragpath), ("cycles", cycles)):
+    for name, _ in commands:
+        base = statistics.median(setup[name])
+        print("%-9s set-up (a 1-spp render) %.2f CPU s" % (name, base))
         curves[name] = []
-        # Start-up and scene set-up (Blender's start is about a second): the median CPU time of 1-spp
-        # renders, taken off the others, so that the curves compare the sampling.
-        setup = statistics.median(
-            timed(command(1, 100 + run, os.path.join(out, "%s_setup.pfm" % name)), env) for run in range(args.runs))
-        print("%-9s set-up (a 1-spp render) %.2f CPU s" % (name, setup))
-        for spp in (int(s) for s in args.spp.split(",")):
-            times, errors, means = [], [], []
-            for run in range(args.runs):
-                path = os.path.join(out, "%s_%d_%d.pfm" % (name, spp, run))
-                times.append(timed(command(spp, run + 1, path), env))
-                image = read_pfm(path)
-                errors.append(rmse(image))
-                means.append(sum(image) / sum(reference))
+        for spp in sample_counts:
+            times, errors, means = zip(*runs[(name, spp)])
             t, e = statistics.median(times), math.sqrt(statistics.mean(x * x for x in errors))
-            curves[name].append((max(t - setup, 1e-3), e))
-            print("%-9s %6d %12.2f %12.2f %10.5f %14.4f" % (name, spp, t, t - setup, e, statistics.mean(means)))
+            curves[name].append((max(t - base, 1e-3), e))
+            print("%-9s %6d %12.2f %12.2f %10.5f %14.4f   (CPU s %s)" %
+                  (name, spp, t, t - base, e, statistics.mean(means), " ".join("%.2f" % x for x in times)))
     for a, b in (("fragpath", "cycles"), ("cycles", "fragpath")):
         for t, e in curves[b]:
             ta = time_for_error(curves[a], e)

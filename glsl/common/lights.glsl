@@ -139,25 +139,36 @@ EmitterPoint sampleEmitterPoint() {
 // density of an emitter point reads it from here, so sampling and MIS weights agree to the last bit.
 float emitterAreaPdf(TriangleData tri) { return tri.lightPmf / (0.5 * length(cross(tri.e1, tri.e2))); }
 
-// Emitters that subtend between these solid angles (steradians) from the shading point are sampled
-// uniformly in solid angle (sampleSphericalTriangle), which removes the 1 / r^2 and the emitter's cosine
-// from the estimate: what area sampling leaves noisy next to a large or near light. Smaller ones are
-// sampled by area: the spherical formulas lose precision there and the two densities barely differ;
-// beyond the upper bound (nearly a hemisphere) the spherical triangle is ill-conditioned. As pbrt-v4's
-// triangle light (pbrt-v4 6.5.4 uses the same bounds).
+// Emitters that subtend more than kMinSphericalArea steradians from the shading point are sampled
+// uniformly in solid angle (sampleSphericalTriangle): that removes the 1 / r^2 and the emitter's cosine
+// from the estimate, what area sampling leaves noisy next to a large or near light. Below it the two
+// densities differ by about the solid angle itself (r^2 / cos varies over the emitter by that share), so
+// area sampling is as good and cheaper; 0.1 sr is where the difference starts to show (the Cornell box's
+// lamp, 0.05 sr from its floor, renders the same either way: BENCHMARKS.md, "Samplers"). Beyond
+// kMaxSphericalArea (nearly a hemisphere) the spherical triangle is ill-conditioned (pbrt-v4's bound).
+// SPHERICAL_LIGHT_SAMPLING (set by the renderer from RenderSettings::lightSampling: --light-sampling
+// auto chooses it for scenes with an emitter close to a surface it faces, gpu/light_strategy.h): 1
+// samples as above, 0 always by area (the spherical code costs registers even where no emitter is
+// large enough to take it).
 #ifndef SPHERICAL_LIGHT_SAMPLING
-#define SPHERICAL_LIGHT_SAMPLING 1
+#define SPHERICAL_LIGHT_SAMPLING 0
 #endif
-const float kMinSphericalArea = 3e-4, kMaxSphericalArea = 6.22;
+const float kMinSphericalArea = 0.1, kMaxSphericalArea = 6.22;
 
-// The solid angle of triangle tri seen from `from`, or 0 when sampleLight samples it by area (too small,
-// too large, or seen from behind: one-sided emitters).
+// The solid angle of triangle tri seen from `from`, or 0 when sampleLight samples it by area (small,
+// too large, or seen from behind: one-sided emitters). The choice is a function of (tri, from) alone,
+// so lightPdf makes the same one. A cheap estimate (area x cos / d^2 at the centroid) decides first;
+// the exact solid angle is computed only for the emitters it sends to spherical sampling.
 float sphericalSamplingArea(TriangleData tri, vec3 from) {
 #if SPHERICAL_LIGHT_SAMPLING
+    vec3 n = cross(tri.e1, tri.e2);                             // twice the area, along the normal
+    vec3 c = tri.v0 + (tri.e1 + tri.e2) * (1.0 / 3.0) - from;  // to the centroid
+    float facing = -dot(n, c);
+    float d2 = dot(c, c);
+    if (facing <= 0.0 || facing < 2.0 * kMinSphericalArea * d2 * sqrt(d2)) return 0.0;
     vec3 a = tri.v0 - from;
-    if (dot(cross(tri.e1, tri.e2), a) >= 0.0) return 0.0;
     float area = sphericalTriangleArea(normalize(a), normalize(a + tri.e1), normalize(a + tri.e2));
-    return area > kMinSphericalArea && area < kMaxSphericalArea ? area : 0.0;
+    return area > 0.0 && area < kMaxSphericalArea ? area : 0.0;
 #else
     return 0.0;
 #endif

@@ -51,6 +51,7 @@ const char* kBenchUsage =
     "  --integrator NAME     naive | bsdf | nee | bdpt (default nee)\n"
     "  --sampler NAME        sobol (default; independent with --native, the native reference's) |\n"
     "                        independent\n"
+    "  --light-sampling NAME auto (default) | area | solid-angle: how nee samples points on emitters\n"
     "  --bvh-threads N       threads that build the BVH (default: every CPU); the tree is the same\n"
     "  --samples-per-pass N  samples per pixel per draw in the timed runs, 1 to 16 (default 8); the\n"
     "                        warm-up, whose first pass is the first frame, draws 1\n"
@@ -144,8 +145,8 @@ int benchCommand(const std::vector<std::string>& argv) {
     // for before the first pixel (context, load, BVH, upload, compile, JIT, first pass) comes after.
     auto start = bench::Clock::now();
     Args args(argv,
-              {"--size", "--spp", "--runs", "--max-depth", "--integrator", "--sampler", "--json",
-               "--max-triangles", "--scenes", "--bvh-threads", "--samples-per-pass", "--shader-dir",
+              {"--size", "--spp", "--runs", "--max-depth", "--integrator", "--sampler", "--light-sampling",
+               "--json", "--max-triangles", "--scenes", "--bvh-threads", "--samples-per-pass", "--shader-dir",
                "--study", "--budget", "--reference-spp"},
               {"-h", "--help", "--suite", "--with-bunny", "--native"});
     if (args.has("-h") || args.has("--help")) {
@@ -179,6 +180,11 @@ int benchCommand(const std::vector<std::string>& argv) {
     settings.render.integrator = parseIntegrator(args.text("--integrator").value_or("nee"));
     // The native reference draws independent numbers (src/native): with --native the shader does too,
     // unless the user asked for another sampler, which would compare two algorithms.
+    if (auto l = args.text("--light-sampling")) {
+        settings.render.lightSampling = parseLightSampling(*l);
+        if (args.has("--native") && settings.render.lightSampling != LightSampling::Auto)
+            throw Error("--native: the native reference makes the automatic light-sampling choice only");
+    }
     if (auto s = args.text("--sampler")) {
         settings.render.sampler = parseSampler(*s);
         if (args.has("--native") && settings.render.sampler != Sampler::Independent)

@@ -50,6 +50,8 @@ const char* kRenderUsage =
     "                        per channel: fewer fireflies, but BIASED (darker); nee, bsdf, naive; off\n"
     "  --sampler NAME        sobol (default: Owen-scrambled Sobol points, stratified in every pixel) |\n"
     "                        independent (independent uniform numbers, the textbook's Monte Carlo)\n"
+    "  --light-sampling NAME auto (default: solid-angle when an emitter faces a close surface) | area |\n"
+    "                        solid-angle (nee: emitters subtending over 0.1 sr sampled by solid angle)\n"
     "  --eye X,Y,Z --target X,Y,Z --up X,Y,Z --fov DEG\n"
     "                        camera (default: the scene file's, else one that frames the scene)\n"
     "  --view NAME           radiance (default) | depth | normal | albedo: what the primary ray through\n"
@@ -112,30 +114,32 @@ void checkOutputPath(const std::string& path) {
 }  // namespace
 
 int renderCommand(const std::vector<std::string>& argv) {
-    Args args(argv, {"-o",
-                     "--output",
-                     "--size",
-                     "--spp",
-                     "--max-depth",
-                     "--seed",
-                     "--integrator",
-                     "--sampler",
-                     "--clamp-indirect",
-                     "--eye",
-                     "--target",
-                     "--up",
-                     "--fov",
-                     "--view",
-                     "--exposure",
-                     "--tonemap",
-                     "--samples-per-pass",
-                     "--shader-dir",
-                     "--backend",
-                     "--sample-offset",
-                     "--time-budget",
-                     "--resume",
-                     "--denoise",
-                     "--denoised-out"},
+    Args args(argv,
+              {"-o",
+               "--output",
+               "--size",
+               "--spp",
+               "--max-depth",
+               "--seed",
+               "--integrator",
+               "--sampler",
+               "--light-sampling",
+               "--clamp-indirect",
+               "--eye",
+               "--target",
+               "--up",
+               "--fov",
+               "--view",
+               "--exposure",
+               "--tonemap",
+               "--samples-per-pass",
+               "--shader-dir",
+               "--backend",
+               "--sample-offset",
+               "--time-budget",
+               "--resume",
+               "--denoise",
+               "--denoised-out"},
               {"--stats", "--quiet", "-h", "--help"});
     if (args.has("-h") || args.has("--help")) {
         std::fputs(kRenderUsage, stdout);
@@ -186,6 +190,7 @@ int renderCommand(const std::vector<std::string>& argv) {
     // Flags, else the scene file, else RenderSettings' defaults (written once, in render/settings.h).
     settings.sampler =
         parseSampler(args.text("--sampler").value_or(d.sampler.value_or(samplerName(settings.sampler))));
+    if (auto l = args.text("--light-sampling")) settings.lightSampling = parseLightSampling(*l);
     settings.clampIndirect =
         args.number("--clamp-indirect").value_or(d.clampIndirect.value_or(settings.clampIndirect));
     if (auto v = args.text("--view")) settings.view = parseView(*v);

@@ -30,6 +30,7 @@ const char* kViewUsage =
     "  --seed S              random seed (default: the scene file's, else 0)\n"
     "  --integrator NAME     naive | bsdf | nee | bdpt (default: the scene file's, else nee)\n"
     "  --sampler NAME        sobol (default) | independent: where the random numbers come from\n"
+    "  --light-sampling NAME auto (default) | area | solid-angle: how nee samples points on emitters\n"
     "  --clamp-indirect X    clamp each sample's indirect light to X per channel (biased; off)\n"
     "  --view NAME           radiance | depth | normal | albedo | bounces | nodes | triangles | cost\n"
     "  --split NAME          split view: the right half uses integrator NAME\n"
@@ -70,6 +71,7 @@ int viewCommand(const std::vector<std::string>& argv) {
                "--seed",
                "--integrator",
                "--sampler",
+               "--light-sampling",
                "--clamp-indirect",
                "--view",
                "--split",
@@ -115,6 +117,7 @@ int viewCommand(const std::vector<std::string>& argv) {
     c.render.integrator = parseIntegrator(args.text("--integrator").value_or(d.integrator.value_or("nee")));
     c.render.sampler =
         parseSampler(args.text("--sampler").value_or(d.sampler.value_or(samplerName(c.render.sampler))));
+    if (auto l = args.text("--light-sampling")) c.render.lightSampling = parseLightSampling(*l);
     c.render.clampIndirect =
         args.number("--clamp-indirect").value_or(d.clampIndirect.value_or(c.render.clampIndirect));
     if (auto v = args.text("--view")) c.render.view = parseView(*v);

@@ -131,12 +131,18 @@ glm::vec3 sampleSphericalTriangle(const glm::vec3& A, const glm::vec3& B, const 
 }
 
 // lights.glsl sphericalSamplingArea(): the solid angle when the emitter is sampled by it, else 0.
-float sphericalSamplingArea(const Tri& tri, const glm::vec3& from) {
+float sphericalSamplingArea(const Scene& scene, const Tri& tri, const glm::vec3& from) {
+    constexpr float kMinSphericalArea = 0.1f, kMaxSphericalArea = 6.22f;
+    if (!scene.solidAngleLights) return 0.0f;
+    glm::vec3 n = glm::cross(tri.e1, tri.e2);
+    glm::vec3 c = tri.v0 + (tri.e1 + tri.e2) * (1.0f / 3.0f) - from;
+    float facing = -glm::dot(n, c);
+    float d2 = glm::dot(c, c);
+    if (facing <= 0.0f || facing < 2.0f * kMinSphericalArea * d2 * std::sqrt(d2)) return 0.0f;
     glm::vec3 a = tri.v0 - from;
-    if (glm::dot(glm::cross(tri.e1, tri.e2), a) >= 0.0f) return 0.0f;
     float area =
         sphericalTriangleArea(glm::normalize(a), glm::normalize(a + tri.e1), glm::normalize(a + tri.e2));
-    return area > 3e-4f && area < 6.22f ? area : 0.0f;
+    return area > 0.0f && area < kMaxSphericalArea ? area : 0.0f;
 }
 
 class PathTracer {
@@ -284,7 +290,7 @@ class PathTracer {
         }
         ls.normal = glm::normalize(glm::cross(tri.e1, tri.e2));
         ls.offset = surfaceOffset(tri);
-        float solidAngle = sphericalSamplingArea(tri, from);
+        float solidAngle = sphericalSamplingArea(scene_, tri, from);
         if (solidAngle > 0.0f) {
             glm::vec3 a = tri.v0 - from;
             ls.dir = sampleSphericalTriangle(glm::normalize(a), glm::normalize(a + tri.e1),
@@ -313,7 +319,7 @@ class PathTracer {
     // lights.glsl lightPdf()
     float lightPdf(const glm::vec3& from, const Ray& ray, const Hit& hit) const {
         const Tri& tri = scene_.tris[hit.triangle];
-        float solidAngle = sphericalSamplingArea(tri, from);
+        float solidAngle = sphericalSamplingArea(scene_, tri, from);
         if (solidAngle > 0.0f) return (1.0f - environmentSelection_) * tri.lightPmf / solidAngle;
         float cosLight = std::abs(glm::dot(glm::normalize(glm::cross(tri.e1, tri.e2)), ray.dir));
         return (1.0f - environmentSelection_) * emitterAreaPdf(tri) * hit.t * hit.t / cosLight;

@@ -1,5 +1,7 @@
 #include "native/native_scene.h"
 
+#include "gpu/light_strategy.h"
+
 #include <algorithm>
 #include <cmath>
 #include <string>
@@ -8,6 +10,7 @@
 #include "bvh/wide_bvh.h"
 #include "core/error.h"
 #include "gpu/layout.h"
+#include "gpu/light_strategy.h"
 #include "scene/light_selection.h"
 
 namespace fp::native {
@@ -38,6 +41,7 @@ Scene buildScene(const fp::Scene& scene, const BvhBuildOptions& options) {
     AabbArray bounds;
     for (const Triangle& t : scene.triangles) bounds.push_back(t.bounds());
     Bvh bvh = buildBinnedSah(bounds, options);
+    out.solidAngleLights = emittersFaceCloseSurfaces(scene, bvh);
 
     // Emitters chosen in proportion to their power, with the probabilities gpu/pack.cpp stores.
     std::vector<float> pmf = emitterPmfs(scene, bvh.primIndex.data(), bvh.primIndex.size()).pmf;

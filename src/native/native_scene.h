@@ -58,7 +58,8 @@ struct Scene {
     std::vector<std::array<glm::vec3, 3>> normals;
     std::vector<glm::vec3> diffuse, emission;  // per material
     std::vector<Light> lights;
-    glm::vec3 environment{0.0f};  // constant radiance from every unblocked direction
+    glm::vec3 environment{0.0f};    // constant radiance from every unblocked direction
+    bool solidAngleLights = false;  // the renderer's LightSampling::Auto choice (gpu/light_strategy.h)
 };
 
 // Throws fp::Error for what the reference does not implement (unsupportedFeature).

@@ -89,6 +89,7 @@ std::string renderFingerprint(const Scene& scene, const RenderSettings& settings
     f.value(settings.seed);
     f.value(settings.integrator);
     f.value(settings.sampler);
+    f.value(settings.lightSampling);
     f.value(settings.clampIndirect);
     f.value(settings.view);
     char text[17];

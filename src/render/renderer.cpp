@@ -8,6 +8,7 @@
 
 #include "core/error.h"
 #include "gpu/layout.h"
+#include "gpu/light_strategy.h"
 #include "scene/spectrum.h"
 
 namespace fp {
@@ -41,6 +42,7 @@ Renderer::Renderer(const Scene& scene, ShaderLibrary shaders, const BvhBuildOpti
     stats_.bvh = computeStats(bvh);
 
     start = std::chrono::steady_clock::now();
+    closeEmitters_ = emittersFaceCloseSurfaces(scene, bvh);
     PackedScene packed = packScene(scene, bvh);
     stats_.triangles = packed.triangleCount;
     stats_.emitters = packed.lightCount;
@@ -80,6 +82,9 @@ std::unique_ptr<Program> Renderer::compile(Integrator integrator, const char* fr
                          std::string("\"integrators/") + integratorName(integrator) + ".glsl\"");
     defines.emplace_back("DEBUG_VIEW", std::to_string(int(settings_.view)));
     defines.emplace_back("SAMPLER", settings_.sampler == Sampler::Sobol ? "1" : "0");
+    bool solidAngle = settings_.lightSampling == LightSampling::SolidAngle ||
+                      (settings_.lightSampling == LightSampling::Auto && closeEmitters_);
+    defines.emplace_back("SPHERICAL_LIGHT_SAMPLING", solidAngle ? "1" : "0");
     defines.emplace_back("GUIDES", settings_.guides ? "1" : "0");
     defines.emplace_back("MATERIAL_TYPES", std::to_string(materialTypes_));
     defines.emplace_back("ENVIRONMENT_MAP", environmentTextures_ ? "1" : "0");
@@ -178,7 +183,8 @@ void Renderer::configure(const RenderSettings& settings, const Camera& camera) {
                         (settings.split && settings.split->integrator != settings_.split->integrator);
     bool recompile = !program_ || settings.integrator != settings_.integrator ||
                      settings.view != settings_.view || settings.guides != settings_.guides ||
-                     settings.sampler != settings_.sampler || splitChanged;
+                     settings.sampler != settings_.sampler ||
+                     settings.lightSampling != settings_.lightSampling || splitChanged;
     if (recompile) {
         // Compile both programs before changing anything, so that a compile error leaves the renderer
         // exactly as it was.

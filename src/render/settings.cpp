@@ -34,6 +34,23 @@ const char* samplerName(Sampler sampler) {
     return sampler == Sampler::Sobol ? "sobol" : "independent";
 }
 
+LightSampling parseLightSampling(const std::string& name) {
+    for (LightSampling l : kAllLightSamplings)
+        if (name == lightSamplingName(l)) return l;
+    throw Error("unknown light sampling '" + name + "' (choose auto, area or solid-angle)");
+}
+
+const char* lightSamplingName(LightSampling sampling) {
+    switch (sampling) {
+        case LightSampling::Area:
+            return "area";
+        case LightSampling::SolidAngle:
+            return "solid-angle";
+        default:
+            return "auto";
+    }
+}
+
 View parseView(const std::string& name) {
     for (View v : kAllViews)
         if (name == viewName(v)) return v;

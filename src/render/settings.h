@@ -21,6 +21,15 @@ constexpr Sampler kAllSamplers[] = {Sampler::Independent, Sampler::Sobol};
 Sampler parseSampler(const std::string& name);  // throws fp::Error listing the choices
 const char* samplerName(Sampler sampler);
 
+// How next-event estimation samples a point on an emitter (glsl/common/lights.glsl): uniformly by area,
+// or uniformly in the solid angle the emitter subtends (Arvo 1995) where that is large; auto picks
+// solid angle for scenes with an emitter close to a surface it faces (gpu/light_strategy.h).
+enum class LightSampling { Auto, Area, SolidAngle };
+constexpr LightSampling kAllLightSamplings[] = {LightSampling::Auto, LightSampling::Area,
+                                                LightSampling::SolidAngle};
+LightSampling parseLightSampling(const std::string& name);  // throws fp::Error listing the choices
+const char* lightSamplingName(LightSampling sampling);
+
 // What each pixel shows: the rendered radiance, one property of the first hit, or a cost the path
 // tracer pays there (glsl/passes/debug_views.glsl).
 // Cost: per path, (BVH nodes visited, triangles tested, surfaces shaded) summed over all its rays, in RGB.
@@ -58,6 +67,7 @@ struct RenderSettings {
     uint32_t seed = 0;
     Integrator integrator = Integrator::Nee;
     Sampler sampler = Sampler::Sobol;
+    LightSampling lightSampling = LightSampling::Auto;
     View view = View::Radiance;
     // Samples each pixel takes in one draw call, at most kMaxSamplesPerPass: llvmpipe stops a shader loop
     // after a fixed number of iterations (measured: 256 samples of the 32x32 Cornell box in one pass

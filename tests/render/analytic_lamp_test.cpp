@@ -40,23 +40,28 @@ TEST(AnalyticLamp, BdptLightsTheFloorUnderALampCloseAboveIt) {
 // nee samples a lamp that subtends a large solid angle uniformly in that solid angle (lights.glsl,
 // Arvo 1995), not by area: the floor under a lamp 0.2 of its side above it gets the same radiance with
 // less than half the variance (the 1 / r^2 and the lamp's cosine leave the estimate). Both by the
-// analytic value, and against the shaders with SPHERICAL_LIGHT_SAMPLING 0.
+// analytic value; --light-sampling auto chooses solid angle for this scene (gpu/light_strategy.h).
 TEST(AnalyticLamp, NeeSamplesACloseLampBySolidAngle) {
     ensureGlContext();
     const LampCase c = lampCases()[0];
     Scene scene = lampOverFloor(c);
-    Renderer spherical(scene, testShaders());
-    Renderer byArea(scene, shadersWithDefine("common/lights.glsl", "SPHERICAL_LIGHT_SAMPLING", "0"));
-    auto meanVariance = [&](Renderer& renderer) {
-        Accumulation acc = renderScene(renderer, lampCamera(c), Integrator::Nee, 16, 64, 1, 11);
+    Renderer renderer(scene, testShaders());
+    auto render = [&](LightSampling sampling) {
+        Accumulation acc = renderScene(renderer, lampCamera(c), Integrator::Nee, 16, 64, 1, 11,
+                                       Sampler::Independent, sampling);
         expectLampRadiance(acc, c, 4);
+        return acc;
+    };
+    Accumulation automatic = render(LightSampling::Auto), spherical = render(LightSampling::SolidAngle),
+                 area = render(LightSampling::Area);
+    expectBitIdentical(automatic, spherical, "auto against solid-angle on a lamp close above a floor");
+    auto variance = [](const Accumulation& acc) {
         double se = estimate(acc).standardError.g;
         return se * se;
     };
-    double sphericalVariance = meanVariance(spherical), areaVariance = meanVariance(byArea);
-    std::printf("  variance of the image mean: by solid angle %.3g, by area %.3g\n", sphericalVariance,
-                areaVariance);
-    EXPECT_LT(sphericalVariance, 0.5 * areaVariance);
+    std::printf("  variance of the image mean: by solid angle %.3g, by area %.3g\n", variance(spherical),
+                variance(area));
+    EXPECT_LT(variance(spherical), 0.5 * variance(area));
 }
 
 }  // namespace

@@ -336,9 +336,11 @@ class Rgba8Target {
 // variance overstates it, and the tests would lose their edge). The Sobol sampler has tests of its own.
 inline Accumulation renderScene(Renderer& renderer, const Camera& camera, Integrator integrator, int size,
                                 int spp, int maxDepth, uint32_t seed = 1,
-                                Sampler sampler = Sampler::Independent) {
+                                Sampler sampler = Sampler::Independent,
+                                LightSampling lightSampling = LightSampling::Auto) {
     RenderSettings s;
     s.sampler = sampler;
+    s.lightSampling = lightSampling;
     s.width = s.height = size;
     s.integrator = integrator;
     s.maxDepth = maxDepth;

@@ -199,6 +199,9 @@ TEST(SameAccumulation, IgnoresNothingTheRendererReads) {
     b.sampler = Sampler::Independent;
     EXPECT_FALSE(sameAccumulation(a, b)) << "another sampler";
     b = a;
+    b.lightSampling = LightSampling::Area;
+    EXPECT_FALSE(sameAccumulation(a, b)) << "another light sampling";
+    b = a;
     b.clampIndirect = 4.0f;
     EXPECT_FALSE(sameAccumulation(a, b)) << "a clamp";
     b = a;

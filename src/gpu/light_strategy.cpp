@@ -1,0 +1,50 @@
+#include "gpu/light_strategy.h"
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+#include "bvh/ray_query.h"
+
+namespace fp {
+namespace {
+
+// Solid angle of the triangle a, b, c seen from p: Van Oosterom & Strackee 1983, eq. 8 (as
+// glsl/common/sampling.glsl sphericalTriangleArea).
+double solidAngle(const glm::dvec3& p, const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c) {
+    glm::dvec3 u = glm::normalize(a - p), v = glm::normalize(b - p), w = glm::normalize(c - p);
+    return 2.0 * std::atan2(std::abs(glm::dot(u, glm::cross(v, w))),
+                            1.0 + glm::dot(u, v) + glm::dot(v, w) + glm::dot(w, u));
+}
+
+}  // namespace
+
+bool emittersFaceCloseSurfaces(const Scene& scene, const Bvh& bvh) {
+    constexpr double kLargeSolidAngle = 0.5;
+    constexpr size_t kMaxRays = 4096;
+    std::vector<uint32_t> emitters;
+    for (uint32_t i = 0; i < scene.triangles.size(); ++i)
+        if (scene.materials[scene.triangles[i].material].isEmissive()) emitters.push_back(i);
+    if (emitters.empty()) return false;
+    std::vector<TriangleVerts> verts;
+    verts.reserve(scene.triangles.size());
+    for (const Triangle& t : scene.triangles) verts.push_back({t.p[0], t.p[1], t.p[2]});
+    size_t stride = std::max<size_t>(1, emitters.size() / kMaxRays);
+    for (size_t k = 0; k < emitters.size(); k += stride) {
+        const Triangle& t = scene.triangles[emitters[k]];
+        glm::vec3 n = t.geometricNormal();
+        if (!(glm::dot(n, n) > 0.0f)) continue;
+        Ray ray;
+        ray.origin = (t.p[0] + t.p[1] + t.p[2]) / 3.0f;
+        ray.dir = glm::normalize(n);  // the emitting side (one-sided emitters: the front)
+        float extent = glm::length(t.p[1] - t.p[0]) + glm::length(t.p[2] - t.p[0]);
+        ray.tMin = 1e-4f * extent;  // past the emitter itself
+        RayHit hit = closestHit(bvh, verts, ray);
+        if (!hit.hit()) continue;
+        glm::dvec3 p = glm::dvec3(ray.origin) + double(hit.t) * glm::dvec3(ray.dir);
+        if (solidAngle(p, t.p[0], t.p[1], t.p[2]) > kLargeSolidAngle) return true;
+    }
+    return false;
+}
+
+}  // namespace fp

@@ -1,0 +1,47 @@
+// Which scenes --light-sampling auto samples by solid angle (gpu/light_strategy.h; here beside the
+// analytic lamp scenes it is tested on): those with an emitter
+// close to the surface it faces, and no others.
+#include <gtest/gtest.h>
+
+#include "bvh/bvh.h"
+#include "gpu/light_strategy.h"
+#include "render/analytic_lamp.h"
+#include "scene/builtin_scene.h"
+
+namespace fp {
+namespace {
+
+Bvh bvhOf(const Scene& scene) {
+    AabbArray bounds;
+    for (const Triangle& t : scene.triangles) bounds.push_back(t.bounds());
+    return buildBinnedSah(bounds, BvhBuildOptions{});
+}
+
+bool choosesSolidAngle(const Scene& scene) {
+    return emittersFaceCloseSurfaces(scene, bvhOf(scene));
+}
+
+TEST(LightStrategy, ALampCloseAboveAFloorIsSampledBySolidAngle) {
+    for (const test::LampCase& c : test::lampCases())  // 0.2 and 0.02 of its side above the floor
+        EXPECT_TRUE(choosesSolidAngle(test::lampOverFloor(c))) << c.name;
+}
+
+TEST(LightStrategy, TheCornellBoxIsSampledByArea) {
+    // Its lamp subtends 0.05 sr from the floor and 0.29 sr from the top of the tall block.
+    EXPECT_FALSE(choosesSolidAngle(builtinCornellBox()));
+}
+
+TEST(LightStrategy, ALampFarAboveTheFloorOrFacingNothingIsSampledByArea) {
+    test::LampCase high{"unit lamp 3 sides up", 1.0, 3.0, 0.0};
+    EXPECT_FALSE(choosesSolidAngle(test::lampOverFloor(high)));
+    Scene upward = test::lampOverFloor(test::lampCases()[0]);
+    for (Triangle& t : upward.triangles)
+        if (t.material == 1) std::swap(t.p[1], t.p[2]);  // the lamp now emits up, into nothing
+    EXPECT_FALSE(choosesSolidAngle(upward));
+    Scene dark = test::lampOverFloor(test::lampCases()[0]);
+    dark.materials[1].emission = glm::vec3(0.0f);
+    EXPECT_FALSE(choosesSolidAngle(dark)) << "no emitter";
+}
+
+}  // namespace
+}  // namespace fp
