@@ -82,7 +82,7 @@ TEST(SobolSampler, CornellBoxConvergesToTheSameImageWithLessError) {
     std::printf(
         "Cornell box, nee 32 spp, mean squared error against 2048 spp: Sobol %.3g, independent %.3g\n",
         errorSobol / 4.0, errorIndependent / 4.0);
-    EXPECT_LT(errorSobol, 0.8 * errorIndependent);
+    EXPECT_LT(errorSobol, 0.5 * errorIndependent);  // measured 0.18
 }
 
 // Blue noise (rng.glsl): neighbouring pixels' errors cancel. Direct light in the Cornell box at 1 spp,
