@@ -78,7 +78,8 @@ void rngInitSecondStream(uint seed, uvec2 pixel, uint sampleIndex) {
 // Sample k of pixel p depends only on (seed, p, k): any range of samples renders on its own.
 // Dimension layout (the order of the calls): pair 0 the pixel jitter; then per bounce, nee: light
 // choice, emitter pick, point on the emitter (2D), BSDF direction (2D), BSDF lobe, roulette; bsdf and
-// naive: BSDF direction, lobe, roulette; bdpt's light subpath starts at pair 2^31 (its second stream).
+// naive: BSDF direction, lobe, roulette; bdpt's light subpath starts at pair 2^31 (its second stream,
+// scrambled per pixel: see rand2).
 
 // Laine & Karras 2011 style permutation, with Burley's constants: flips each bit of x depending on
 // the bits below it only.
@@ -164,11 +165,19 @@ uint subsetParities(uint z) {
 }
 
 vec2 rand2() {
-    uvec4 h = pcg4d(uvec4(rngKey.z, rngKey.w, 0x5eed50b1u, 0x0b1ad5u));  // the same for every pixel
+    // The camera stream's scrambles are the same for every pixel (blue noise). bdpt's light subpaths
+    // (the second stream) land anywhere on the screen, where a neighbour means nothing, and a shared
+    // scramble makes all pixels' light paths of one sample one stratified set whose splats pile up
+    // (Cornell, 16 spp: relative MSE 2.2x that of independent numbers); they keep scrambles of their own
+    // per pixel and no shift, and are then better than independent numbers (0.73x).
+    bool lightStream = rngKey.w >= 0x80000000u;
+    uvec4 h = pcg4d(uvec4(rngKey.z, rngKey.w, lightStream ? rngKey.x : 0x5eed50b1u, 0x0b1ad5u));
     ++rngKey.w;
     uint i = bitfieldReverse(laineKarrasPermutation(gSampleReversed, h.x));  // shuffle the samples, per pair
     // The pixel's Z-order index, Owen-scrambled per pair.
-    uint z = bitfieldReverse(laineKarrasPermutation(gZOrderReversed, h.w)) & ((1u << (2u * kTileLevels)) - 1u);
+    uint z = lightStream ? 0u
+                         : bitfieldReverse(laineKarrasPermutation(gZOrderReversed, h.w)) &
+                               ((1u << (2u * kTileLevels)) - 1u);
     // All values in reversed-bit form (bit q is the digit of 2^-(q+1)): the first dimension is the
     // radical inverse, reverse(i). XOR with the pixel's shift, Owen-scramble (reverse(LK(reverse(v))):
     // the shift goes first, so that every pixel's k-th point lands in a different place), reverse.

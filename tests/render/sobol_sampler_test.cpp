@@ -128,5 +128,33 @@ TEST(SobolSampler, NeighboursErrorsCancel) {
     EXPECT_LT(sobol, 0.8) << "neighbouring pixels' errors do not cancel";
 }
 
+// bdpt's light subpaths land anywhere on the screen; with the camera stream's scramble shared by all
+// pixels, all pixels' light paths of one sample would be one stratified set whose splats pile up in
+// bright specks (relative MSE 2.2x that of independent numbers). They keep per-pixel scrambles
+// (rng.glsl, rand2), which makes bdpt's error smaller than with independent numbers. The Cornell box at
+// 128x128 (two 64x64 tiles of the blue-noise Z-order across), 8 spp, against 512 spp of nee; the mean of
+// squared error over (reference^2 + 0.01), which weighs the dark pixels the specks fall on.
+TEST(SobolSampler, BdptLightSubpathsDoNotPileUp) {
+    ensureGlContext();
+    Scene scene = builtinCornellBox();
+    Renderer renderer(scene, testShaders());
+    const Camera& camera = *scene.camera;
+    const int size = 128;
+    Image reference = renderScene(renderer, camera, Integrator::Nee, size, 512, 5, 50).mean();
+    auto relativeError = [&](Sampler sampler) {
+        Image image = renderScene(renderer, camera, Integrator::Bdpt, size, 8, 5, 1, sampler).mean();
+        double sum = 0.0;
+        for (size_t i = 0; i < image.pixels.size(); ++i)
+            for (int c = 0; c < 3; ++c) {
+                double r = reference.pixels[i][c], d = image.pixels[i][c] - r;
+                sum += d * d / (r * r + 0.01);
+            }
+        return sum / double(3 * image.pixels.size());
+    };
+    double sobol = relativeError(Sampler::Sobol), independent = relativeError(Sampler::Independent);
+    std::printf("bdpt 8 spp, relative MSE: Sobol %.4g, independent %.4g\n", sobol, independent);
+    EXPECT_LT(sobol, independent);
+}
+
 }  // namespace
 }  // namespace fp::test
