@@ -9,7 +9,7 @@ set grid
 set key outside right top
 threshold = 0.0004  # relative MSE under which the report calls an image not noisy
 budget_ms = 16.6667  # one frame at 60 FPS
-set yrange [6.59378e-05:62.4508]
+set yrange [5.14856e-05:57.5718]
 set logscale xy
 
 set output 'error_vs_spp.png'
@@ -34,7 +34,7 @@ plot 'study.csv' every ::1 using (strcol(1) eq 'naive' && strcol(2) eq 'none' ? 
 set output 'error_vs_time.png'
 set title 'Error against render time (this machine; median of the runs)'
 set xlabel 'render + denoise time (ms)'
-set xrange [5.06938:93266.3]
+set xrange [6.47406:59437.7]
 set arrow 1 from budget_ms, graph 0 to budget_ms, graph 1 nohead lc 'red' dt 2 lw 2
 set label 1 '60 FPS frame budget (16.7 ms)' at budget_ms, graph 0.95 offset 0.5, 0 tc 'red'
 plot 'study.csv' every ::1 using (strcol(1) eq 'naive' && strcol(2) eq 'none' ? 1000 * $7 : NaN):9 with linespoints lc 1 dt 1 pt 6 title 'naive', \

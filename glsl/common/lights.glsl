@@ -86,11 +86,21 @@ float environmentPdf(vec3 dir) {
     return environmentSelection() * texelPmf * float(size.x * size.y) / (2.0 * PI * PI * sinTheta);
 }
 
+// One 2D sample for the whole choice: u.x picks the row and u.y the texel in it, and each, rescaled to
+// the picked entry's share, places the point inside the texel (as sampleEmitterPoint reuses the
+// emitter pick's number): the pick's strata and the point's go together, where three pairs would pair
+// them at random, and with the blue-noise sampler the same way in every pixel.
 vec3 sampleEnvironmentDirection() {
     ivec2 size = ENVIRONMENT_SIZE;
-    int y = searchCdf(0, size.y, rand());
-    int x = searchCdf(size.y + y * size.x, size.x, rand());
-    return uvToDirection((vec2(x, y) + rand2()) / vec2(size));
+    vec2 u = rand2();
+    int y = searchCdf(0, size.y, u.x);
+    float below = cdfAt(y - 1);
+    float inRow = clamp((u.x - below) / (cdfAt(y) - below), 0.0, 0.99999994);
+    int row = size.y + y * size.x;
+    int x = searchCdf(row, size.x, u.y);
+    float left = x == 0 ? 0.0 : cdfAt(row + x - 1);
+    float inTexel = clamp((u.y - left) / (cdfAt(row + x) - left), 0.0, 0.99999994);
+    return uvToDirection((vec2(x, y) + vec2(inTexel, inRow)) / vec2(size));
 }
 #else
 vec3 environmentRadiance(vec3 dir) { return uEnvironment; }
