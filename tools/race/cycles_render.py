@@ -3,7 +3,8 @@
 # with Cycles on the CPU, as tools/race_cycles.py asks, and writes the linear image as a PFM (rows bottom
 # first).
 #
-# Matched to fragpath: Lambertian surfaces (Diffuse BSDF, roughness 0), glass (illum 4/6/7/9 or Tf: Glass
+# Matched to fragpath: Lambertian surfaces (Diffuse BSDF, roughness 0; map_Kd as an sRGB image, bilinear,
+# repeated, times Kd), glass (illum 4/6/7/9 or Tf: Glass
 # BSDF with Ni and Pr), metals (Pm: Principled, metallic, GGX, roughness Pr), emitters that emit from their
 # front face only (a counter-clockwise face, as fragpath's), the OBJ's vertex normals where a face gives
 # them and the flat face normal where it does not (Blender's C++ OBJ importer, wm.obj_import; the legacy
@@ -13,6 +14,7 @@
 #   ARGS: OBJ PFM_OUT WIDTH HEIGHT SPP MAX_DEPTH THREADS SEED EYE(x,y,z) TARGET UP FOV_DEGREES
 # (MAX_DEPTH as fragpath counts it: 0 emitters only, 1 direct light)
 import math
+import os
 import struct
 import sys
 
@@ -38,13 +40,34 @@ def read_mtl(path):
         if not words:
             continue
         if words[0] == "newmtl":
-            current = materials.setdefault(words[1], {"Kd": (0.8, 0.8, 0.8), "Ke": (0.0, 0.0, 0.0)})
+            current = materials.setdefault(words[1], {"Ke": (0.0, 0.0, 0.0)})
         elif current is not None and words[0] in ("Kd", "Ke", "Tf"):
             values = [float(w) for w in words[1:4]]
             current[words[0]] = tuple(values + values[:1] * (3 - len(values)))
         elif current is not None and words[0] in ("Ni", "Pr", "Pm", "illum"):
             current[words[0]] = float(words[1])
+        elif current is not None and words[0] == "map_Kd":
+            current["map_Kd"] = os.path.join(os.path.dirname(path), words[-1])
+    for values in materials.values():
+        # fragpath's reading of Kd (src/scene/mtl_parse.cpp): 1 when a map_Kd stands alone, else 0.
+        values.setdefault("Kd", (1.0, 1.0, 1.0) if "map_Kd" in values else (0.0, 0.0, 0.0))
     return materials
+
+
+def linear_image(path):
+    # The texels decoded from sRGB into a float image before Cycles filters them, as fragpath (and GPUs)
+    # do: Cycles filters an 8-bit sRGB image first and decodes after, which darkens a magnified checker's
+    # edges (the textured floor came out 2.8 % darker).
+    encoded = bpy.data.images.load(path)
+    encoded.colorspace_settings.name = "Non-Color"  # the raw texel values, not decoded
+    width, height = encoded.size
+    raw = list(encoded.pixels)
+    decode = lambda c: c / 12.92 if c <= 0.04045 else ((c + 0.055) / 1.055) ** 2.4
+    linear = [decode(v) if i % 4 != 3 else v for i, v in enumerate(raw)]
+    image = bpy.data.images.new(os.path.basename(path) + ".linear", width, height, alpha=True, float_buffer=True)
+    image.colorspace_settings.name = "Linear"
+    image.pixels = linear
+    return image
 
 
 bpy.ops.wm.read_factory_settings(use_empty=True)
@@ -55,7 +78,6 @@ bpy.ops.wm.obj_import(filepath=obj_path, forward_axis="NEGATIVE_Z", up_axis="Y")
 mtl = {}
 for line in open(obj_path):
     if line.startswith("mtllib"):
-        import os
         mtl.update(read_mtl(os.path.join(os.path.dirname(obj_path), line.split(None, 1)[1].strip())))
 
 for material in bpy.data.materials:
@@ -83,6 +105,19 @@ for material in bpy.data.materials:
         diffuse = nodes.new("ShaderNodeBsdfDiffuse")
         diffuse.inputs["Color"].default_value = (*values["Kd"], 1.0)
         diffuse.inputs["Roughness"].default_value = 0.0
+        if "map_Kd" in values:
+            # The texture times Kd: sRGB texels, bilinear, repeat, the OBJ's texture coordinates (as
+            # fragpath's sampleTexture, glsl/common/textures.glsl).
+            texture = nodes.new("ShaderNodeTexImage")
+            texture.image = linear_image(values["map_Kd"])
+            texture.interpolation = "Linear"
+            texture.extension = "REPEAT"
+            multiply = nodes.new("ShaderNodeMixRGB")
+            multiply.blend_type = "MULTIPLY"
+            multiply.inputs["Fac"].default_value = 1.0
+            links.new(texture.outputs["Color"], multiply.inputs["Color1"])
+            multiply.inputs["Color2"].default_value = (*values["Kd"], 1.0)
+            links.new(multiply.outputs["Color"], diffuse.inputs["Color"])
     shader = diffuse.outputs[0]
     if max(values["Ke"]) > 0.0:
         emission = nodes.new("ShaderNodeEmission")
