@@ -13,7 +13,14 @@ Args::Args(const std::vector<std::string>& argv, const std::set<std::string>& va
            const std::set<std::string>& switches) {
     for (size_t i = 0; i < argv.size(); ++i) {
         const std::string& a = argv[i];
-        if (a.size() > 1 && a[0] == '-') {
+        size_t equals = a.find('=');
+        if (a.rfind("--", 0) == 0 && equals != std::string::npos) {  // the GNU form, --option=value
+            std::string name = a.substr(0, equals);
+            if (switches.count(name)) throw Error("option " + name + " takes no value");
+            if (!valued.count(name)) throw Error("unknown option " + name + " (see --help)");
+            if (equals + 1 == a.size()) throw Error("option " + name + " needs a value");
+            values_[name] = a.substr(equals + 1);
+        } else if (a.size() > 1 && a[0] == '-') {
             if (switches.count(a)) {
                 values_[a] = "";
             } else if (valued.count(a)) {

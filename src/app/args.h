@@ -13,8 +13,8 @@ namespace fp {
 
 class Args {
   public:
-    // `valued` flags take the next argument as their value; `switches` take none. Throws fp::Error on
-    // an unknown flag or a missing value.
+    // `valued` flags take the next argument as their value, or the text after '=' (--spp=16);
+    // `switches` take none. Throws fp::Error on an unknown flag or a missing value.
     Args(const std::vector<std::string>& argv, const std::set<std::string>& valued,
          const std::set<std::string>& switches);
 

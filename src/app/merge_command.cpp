@@ -12,11 +12,12 @@ namespace fp {
 namespace {
 
 const char* kMergeUsage =
-    "usage: fragpath merge PART.exr PART.exr ... -o OUT.exr\n"
+    "usage: fragpath merge PART.exr PART.exr ... -o OUT.exr|OUT.pfm|OUT.png\n"
     "\n"
     "Averages partial renders weighted by their sample counts. The parts must come from the same scene\n"
     "and settings (their fingerprints must match) and hold disjoint sample ranges, as written by\n"
-    "`fragpath render --sample-offset K --spp N -o part.exr`.\n";
+    "`fragpath render --sample-offset K --spp N -o part.exr`. The output's extension picks its format:\n"
+    ".exr keeps the sample ranges (merge or --resume it again), .pfm the linear image, .png sRGB.\n";
 
 }  // namespace
 
@@ -32,7 +33,7 @@ int mergeCommand(const std::vector<std::string>& argv) {
     std::vector<PartialRender> parts;
     for (const std::string& path : args.positional()) parts.push_back(readPartial(path));
     PartialRender merged = mergePartials(parts, args.positional());
-    writePartial(*output, merged);
+    writeRenderOutput(*output, merged);
     std::fprintf(stderr, "%s: %llu samples per pixel from %zu parts\n", output->c_str(),
                  (unsigned long long)merged.samples(), parts.size());
     return 0;

@@ -252,10 +252,7 @@ int renderCommand(const std::vector<std::string>& argv) {
 
     Accumulation acc = renderer.readback();
     const int total = renderer.samples();
-    if (lowerCaseExtension(output) == ".exr")
-        writePartial(output, {acc.mean(), {{settings.sampleOffset, uint64_t(total)}}, fingerprint});
-    else
-        writeImage(output, acc.mean(), display);
+    writeRenderOutput(output, {acc.mean(), {{settings.sampleOffset, uint64_t(total)}}, fingerprint}, display);
     if (denoisedOutput) writeImage(*denoisedOutput, denoise(renderer, denoiser), display);
 
     int done = total - already;

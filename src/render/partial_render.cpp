@@ -5,6 +5,8 @@
 #include <sstream>
 
 #include "core/error.h"
+#include "image/file_io.h"
+#include "image/image.h"
 
 namespace fp {
 
@@ -102,6 +104,14 @@ void writePartial(const std::string& path, const PartialRender& partial) {
              {{kRanges, formatRanges(partial.ranges)},
               {kSamples, std::to_string(partial.samples())},
               {kFingerprint, partial.fingerprint}});
+}
+
+void writeRenderOutput(const std::string& path, const PartialRender& partial,
+                       const DisplaySettings& display) {
+    if (lowerCaseExtension(path) == ".exr")
+        writePartial(path, partial);
+    else
+        writeImage(path, partial.mean, display);
 }
 
 PartialRender readPartial(const std::string& path) {

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "image/exr.h"
+#include "image/image.h"
 #include "render/settings.h"
 #include "scene/scene.h"
 
@@ -29,6 +30,10 @@ struct PartialRender {
 std::string renderFingerprint(const Scene& scene, const RenderSettings& settings, const Camera& camera);
 
 void writePartial(const std::string& path, const PartialRender& partial);
+// A render's output by the extension of path: .exr keeps the sample ranges and fingerprint
+// (writePartial: it can be merged or resumed); .pfm and .png get the mean image (writeImage).
+void writeRenderOutput(const std::string& path, const PartialRender& partial,
+                       const DisplaySettings& display = {});
 // Throws fp::Error naming the file when it is not an EXR written by fragpath (no sample ranges).
 PartialRender readPartial(const std::string& path);
 

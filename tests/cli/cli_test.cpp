@@ -50,6 +50,19 @@ TEST_F(Cli, RendersTheBuiltInCornellBoxToEveryFormat) {
     EXPECT_GT(meanColor(exr).x, 0.01);
 }
 
+// Options take their value after a space or after '=' (the GNU form), with the same result; a switch
+// given a value, or '=' with nothing after it, is an error (issue 17: "--spp=16 is unknown option").
+TEST_F(Cli, OptionsTakeTheirValueAfterAnEqualsSign) {
+    CliRun spaced = fragpath("render --size 8x6 --spp 2 --seed 3 --quiet -o " + path("spaced.pfm"));
+    CliRun equals = fragpath("render --size=8x6 --spp=2 --seed=3 --quiet -o " + path("equals.pfm"));
+    ASSERT_EQ(spaced.exitCode, 0) << spaced.output;
+    ASSERT_EQ(equals.exitCode, 0) << equals.output;
+    EXPECT_EQ(readImage(path("spaced.pfm")).pixels, readImage(path("equals.pfm")).pixels);
+    expectError("render --size 8x6 --quiet=yes", "option --quiet takes no value");
+    expectError("render --size 8x6 --spp=", "option --spp needs a value");
+    expectError("render --size 8x6 --nonsense=3", "unknown option --nonsense");
+}
+
 TEST_F(Cli, HelpListsTheOptions) {
     CliRun r = fragpath("render --help");
     EXPECT_EQ(r.exitCode, 0);

@@ -2,7 +2,10 @@
 // merged give the image one render of all the samples gives, up to float summation order.
 #include <gtest/gtest.h>
 
+#include <fstream>
+
 #include "cli/fragpath_runner.h"
+#include "image/image.h"
 #include "render/partial_render.h"
 
 namespace fp {
@@ -51,6 +54,26 @@ void PartialRenders::fourPartsMergedEqualOneRender(const std::string& options) {
     EXPECT_EQ(merged.ranges[0].first, 0u);
     EXPECT_EQ(merged.fingerprint, whole.fingerprint);
     expectClose(merged.mean, whole.mean);
+}
+
+// merge writes the format its output's extension names (issue 17: -o merged.pfm got EXR bytes): a
+// .pfm or .png gets the merged image, the .exr the same image with its sample ranges.
+TEST_F(PartialRenders, MergeWritesTheFormatOfItsOutput) {
+    render("--spp 2", "a.exr");
+    render("--spp 2 --sample-offset 2", "b.exr");
+    for (const char* out : {"merged.exr", "merged.pfm", "merged.png"}) {
+        test::CliRun r =
+            test::runFragpath("merge " + path("a.exr") + " " + path("b.exr") + " -o " + path(out));
+        ASSERT_EQ(r.exitCode, 0) << r.output;
+    }
+    std::ifstream pfm(path("merged.pfm"), std::ios::binary), png(path("merged.png"), std::ios::binary);
+    char pfmMagic[2] = {}, pngMagic[4] = {};
+    pfm.read(pfmMagic, 2);
+    png.read(pngMagic, 4);
+    EXPECT_EQ(std::string(pfmMagic, 2), "PF") << "a .pfm output is a PFM file";
+    EXPECT_EQ(std::string(pngMagic + 1, 3), "PNG") << "a .png output is a PNG file";
+    EXPECT_EQ(readImage(path("merged.pfm")).pixels, readPartial(path("merged.exr")).mean.pixels);
+    EXPECT_EQ(readPartial(path("merged.exr")).samples(), 4u);
 }
 
 TEST_F(PartialRenders, OverlapsAndDifferentSettingsAreRefused) {
