@@ -1,3 +1,4 @@
+#include <algorithm>
 #include <cmath>
 
 #include "scene/obj_mesh.h"
@@ -43,11 +44,13 @@ std::vector<Triangle> buildTriangles(const ObjMesh& mesh, MeshRepairs* repairs,
     // Positions as the renderer will store them (float), so that the degeneracy test judges exactly the
     // triangles downstream stages see.
     std::vector<glm::dvec3> stored(mesh.positions.size());
-    std::vector<bool> finite(mesh.positions.size());
+    std::vector<bool> finite(mesh.positions.size()), inRange(mesh.positions.size());
     for (size_t i = 0; i < stored.size(); ++i) {
         glm::vec3 p(mesh.positions[i]);
         finite[i] = mesh.positionFinite[i] && std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z);
         stored[i] = glm::dvec3(p);
+        inRange[i] =
+            std::max({std::abs(stored[i].x), std::abs(stored[i].y), std::abs(stored[i].z)}) <= kMaxCoordinate;
     }
 
     std::vector<Triangle> triangles;
@@ -59,14 +62,19 @@ std::vector<Triangle> buildTriangles(const ObjMesh& mesh, MeshRepairs* repairs,
         const ObjCorner* corners = &mesh.corners[face.firstCorner];
         size_t expected = face.cornerCount - 2;  // triangles a polygon of this size yields
 
-        bool allFinite = true;
+        bool allFinite = true, allInRange = true;
         polygon.clear();
         for (uint32_t i = 0; i < face.cornerCount; ++i) {
             allFinite = allFinite && finite[corners[i].vertex];
+            allInRange = allInRange && inRange[corners[i].vertex];
             polygon.push_back(stored[corners[i].vertex]);
         }
         if (!allFinite) {
             repairs->nonFinite.add(face.line, expected);
+            continue;
+        }
+        if (!allInRange) {
+            repairs->outOfRange.add(face.line, expected);
             continue;
         }
 

@@ -42,8 +42,14 @@ struct ObjMesh {
 // what the file contains (a bug, not bad input).
 ObjMesh readObjMesh(const ObjScan& scan, const std::string& name);
 
+// The largest vertex coordinate the renderer takes: it squares distances in 32-bit floats, and beyond
+// about 1.8e19 a squared distance overflows to infinity (and the camera that frames such a scene is no
+// longer finite). Coordinates that large in a model are stray vertices, not geometry.
+constexpr double kMaxCoordinate = 1e18;
+
 struct MeshRepairs {
     RepairTally nonFinite;     // triangles dropped for NaN/infinite vertices
+    RepairTally outOfRange;    // triangles dropped for vertex coordinates beyond kMaxCoordinate
     RepairTally degenerate;    // zero-area triangles dropped
     RepairTally badNormals;    // faces whose zero/NaN vertex normals were replaced by the geometric normal
     RepairTally badTexcoords;  // faces with NaN/infinite texture coordinates, taken as having none

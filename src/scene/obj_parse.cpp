@@ -191,6 +191,10 @@ void untextureFacesWithoutTexcoords(const std::vector<int>& noTexcoordLine, cons
                  "of textured materials without texture coordinates (vt) Kd times the texture's mean colour");
 }
 
+const char* kOutOfRangeWhy =
+    "with vertex coordinates beyond +-1e18 (stray vertices? the renderer's 32-bit squared distances "
+    "overflow there)";
+
 // Why no triangle is left, for the error message.
 std::string droppedSummary(const ObjScan& scan, const MeshRepairs& repairs) {
     std::vector<std::string> parts;
@@ -198,6 +202,8 @@ std::string droppedSummary(const ObjScan& scan, const MeshRepairs& repairs) {
         parts.push_back(scan.shortFaces.describe("skipped", "face", "with fewer than 3 vertices"));
     if (repairs.nonFinite.count())
         parts.push_back(repairs.nonFinite.describe("dropped", "triangle", "with NaN or infinite vertices"));
+    if (repairs.outOfRange.count())
+        parts.push_back(repairs.outOfRange.describe("dropped", "triangle", kOutOfRangeWhy));
     if (repairs.degenerate.count())
         parts.push_back(repairs.degenerate.describe("dropped", "degenerate (zero-area) triangle"));
     std::string out;
@@ -231,6 +237,7 @@ Scene parseObj(std::string_view bytes, const std::string& name, const MtlLookup&
 
     scan.shortFaces.report(name, "skipped", "face", "with fewer than 3 vertices");
     repairs.nonFinite.report(name, "dropped", "triangle", "with NaN or infinite vertex coordinates");
+    repairs.outOfRange.report(name, "dropped", "triangle", kOutOfRangeWhy);
     repairs.degenerate.report(name, "dropped", "degenerate (zero-area) triangle");
     repairs.badNormals.report(name, "used the geometric normal on", "face",
                               "with zero or NaN vertex normals");

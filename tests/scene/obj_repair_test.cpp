@@ -62,6 +62,26 @@ TEST(ObjRepair, NonFiniteVerticesDropTheirTriangles) {
     EXPECT_EQ(capture.messages().size(), 1u) << test::joined(capture);
 }
 
+// Finite but huge coordinates (stray vertices at 1e30) overflow the renderer's squared distances and
+// the camera that frames them (issue 17: "camera values must be finite numbers" with no camera given):
+// their triangles are dropped with a warning, as non-finite ones are, and the rest frames normally.
+TEST(ObjRepair, VerticesBeyondTheFloatRangeDropTheirTriangles) {
+    WarningCapture capture;
+    Scene scene = loadText(kTriangle +
+                               "v 1e30 1e30 1e30\nv 2e18 0 0\nv -1e18 0 0\nv 0 -1e18 0\n"
+                               "f 1 2 3\n"
+                               "f 1 2 4\n"   // line 9: 1e30
+                               "f 1 5 3\n"   // 2e18: beyond
+                               "f 1 7 6\n",  // -1e18: the limit itself, kept
+                           {});
+    EXPECT_EQ(scene.triangles.size(), 2u);
+    EXPECT_TRUE(capture.contains("dropped 2 triangles with vertex coordinates beyond +-1e18"))
+        << test::joined(capture);
+    EXPECT_TRUE(capture.contains("first at line 9")) << test::joined(capture);
+    Camera framed = frameBounds(scene.bounds(), 40.0f);
+    EXPECT_NO_THROW(validateCamera(framed, "camera"));
+}
+
 TEST(ObjRepair, ShortFacesSkipped) {
     WarningCapture capture;
     Scene scene = loadText(kTriangle + "f 1 2\nf 1 2 3\nf 3\nf\n");
