@@ -1,10 +1,13 @@
 // build/fragpath: one binary, one subcommand per front end.
 #include <cstdio>
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "app/commands.h"
 #include "core/error.h"
+#include "git_commit.h"  // generated at build time (cmake/git_commit.cmake)
+#include "gl/context.h"
 
 static const char* kUsage =
     "fragpath: a path tracer that runs in an OpenGL fragment shader\n"
@@ -18,7 +21,23 @@ static const char* kUsage =
     "  merge PARTS -o OUT.exr  combine partial renders of disjoint sample ranges into one image\n"
     "  study [SCENE]    how much noise is too much: error and time against samples, feasibility report\n"
     "\n"
-    "Run 'fragpath <command> --help' for the options of a command.\n";
+    "Run 'fragpath <command> --help' for the options of a command; 'fragpath --version' prints the\n"
+    "version, the git commit and the OpenGL renderer the offscreen commands would use.\n"
+    "\n"
+    "exit status: 0 done, 1 an error in the input or the environment (the message says which), 2 a\n"
+    "usage error (no or unknown command), 3 an internal error (a bug: please report it).\n";
+
+// The version, the commit and what an offscreen context gets here (or why it gets none).
+int printVersion() {
+    std::printf("fragpath %s (git %s)\n", FP_VERSION, FP_GIT_COMMIT);
+    try {
+        std::unique_ptr<fp::GlContext> context = fp::createOffscreenContext("auto");
+        std::printf("OpenGL: %s\n", context->description().c_str());
+    } catch (const fp::Error& e) {
+        std::printf("OpenGL: no offscreen context (%s)\n", e.what());
+    }
+    return 0;
+}
 
 int main(int argc, char** argv) {
     std::vector<std::string> args(argv + 1, argv + argc);
@@ -26,6 +45,7 @@ int main(int argc, char** argv) {
         std::fputs(kUsage, args.empty() ? stderr : stdout);
         return args.empty() ? 2 : 0;
     }
+    if (args[0] == "--version" || args[0] == "version") return printVersion();
     std::string command = args[0];
     args.erase(args.begin());
     try {

@@ -63,6 +63,21 @@ TEST_F(Cli, OptionsTakeTheirValueAfterAnEqualsSign) {
     expectError("render --size 8x6 --nonsense=3", "unknown option --nonsense");
 }
 
+// --version names the version, the commit the binary was built from (the source tree here is a git
+// checkout, so not "unknown") and the OpenGL renderer an offscreen command gets.
+TEST_F(Cli, VersionNamesTheCommitAndTheRenderer) {
+    CliRun r = fragpath("--version");
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_EQ(r.output.rfind("fragpath ", 0), 0u) << r.output;
+    EXPECT_NE(r.output.find("(git "), std::string::npos) << r.output;
+    if (fs::exists(fs::path(FP_SOURCE_DIR) / ".git")) {
+        EXPECT_EQ(r.output.find("(git unknown"), std::string::npos) << r.output;
+    }
+    EXPECT_NE(r.output.find("OpenGL: "), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("llvmpipe"), std::string::npos)
+        << "the test machines render with llvmpipe: " << r.output;
+}
+
 TEST_F(Cli, HelpListsTheOptions) {
     CliRun r = fragpath("render --help");
     EXPECT_EQ(r.exitCode, 0);
