@@ -252,7 +252,8 @@ int renderCommand(const std::vector<std::string>& argv) {
 
     Accumulation acc = renderer.readback();
     const int total = renderer.samples();
-    writeRenderOutput(output, {acc.mean(), {{settings.sampleOffset, uint64_t(total)}}, fingerprint}, display);
+    writeRenderOutput(output, {acc.mean(), {{settings.sampleOffset, uint64_t(total)}}, fingerprint}, display,
+                      settings.view);
     if (denoisedOutput) writeImage(*denoisedOutput, denoise(renderer, denoiser), display);
 
     int done = total - already;

@@ -38,12 +38,15 @@ std::vector<std::uint8_t> encodePng(const Image& image, const DisplaySettings& d
         throw Error("cannot encode PNG: a " + std::to_string(image.width) + "x" +
                     std::to_string(image.height) + " image is too large");
     }
-    const std::vector<std::uint8_t> codes = toDisplay8(image, display);
+    return encodeRgb8Png(image.width, image.height, toDisplay8(image, display));
+}
+
+std::vector<std::uint8_t> encodeRgb8Png(int width, int height, const std::vector<std::uint8_t>& rgb) {
+    if (width <= 0 || height <= 0 || rgb.size() != size_t(width) * size_t(height) * 3)
+        throw Error("cannot encode PNG: no image to encode");
     std::vector<std::uint8_t> png;
-    if (!stbi_write_png_to_func(appendToVector, &png, image.width, image.height, 3, codes.data(),
-                                image.width * 3)) {
+    if (!stbi_write_png_to_func(appendToVector, &png, width, height, 3, rgb.data(), width * 3))
         throw Error("cannot encode PNG: stb_image_write failed");
-    }
     return png;
 }
 

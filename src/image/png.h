@@ -14,6 +14,8 @@ namespace fp {
 std::vector<std::uint8_t> toDisplay8(const Image& image, const DisplaySettings& display);
 
 std::vector<std::uint8_t> encodePng(const Image& image, const DisplaySettings& display);
+// Display codes as they are (3 bytes per pixel, top row first), for images not made by toDisplay8.
+std::vector<std::uint8_t> encodeRgb8Png(int width, int height, const std::vector<std::uint8_t>& rgb);
 void writePng(const std::string& path, const Image& image, const DisplaySettings& display);
 
 }  // namespace fp

@@ -7,6 +7,7 @@
 #include "core/error.h"
 #include "image/file_io.h"
 #include "image/image.h"
+#include "render/view_image.h"
 
 namespace fp {
 
@@ -106,12 +107,12 @@ void writePartial(const std::string& path, const PartialRender& partial) {
               {kFingerprint, partial.fingerprint}});
 }
 
-void writeRenderOutput(const std::string& path, const PartialRender& partial,
-                       const DisplaySettings& display) {
+void writeRenderOutput(const std::string& path, const PartialRender& partial, const DisplaySettings& display,
+                       View view) {
     if (lowerCaseExtension(path) == ".exr")
         writePartial(path, partial);
     else
-        writeImage(path, partial.mean, display);
+        writeRenderedView(path, partial.mean, view, display);
 }
 
 PartialRender readPartial(const std::string& path) {

@@ -31,9 +31,10 @@ std::string renderFingerprint(const Scene& scene, const RenderSettings& settings
 
 void writePartial(const std::string& path, const PartialRender& partial);
 // A render's output by the extension of path: .exr keeps the sample ranges and fingerprint
-// (writePartial: it can be merged or resumed); .pfm and .png get the mean image (writeImage).
+// (writePartial: it can be merged or resumed); .pfm gets the mean image, .png the mean as `view` shows
+// it (writeRenderedView: a heat map for counts, depth scaled to its far end).
 void writeRenderOutput(const std::string& path, const PartialRender& partial,
-                       const DisplaySettings& display = {});
+                       const DisplaySettings& display = {}, View view = View::Radiance);
 // Throws fp::Error naming the file when it is not an EXR written by fragpath (no sample ranges).
 PartialRender readPartial(const std::string& path);
 

@@ -8,7 +8,7 @@
 
 #include "image/tone_map.h"
 #include "viewer/camera_controller.h"
-#include "viewer/heat_map.h"
+#include "render/heat_map.h"
 
 namespace fp {
 

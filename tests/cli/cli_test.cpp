@@ -4,10 +4,13 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
+#include <set>
 
 #include "cli/fragpath_runner.h"
 #include "image/image.h"
 #include "image/image_stats.h"
+#include "image/rgba8_image.h"
 
 namespace fp {
 namespace {
@@ -76,6 +79,28 @@ TEST_F(Cli, VersionNamesTheCommitAndTheRenderer) {
     EXPECT_NE(r.output.find("OpenGL: "), std::string::npos) << r.output;
     EXPECT_NE(r.output.find("llvmpipe"), std::string::npos)
         << "the test machines render with llvmpipe: " << r.output;
+}
+
+// The debug views' PNGs show their values (issue 17: depth, nodes and cost came out solid white, their
+// raw values clamped): depth from near to far, counts as the viewer's heat map, cost per channel.
+TEST_F(Cli, DebugViewsWriteAPngThatShowsTheirValues) {
+    for (const char* view : {"depth", "nodes", "cost"}) {
+        std::string out = path(std::string(view) + ".png");
+        CliRun r = fragpath(std::string("render --view ") + view + " --size 32x32 --spp 1 --quiet -o " + out);
+        ASSERT_EQ(r.exitCode, 0) << r.output;
+        std::ifstream in(out, std::ios::binary);
+        std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+        Rgba8Image png = decodeRgba8(bytes, out);
+        std::set<uint32_t> colours;
+        size_t white = 0;
+        for (size_t i = 0; i < png.texels.size(); i += 4) {
+            colours.insert(uint32_t(png.texels[i]) << 16 | uint32_t(png.texels[i + 1]) << 8 |
+                           png.texels[i + 2]);
+            white += png.texels[i] == 255 && png.texels[i + 1] == 255 && png.texels[i + 2] == 255;
+        }
+        EXPECT_GE(colours.size(), 3u) << view << ": a PNG of one or two colours shows nothing";
+        EXPECT_LT(white, png.texels.size() / 4 / 2) << view << ": mostly white";
+    }
 }
 
 TEST_F(Cli, HelpListsTheOptions) {

@@ -6,7 +6,7 @@
 #include <fstream>
 
 #include "viewer/frame_stats.h"
-#include "viewer/heat_map.h"
+#include "render/heat_map.h"
 #include "viewer/shader_watcher.h"
 #include "viewer/tile_planner.h"
 
