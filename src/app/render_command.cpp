@@ -139,7 +139,8 @@ int renderCommand(const std::vector<std::string>& argv) {
                "--time-budget",
                "--resume",
                "--denoise",
-               "--denoised-out"},
+               "--denoised-out",
+               "--bvh-threads"},
               {"--stats", "--quiet", "-h", "--help"});
     if (args.has("-h") || args.has("--help")) {
         std::fputs(kRenderUsage, stdout);

@@ -103,6 +103,16 @@ TEST_F(Cli, DebugViewsWriteAPngThatShowsTheirValues) {
     }
 }
 
+// --bvh-threads, listed by render --help, is accepted (it was refused as unknown) and changes nothing
+// in the image: the builder makes the same tree with any number of threads.
+TEST_F(Cli, BvhThreadsIsAcceptedAndChangesNothing) {
+    CliRun one = fragpath("render --size 8x6 --spp 2 --bvh-threads 1 --quiet -o " + path("one.pfm"));
+    CliRun all = fragpath("render --size 8x6 --spp 2 --quiet -o " + path("all.pfm"));
+    ASSERT_EQ(one.exitCode, 0) << one.output;
+    ASSERT_EQ(all.exitCode, 0) << all.output;
+    EXPECT_EQ(readImage(path("one.pfm")).pixels, readImage(path("all.pfm")).pixels);
+}
+
 TEST_F(Cli, HelpListsTheOptions) {
     CliRun r = fragpath("render --help");
     EXPECT_EQ(r.exitCode, 0);
