@@ -2,7 +2,7 @@
 # Installs the Debian 12 packages fragpath needs to build, test and render; does nothing when all are there.
 set -euo pipefail
 packages=(
-  cmake make g++ pkg-config python3-glad
+  cmake make g++ pkg-config python3-glad git
   libosmesa6-dev libegl-dev libglm-dev libtinyobjloader-dev nlohmann-json3-dev libstb-dev libtinyexr-dev libgtest-dev
   libglfw3-dev libimgui-dev xvfb xauth clang libclang-rt-14-dev
   gnuplot-nox
