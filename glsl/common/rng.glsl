@@ -42,9 +42,11 @@ void rngInit(uint seed, uvec2 pixel, uint sampleIndex) {
 
 // A second stream of the same sample, disjoint from the first (bdpt's light subpath): its counter
 // starts half-way, far beyond the few hundred numbers a path draws.
+const uint kSecondStream = 0x80000000u;
+
 void rngInitSecondStream(uint seed, uvec2 pixel, uint sampleIndex) {
     rngInit(seed, pixel, sampleIndex);
-    rngKey.w = 0x80000000u;
+    rngKey.w = kSecondStream;
 }
 
 #if SAMPLER == 1
@@ -170,7 +172,7 @@ vec2 rand2() {
     // scramble makes all pixels' light paths of one sample one stratified set whose splats pile up
     // (Cornell, 16 spp: relative MSE 2.2x that of independent numbers); they keep scrambles of their own
     // per pixel and no shift, and are then better than independent numbers (0.73x).
-    bool lightStream = rngKey.w >= 0x80000000u;
+    bool lightStream = rngKey.w >= kSecondStream;
     uvec4 h = pcg4d(uvec4(rngKey.z, rngKey.w, lightStream ? rngKey.x : 0x5eed50b1u, 0x0b1ad5u));
     ++rngKey.w;
     uint i = bitfieldReverse(laineKarrasPermutation(gSampleReversed, h.x));  // shuffle the samples, per pair

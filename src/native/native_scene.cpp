@@ -1,7 +1,5 @@
 #include "native/native_scene.h"
 
-#include "gpu/light_strategy.h"
-
 #include <algorithm>
 #include <cmath>
 #include <string>

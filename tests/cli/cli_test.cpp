@@ -34,6 +34,14 @@ class Cli : public test::TempDirTest {
             << "expected '" << fragment << "' in: " << r.output;
         EXPECT_FALSE(fs::exists(path("out.png")));
     }
+    // `render A` and `render B` (each to a PFM, quietly) succeed and give the same image bit for bit.
+    void expectSameRender(const std::string& a, const std::string& b) {
+        CliRun ra = fragpath("render " + a + " --quiet -o " + path("a.pfm"));
+        CliRun rb = fragpath("render " + b + " --quiet -o " + path("b.pfm"));
+        ASSERT_EQ(ra.exitCode, 0) << ra.output;
+        ASSERT_EQ(rb.exitCode, 0) << rb.output;
+        EXPECT_EQ(readImage(path("a.pfm")).pixels, readImage(path("b.pfm")).pixels) << a << " against " << b;
+    }
 };
 
 const char* kTriangleObj = "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 2 3\nf 1 3 4\n";
@@ -56,11 +64,7 @@ TEST_F(Cli, RendersTheBuiltInCornellBoxToEveryFormat) {
 // Options take their value after a space or after '=' (the GNU form), with the same result; a switch
 // given a value, or '=' with nothing after it, is an error (issue 17: "--spp=16 is unknown option").
 TEST_F(Cli, OptionsTakeTheirValueAfterAnEqualsSign) {
-    CliRun spaced = fragpath("render --size 8x6 --spp 2 --seed 3 --quiet -o " + path("spaced.pfm"));
-    CliRun equals = fragpath("render --size=8x6 --spp=2 --seed=3 --quiet -o " + path("equals.pfm"));
-    ASSERT_EQ(spaced.exitCode, 0) << spaced.output;
-    ASSERT_EQ(equals.exitCode, 0) << equals.output;
-    EXPECT_EQ(readImage(path("spaced.pfm")).pixels, readImage(path("equals.pfm")).pixels);
+    expectSameRender("--size 8x6 --spp 2 --seed 3", "--size=8x6 --spp=2 --seed=3");
     expectError("render --size 8x6 --quiet=yes", "option --quiet takes no value");
     expectError("render --size 8x6 --spp=", "option --spp needs a value");
     expectError("render --size 8x6 --nonsense=3", "unknown option --nonsense");
@@ -106,11 +110,7 @@ TEST_F(Cli, DebugViewsWriteAPngThatShowsTheirValues) {
 // --bvh-threads, listed by render --help, is accepted (it was refused as unknown) and changes nothing
 // in the image: the builder makes the same tree with any number of threads.
 TEST_F(Cli, BvhThreadsIsAcceptedAndChangesNothing) {
-    CliRun one = fragpath("render --size 8x6 --spp 2 --bvh-threads 1 --quiet -o " + path("one.pfm"));
-    CliRun all = fragpath("render --size 8x6 --spp 2 --quiet -o " + path("all.pfm"));
-    ASSERT_EQ(one.exitCode, 0) << one.output;
-    ASSERT_EQ(all.exitCode, 0) << all.output;
-    EXPECT_EQ(readImage(path("one.pfm")).pixels, readImage(path("all.pfm")).pixels);
+    expectSameRender("--size 8x6 --spp 2 --bvh-threads 1", "--size 8x6 --spp 2");
 }
 
 TEST_F(Cli, HelpListsTheOptions) {
