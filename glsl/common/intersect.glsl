@@ -1,4 +1,4 @@
-// Ray queries against the scene's BVH (layout in src/gpu/layout.h): closest hit and any hit.
+// Ray queries against the scene's BVH (layout in src/pack/layout.h): closest hit and any hit.
 #ifndef BVH_STACK_SIZE
 #define BVH_STACK_SIZE 32
 #endif
@@ -34,7 +34,7 @@ bool intersectTriangle(Ray ray, vec3 v0, vec3 e1, vec3 e2, float tMax, out float
     return uv.x >= 0.0 && uv.y >= 0.0 && uv.x + uv.y <= 1.0 && t > 0.0 && t < tMax;
 }
 
-// Child i's quantised planes, q = byte i of a plane's uint (gpu/quantised_node.h), as floats.
+// Child i's quantised planes, q = byte i of a plane's uint (pack/quantised_node.h), as floats.
 vec4 planeSteps(uint plane) { return vec4((uvec4(plane) >> uvec4(0u, 8u, 16u, 24u)) & 255u); }
 
 // Slab test (Kay & Kajiya 1986) of the four children of a wide node at once, channel i for child i:

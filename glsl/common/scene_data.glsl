@@ -1,4 +1,4 @@
-// Reading the scene from its buffer textures. The texel layout is documented once, in src/gpu/layout.h;
+// Reading the scene from its buffer textures. The texel layout is documented once, in src/pack/layout.h;
 // the *_TEXELS constants come from there as defines.
 //
 // Every read of these buffers goes through the one-line helpers below (triangleTexel ... lightTexel), and

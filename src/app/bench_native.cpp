@@ -3,7 +3,7 @@
 #include <cstdio>
 
 #include "core/error.h"
-#include "gpu/layout.h"
+#include "pack/layout.h"
 #include "native/native_path.h"
 
 namespace fp::bench {

@@ -1,10 +1,10 @@
 #pragma once
-// The packed scene uploaded into buffer textures (layout in gpu/layout.h), bound to fixed units.
+// The packed scene uploaded into buffer textures (layout in pack/layout.h), bound to fixed units.
 #include <string>
 #include <vector>
 
 #include "gl/gl.h"
-#include "gpu/pack.h"
+#include "pack/pack.h"
 
 namespace fp {
 

@@ -23,7 +23,7 @@ const char* samplerName(Sampler sampler);
 
 // How next-event estimation samples a point on an emitter (glsl/common/lights.glsl): uniformly by area,
 // or uniformly in the solid angle the emitter subtends (Arvo 1995) where that is large; auto picks
-// solid angle for scenes with an emitter close to a surface it faces (gpu/light_strategy.h).
+// solid angle for scenes with an emitter close to a surface it faces (pack/light_strategy.h).
 enum class LightSampling { Auto, Area, SolidAngle };
 constexpr LightSampling kAllLightSamplings[] = {LightSampling::Auto, LightSampling::Area,
                                                 LightSampling::SolidAngle};

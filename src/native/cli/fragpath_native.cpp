@@ -7,7 +7,7 @@
 
 #include "app/args.h"
 #include "core/error.h"
-#include "gpu/layout.h"
+#include "pack/layout.h"
 #include "image/image.h"
 #include "native/native_path.h"
 #include "scene/builtin_scene.h"

@@ -1,4 +1,4 @@
-#include "gpu/quantised_node.h"
+#include "pack/quantised_node.h"
 
 #include <algorithm>
 #include <cmath>
@@ -6,7 +6,7 @@
 #include <string>
 
 #include "core/error.h"
-#include "gpu/layout.h"
+#include "pack/layout.h"
 
 namespace fp::layout {
 

@@ -1,7 +1,7 @@
 #pragma once
 // THE GPU SCENE LAYOUT: the one place that says what every texel of the scene's buffer textures holds.
-// The packer (gpu/pack.cpp) writes it; glsl/common/scene_data.glsl reads it through the defines that
-// layoutDefines() injects, so the two cannot drift apart.
+// The packer (pack/pack.cpp) writes it; glsl/common/scene_data.glsl reads it through the defines that
+// layoutDefines() (gpu/layout_defines.h) injects, so the two cannot drift apart.
 //
 // All buffers are GL_TEXTURE_BUFFERs (fastest way to read scene data on llvmpipe, see BENCHMARKS.md).
 // Where the context has GL_ARB_shader_image_load_store, the trace shaders read the buffers and the
@@ -26,7 +26,7 @@
 //                                            the four children's boxes quantised to 8 bits per plane on
 //                                            a grid local to the node, child i in byte i of each plane's
 //                                            uint, rounded outwards so that each contains its exact box
-//                                            (Ylitie, Karras & Laine 2017; gpu/quantised_node.h has the
+//                                            (Ylitie, Karras & Laine 2017; pack/quantised_node.h has the
 //                                            details); then the four children's links, one uint each
 //                                            (encodeChild):
 //                                            bit 31 set: a leaf of triangles [first, first + count) with
@@ -69,14 +69,13 @@
 #include <cstdint>
 
 #include "bvh/bvh.h"
-#include "gl/shader_source.h"
-#include "gpu/quantised_node.h"
+#include "pack/quantised_node.h"
 
 namespace fp::layout {
 
 constexpr int kTriangleTexels = 3;
 constexpr int kNormalTexels = 3;
-// The nodes' texels: kNodeTexels and kNodeLinkTexel are in gpu/quantised_node.h.
+// The nodes' texels: kNodeTexels and kNodeLinkTexel are in pack/quantised_node.h.
 
 // A child link of nodes (see above).
 constexpr uint32_t kLeafBit = 1u << 31;
@@ -125,9 +124,6 @@ constexpr int kImageUnitsNeeded = [] {
     for (Unit unit : kImageUnits) highest = unit > highest ? unit : highest;
     return highest + 1;
 }();
-
-// The layout's defines; with `images`, also SCENE_READS_IMAGES and the extension it needs.
-ShaderDefines layoutDefines(bool images = false);
 
 // The BVH build options the renderer uses with this layout: leaves of up to 8 triangles, and a node
 // visit priced at 3 triangle tests, so that the SAH builder makes leaves of about 4 triangles. On the

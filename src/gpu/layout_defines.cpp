@@ -1,0 +1,27 @@
+#include "gpu/layout_defines.h"
+
+#include <string>
+
+#include "pack/layout.h"
+
+namespace fp::layout {
+
+ShaderDefines layoutDefines(bool images) {
+    auto s = [](int v) { return std::to_string(v); };
+    ShaderDefines defines = {
+        {"TRIANGLE_TEXELS", s(kTriangleTexels)},  {"NORMAL_TEXELS", s(kNormalTexels)},
+        {"NODE_TEXELS", s(kNodeTexels)},          {"NODE_LINK_TEXEL", s(kNodeLinkTexel)},
+        {"MATERIAL_TEXELS", s(kMaterialTexels)},  {"TRIANGLES_UNIT", s(kTrianglesUnit)},
+        {"NORMALS_UNIT", s(kNormalsUnit)},        {"NODES_UNIT", s(kNodesUnit)},
+        {"MATERIALS_UNIT", s(kMaterialsUnit)},    {"LIGHTS_UNIT", s(kLightsUnit)},
+        {"TEXCOORD_TEXELS", s(kTexcoordTexels)},  {"LEAF_BIT", std::to_string(kLeafBit) + "u"},
+        {"LEAF_COUNT_SHIFT", s(kLeafCountShift)}, {"LEAF_FIRST_MASK", std::to_string(kMaxLeafFirst) + "u"}};
+    if (images) {
+        // A GL_ name becomes an #extension line (gl/shader_source.h): the shaders are #version 410.
+        defines.emplace_back("GL_ARB_shader_image_load_store", "require");
+        defines.emplace_back("SCENE_READS_IMAGES", "1");
+    }
+    return defines;
+}
+
+}  // namespace fp::layout
