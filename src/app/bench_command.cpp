@@ -11,10 +11,10 @@
 #include <vector>
 
 #include "app/args.h"
-#include "app/bench_measure.h"
-#include "app/bench_native.h"
-#include "app/bench_suite.h"
-#include "app/caustic_study.h"
+#include "bench/bench_measure.h"
+#include "bench/bench_native.h"
+#include "bench/bench_suite.h"
+#include "bench/caustic_study.h"
 #include "app/commands.h"
 #include "core/error.h"
 #include "gl/context.h"

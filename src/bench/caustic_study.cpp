@@ -1,10 +1,10 @@
-#include "app/caustic_study.h"
+#include "bench/caustic_study.h"
 
 #include <cmath>
 #include <cstdio>
 #include <memory>
 
-#include "app/bench_measure.h"
+#include "bench/bench_measure.h"
 #include "gl/context.h"
 #include "image/image_stats.h"
 #include "render/renderer.h"

@@ -1,4 +1,4 @@
-#include "app/bench_measure.h"
+#include "bench/bench_measure.h"
 
 #include <sys/resource.h>
 #include <unistd.h>

@@ -1,4 +1,4 @@
-#include "app/bench_suite.h"
+#include "bench/bench_suite.h"
 
 #include <algorithm>
 #include <cstdio>
@@ -7,7 +7,7 @@
 #include <functional>
 #include <memory>
 
-#include "app/bench_native.h"
+#include "bench/bench_native.h"
 #include "core/error.h"
 #include "core/file.h"
 #include "gl/context.h"
