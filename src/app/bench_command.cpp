@@ -3,7 +3,6 @@
 // settings report wall time, process CPU time and throughput as median, min and max (bench_measure.h).
 // With --suite it does so for a fixed set of scenes (bench_suite.h).
 #include <algorithm>
-#include <chrono>
 #include <cstdio>
 #include <memory>
 #include <optional>
@@ -11,12 +10,14 @@
 #include <vector>
 
 #include "app/args.h"
-#include "app/bench_measure.h"
-#include "app/bench_native.h"
-#include "app/bench_suite.h"
-#include "app/caustic_study.h"
 #include "app/commands.h"
+#include "bench/bench_measure.h"
+#include "bench/bench_native.h"
+#include "bench/bench_suite.h"
+#include "bench/caustic_study.h"
+#include "core/clock.h"
 #include "core/error.h"
+#include "core/text.h"
 #include "gl/context.h"
 #include "scene/builtin_scene.h"
 #include "scene/load.h"
@@ -81,23 +82,11 @@ const char* kBenchUsage =
     "shader change has a longer time to first frame; MESA_SHADER_CACHE_DISABLE=true measures the cold\n"
     "case every time.\n";
 
-std::vector<std::string> splitNames(const std::string& text) {
-    std::vector<std::string> names;
-    size_t start = 0;
-    while (start <= text.size()) {
-        size_t end = text.find(',', start);
-        if (end == std::string::npos) end = text.size();
-        names.push_back(text.substr(start, end - start));
-        start = end + 1;
-    }
-    return names;
-}
-
 int benchOneScene(const Args& args, const bench::BenchSettings& settings, std::optional<std::string> jsonPath,
-                  bench::Clock::time_point start) {
+                  SteadyClock::time_point start) {
     using namespace bench;
     BenchEnvironment environment = readBenchEnvironment();
-    auto stage = Clock::now();
+    auto stage = SteadyClock::now();
     std::unique_ptr<GlContext> context = createOsMesaContext();
     double contextSeconds = secondsSince(stage);
     environment.renderer = context->description();
@@ -113,7 +102,7 @@ int benchOneScene(const Args& args, const bench::BenchSettings& settings, std::o
     std::optional<NativeMeasurement> native;
     if (withNative) native = measureNative(load, settings);
     // Here the first frame counts from the start of the command, so it includes the context.
-    double firstFrameSeconds = std::chrono::duration<double>(m.firstPassEnd - start).count();
+    double firstFrameSeconds = secondsBetween(start, m.firstPassEnd);
 
     printHeader(environment, settings);
     printMeasurement(m, firstFrameSeconds, contextSeconds);
@@ -143,7 +132,7 @@ int benchOneScene(const Args& args, const bench::BenchSettings& settings, std::o
 int benchCommand(const std::vector<std::string>& argv) {
     // Time to first frame counts from here: argument parsing is negligible, and everything a user waits
     // for before the first pixel (context, load, BVH, upload, compile, JIT, first pass) comes after.
-    auto start = bench::Clock::now();
+    auto start = SteadyClock::now();
     Args args(argv,
               {"--size", "--spp", "--runs", "--max-depth", "--integrator", "--sampler", "--light-sampling",
                "--json", "--max-triangles", "--scenes", "--bvh-threads", "--samples-per-pass", "--shader-dir",
@@ -213,7 +202,7 @@ int benchCommand(const std::vector<std::string>& argv) {
     if (auto n = args.integer("--max-triangles", 1, 2000000000)) options.maxTriangles = *n;
     if (auto names = args.text("--scenes")) {
         const std::vector<std::string>& known = bench::suiteSceneNames();
-        for (const std::string& name : splitNames(*names)) {
+        for (const std::string& name : splitNameList(*names, "--scenes")) {
             if (std::find(known.begin(), known.end(), name) == known.end()) {
                 std::string list;
                 for (const std::string& k : known) list += (list.empty() ? "" : ", ") + k;

@@ -1,7 +1,6 @@
 #include "scene/scene_file.h"
 
 #include <algorithm>
-#include <cctype>
 #include <cmath>
 #include <filesystem>
 #include <limits>
@@ -10,6 +9,7 @@
 
 #include "core/error.h"
 #include "core/log.h"
+#include "core/text.h"
 #include "image/image.h"
 #include "scene/load.h"
 #include "scene/text_file.h"
@@ -253,12 +253,6 @@ Scene parseSceneFile(std::string_view bytes, const std::string& name, const Mesh
 
 namespace fs = std::filesystem;
 
-static std::string lowercaseExtension(const fs::path& path) {
-    std::string ext = path.extension().string();
-    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
-    return ext;
-}
-
 Scene loadSceneFile(const std::string& path) {
     std::string bytes = readFileBytes(path);
     fs::path directory = fs::path(path).parent_path();
@@ -266,7 +260,7 @@ Scene loadSceneFile(const std::string& path) {
         bytes, path,
         [&](const std::string& mesh) {
             fs::path meshPath = fs::path(mesh).is_absolute() ? fs::path(mesh) : directory / mesh;
-            if (lowercaseExtension(meshPath) != ".obj")
+            if (lowerCaseExtension(meshPath.string()) != ".obj")
                 throw Error(path + ": mesh '" + mesh + "' must be an .obj file");
             std::error_code ec;
             if (!fs::exists(meshPath, ec))
@@ -275,7 +269,7 @@ Scene loadSceneFile(const std::string& path) {
         },
         [&](const std::string& map) {
             fs::path mapPath = fs::path(map).is_absolute() ? fs::path(map) : directory / map;
-            if (lowercaseExtension(mapPath) != ".hdr")
+            if (lowerCaseExtension(mapPath.string()) != ".hdr")
                 throw Error(path + ": environment map '" + map + "' must be a Radiance .hdr file");
             return readImage(mapPath.string());
         });
@@ -285,7 +279,7 @@ Scene loadScene(const std::string& path) {
     if (path.empty()) throw Error("no scene file given (empty path)");
     std::error_code ec;
     if (!fs::exists(path, ec)) throw Error(path + ": no such file");
-    std::string ext = lowercaseExtension(path);
+    std::string ext = lowerCaseExtension(path);
     if (ext == ".obj") return loadObj(path);
     if (ext == ".json") return loadSceneFile(path);
     throw Error(path + ": unknown scene file type '" + ext + "' (expected .obj or .json)");

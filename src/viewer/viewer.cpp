@@ -7,12 +7,12 @@
 // clang-format on
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <memory>
 #include <optional>
 
+#include "core/clock.h"
 #include "core/error.h"
 #include "denoise/denoise_passes.h"
 #include "render/display.h"
@@ -39,8 +39,8 @@ constexpr double kTargetFrameSeconds = 0.040;
 constexpr double kMinBudgetSeconds = 0.010, kMaxBudgetSeconds = 0.033;
 
 double now() {
-    static const auto start = std::chrono::steady_clock::now();
-    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    static const auto start = SteadyClock::now();
+    return secondsSince(start);
 }
 
 class Session {

@@ -2,7 +2,6 @@
 // The measurement behind `fragpath bench`, shared by the single-scene bench and the suite, so that a
 // figure means the same in both: one renderer per scene, time to first frame by stage, one untimed
 // warm-up run, then R timed runs (run i with seed i) reported as median, min and max.
-#include <chrono>
 #include <functional>
 #include <optional>
 #include <string>
@@ -10,6 +9,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "core/clock.h"
 #include "render/renderer.h"
 #include "render/settings.h"
 #include "scene/scene.h"
@@ -19,14 +19,6 @@ namespace fp {
 class GlContext;
 
 namespace bench {
-
-using Clock = std::chrono::steady_clock;
-
-double secondsSince(Clock::time_point start);
-
-// User plus system time of every thread in the process. llvmpipe rasterises on threads of this process,
-// so this is the CPU the render cost, not just the CPU of the thread that waits in glFinish.
-double processCpuSeconds();
 
 struct Run {
     uint32_t seed = 0;
@@ -44,7 +36,7 @@ struct Run {
 struct Spread {
     double median = 0, min = 0, max = 0;
 };
-// Median, min and max of values (not empty).
+// Median, min and max of values (not empty: throws std::invalid_argument).
 Spread spread(std::vector<double> values);
 
 // One measured quantity of a run, with the names it has in the table and in the JSON.
@@ -75,7 +67,7 @@ struct SceneMeasurement {
     SceneStats stats;
     // Stages of the first frame: load (or generate) the scene; build the BVH, pack and upload; compile
     // and link the GLSL; the first pass, which includes llvmpipe's JIT of the fragment shader.
-    Clock::time_point loadStart, firstPassEnd;
+    SteadyClock::time_point loadStart, firstPassEnd;
     double loadSeconds = 0, rendererSeconds = 0, compileSeconds = 0, firstPassSeconds = 0;
     Run warmUp;
     std::vector<Run> timed;

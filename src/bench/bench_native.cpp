@@ -1,4 +1,4 @@
-#include "app/bench_native.h"
+#include "bench/bench_native.h"
 
 #include <cstdio>
 
