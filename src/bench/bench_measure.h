@@ -11,8 +11,9 @@
 
 #include "core/clock.h"
 #include "render/renderer.h"
-#include "render/settings.h"
+#include "request/render_request.h"
 #include "scene/scene.h"
+#include "settings/render_settings.h"
 
 namespace fp {
 
@@ -60,10 +61,18 @@ struct BenchSettings {
     // Read the shaders from this directory instead of the ones built in (empty: built in), so that
     // shader variants can be compared run for run with one binary.
     std::string shaderDir;
+    // The command line's request: each scene is rendered with its flags over the scene file's defaults
+    // (request/render_request.h). Without one, `render` and the scene's camera as they are.
+    std::optional<RenderRequest> request;
+    bool independentSampler = false;  // --native without --sampler: the native reference's numbers
+
+    RenderSettings renderFor(const Scene& scene) const;
+    Camera cameraFor(const Scene& scene) const;
 };
 
 struct SceneMeasurement {
     std::string source;
+    RenderSettings render;  // what it was rendered with (BenchSettings::renderFor)
     SceneStats stats;
     // Stages of the first frame: load (or generate) the scene; build the BVH, pack and upload; compile
     // and link the GLSL; the first pass, which includes llvmpipe's JIT of the fragment shader.

@@ -6,8 +6,9 @@
 
 namespace fp::layout {
 
-BvhBuildOptions bvhOptions() {
+BvhBuildOptions bvhOptions(int threads) {
     BvhBuildOptions options;
+    options.threadCount = threads;
     options.maxLeafSize = 8;
     options.traversalCost = 3.0f;
     return options;

@@ -129,6 +129,7 @@ constexpr int kImageUnitsNeeded = [] {
 // visit priced at 3 triangle tests, so that the SAH builder makes leaves of about 4 triangles. On the
 // suite this brings positions + BVH from about 76 to about 60 bytes per triangle at the same speed
 // (BENCHMARKS.md, optimisation log). The native reference builds its tree with the same options.
-BvhBuildOptions bvhOptions();
+// `threads` build it (0: every CPU); the tree is the same for any number.
+BvhBuildOptions bvhOptions(int threads = 0);
 
 }  // namespace fp::layout

@@ -13,8 +13,8 @@
 #include "render/accumulation.h"
 #include "render/light_splat.h"
 #include "render/render_targets.h"
-#include "render/settings.h"
 #include "scene/scene.h"
+#include "settings/render_settings.h"
 
 namespace fp {
 

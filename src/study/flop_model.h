@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "render/settings.h"
+#include "settings/render_settings.h"
 
 namespace fp::study {
 

@@ -110,7 +110,7 @@ Session::Session(const Scene& scene, const ViewerOptions& options)
     : options_(options),
       window_(options.windowSize.x, options.windowSize.y, "fragpath - " + scene.source),
       description_(window_.description()),
-      renderer_(scene, ShaderLibrary(options.shaderDir)),
+      renderer_(scene, ShaderLibrary(options.shaderDir), layout::bvhOptions(options.bvhThreads)),
       display_(ShaderLibrary(options.shaderDir)),
       denoiser_(ShaderLibrary(options.shaderDir)),
       controls_(options.controls),

@@ -17,6 +17,7 @@ struct ViewerOptions {
     Camera camera;            // the home camera (R returns to it)
     std::string shaderDir;    // empty: the shaders built into the binary; else hot reload from here
     bool ui = true;           // false: no panel (tests, clean captures)
+    int bvhThreads = 0;       // threads that build the BVH; 0: every CPU
 
     // Automation: with frames > 0 the viewer closes itself after that many frames, and when
     // controls.targetSpp > 0 not before that many samples per pixel.
