@@ -86,6 +86,7 @@ class Session {
     Display display_;
     DenoisePasses denoiser_;
     std::unique_ptr<ImGuiLayer> ui_;
+    Panel panel_;
     std::optional<ShaderWatcher> watcher_;
     ViewerControls controls_;
     CameraController camera_;
@@ -446,7 +447,7 @@ void Session::run() {
         if (rendering) renderWithinBudget(lastFrames);
         fitHeatMapIfDue();
         // After rendering, so that it shows this frame's figures; its changes apply from the next frame.
-        if (ui_ && controls_.showPanel) applyActions(drawPanel(controls_, panelInfo()));
+        if (ui_ && controls_.showPanel) applyActions(panel_.draw(controls_, panelInfo()));
         ++frames;
         bool done = automationDone(frames);
         // A new accumulation is black where its first pass has not reached yet. Rather than wipe the

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 #include <stb_image.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -159,6 +160,36 @@ TEST_F(ViewerXvfb, PanelSplitViewAndCountViewsRun) {
     EXPECT_EQ(window.height, 120);
     Rgb8Image image = readPng(path("view.png"));
     EXPECT_EQ(image.width, 160);
+}
+
+// Issue 17: the panel covered about 40 % of an 800x600 window. Its default layout (essentials open, the
+// rest collapsed, a narrower width) must leave most of the picture visible. The panel's rectangle is
+// where the window capture differs from one without the panel (the same samples: --spp 1).
+TEST_F(ViewerXvfb, PanelCoversLittleOfTheWindowByDefault) {
+    const std::string args = "--size 800x600 --spp 1 --frames 3 --screenshot-window ";
+    CliRun a = view(args + path("ui.png"));
+    ASSERT_EQ(a.exitCode, 0) << a.output;
+    CliRun b = view(args + path("no-ui.png") + " --no-ui");
+    ASSERT_EQ(b.exitCode, 0) << b.output;
+    Rgb8Image ui = readPng(path("ui.png")), bare = readPng(path("no-ui.png"));
+    ASSERT_EQ(ui.width, 800);
+    ASSERT_EQ(ui.height, 600);
+    ASSERT_EQ(bare.rgb.size(), ui.rgb.size());
+
+    int x0 = ui.width, y0 = ui.height, x1 = -1, y1 = -1;
+    for (int y = 0; y < ui.height; ++y)
+        for (int x = 0; x < ui.width; ++x) {
+            size_t i = (size_t(y) * size_t(ui.width) + size_t(x)) * 3;
+            if (std::equal(&ui.rgb[i], &ui.rgb[i] + 3, &bare.rgb[i])) continue;
+            x0 = std::min(x0, x), y0 = std::min(y0, y), x1 = std::max(x1, x), y1 = std::max(y1, y);
+        }
+    ASSERT_GE(x1, 0) << "no panel in the capture";
+    int width = x1 - x0 + 1, height = y1 - y0 + 1;
+    double share = double(width) * double(height) / (800.0 * 600.0);
+    EXPECT_LE(share, 0.30) << "panel at " << x0 << "," << y0 << ", " << width << "x" << height;
+    // Still a panel one can read: its statistics and the main settings.
+    EXPECT_GE(width, 200);
+    EXPECT_GE(height, 200);
 }
 
 TEST_F(ViewerXvfb, WithoutADisplayNamesTheWaysOut) {
