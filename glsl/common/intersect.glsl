@@ -65,7 +65,7 @@ vec4 boxEntries(vec3 origin, vec3 invDir, uvec4 grid, uvec4 planesXY, uvec4 plan
 // one loop, shrinking hit.t; returns true as soon as one is hit when anyHit is set. One loop for all the
 // leaf children of a node, not one per child: llvmpipe runs every inlined copy of this loop whenever
 // any pixel of its SIMD group needs it, and a second copy cost 15 % of a Cornell box render
-// (BENCHMARKS.md, optimisation log).
+// (docs/optimisation-log.md, entry 3).
 bool intersectLeaves(Ray ray, uvec4 first, uvec4 count, bool anyHit, inout Hit hit) {
     // Where each range starts in the loop's count, and what turns the loop index into a triangle index.
     uint end0 = count.x, end1 = end0 + count.y, end2 = end1 + count.z, total = end2 + count.w;
@@ -76,8 +76,8 @@ bool intersectLeaves(Ray ray, uvec4 first, uvec4 count, bool anyHit, inout Hit h
         // A pixel with no triangle left still runs this iteration (masked: llvmpipe runs a loop's body
         // while any pixel of its SIMD group needs it, and every node visit enters the loop once), and
         // its fetches still read memory: at a stray index (an interior child's link, a range's end)
-        // each is a cache miss on a large scene. Triangle 0 is always in the cache (BENCHMARKS.md,
-        // optimisation log: "Stray fetches").
+        // each is a cache miss on a large scene. Triangle 0 is always in the cache (docs/optimisation-log.md,
+        // entry 25: "Stray fetches").
         i = k < total ? i : 0u;
         TriangleData tri = fetchTriangle(int(i));
         float t;

@@ -28,7 +28,7 @@ float environmentSelection() {
 // solid angle 2 pi^2 sin(theta) du dv, which converts the density (as pbrt-v4 does for image infinite lights).
 // Read as images or texel fetches like the scene buffers (scene_data.glsl). The map's size is the define
 // ENVIRONMENT_SIZE (an ivec2): a constant costs fewer instructions than a uniform or textureSize, and
-// an image's imageSize would need GL_ARB_shader_image_size (BENCHMARKS.md, optimisation log, entry 31).
+// an image's imageSize would need GL_ARB_shader_image_size (docs/optimisation-log.md, entry 31).
 #ifdef SCENE_READS_IMAGES
 layout(rgba32f) readonly uniform image2D uEnvironmentMap;
 layout(r32f) readonly uniform imageBuffer uEnvironmentCdf;

@@ -52,8 +52,8 @@ const std::vector<Column>& columns();
 // The settings every scene of one command is measured with.
 struct BenchSettings {
     // The timed runs draw render.samplesPerPass samples per pass (bench's default: 8, which costs about
-    // 5 % less CPU per path than 1 on llvmpipe: BENCHMARKS.md); the warm-up, whose first pass is the
-    // first frame, always draws 1, as `fragpath render` does by default.
+    // 5 % less CPU per path than 1 on llvmpipe: docs/optimisation-log.md, entry 8); the warm-up, whose
+    // first pass is the first frame, always draws 1, as `fragpath render` does by default.
     RenderSettings render;
     int spp = 8;   // samples per pixel in each run
     int runs = 5;  // timed runs after the warm-up

@@ -28,7 +28,7 @@ constexpr uint32_t kStackSize = 64;  // traversal stack entries
 // (what a native SIMD tracer does; Wald, Benthin & Boulos 2008). Empty slots are the unreachable box
 // kEmptyChildCoordinate. The boxes are exact floats, not the GPU layout's 8-bit quantised boxes
 // (pack/quantised_node.h): decoding those costs a scalar CPU tracer more than it saves (the reference
-// ran 25-30 % slower with them on both the Cornell box and sphere-1m, BENCHMARKS.md "Quantised nodes"),
+// ran 25-30 % slower with them on both the Cornell box and sphere-1m, docs/optimisation-log.md, entry 21),
 // so a native tracer would not use them, and the comparison stays against what native code does best.
 // The quantised boxes are a little larger, so the shader visits a few more nodes and tests more
 // triangles than the reference (the Cornell box: +1 % nodes, +2 % triangle tests per path); every

@@ -333,9 +333,10 @@ bool Session::showsDenoised() const {
            s.view == View::Radiance && renderer_.samples() >= 1;
 }
 
-// Denoises again when the sample count changed, but spends at most about a quarter of the time on it:
-// on a software renderer the a-trous passes cost about one sample (BENCHMARKS.md), on a GPU next to
-// nothing, so there it follows every sample. `current` forces an up-to-date result (screenshots).
+// Denoises again when the sample count changed, but spends at most about a quarter of the time on it: on a
+// software renderer the a-trous passes cost about one sample (BENCHMARKS.md, "Denoisers: cost on llvmpipe"),
+// on a GPU next to nothing, so there it follows every sample. `current` forces an up-to-date result
+// (screenshots).
 GLuint Session::shownTexture(bool current) {
     if (!showsDenoised()) return renderer_.textures().sum;
     bool stale = denoisedSamples_ != renderer_.samples();
