@@ -61,43 +61,38 @@ const char* kBenchNotes =
 constexpr unsigned kBenchOptions = kSizeOption | kSppOption | kIntegratorOption | kPathOptions |
                                    kSamplingOptions | kCameraOptions | kShaderOptions;
 FrontEndDefaults benchDefaults(bool suite) {
-    FrontEndDefaults d;
-    d.size = suite ? glm::ivec2(256) : glm::ivec2(512);
+    FrontEndDefaults d = FrontEndDefaults::ownImage(glm::ivec2(suite ? 256 : 512), suite ? 2 : 8);
     d.sceneSize = !suite;
-    d.spp = suite ? 2 : 8;
-    d.sceneSpp = false;
     d.samplesPerPass = 8;  // the timed runs' (about 5 % less CPU per path than 1 on llvmpipe)
     return d;
 }
 
 std::vector<OptionGroup> benchOptions() {
-    std::vector<OptionGroup> groups = {
-        {"Benchmark",
-         {{"--runs", "", "R", "timed runs after the warm-up (default 5; 3 with --suite)"},
-          {"--json", "", "FILE",
-           "also write every figure to FILE as JSON (with --suite: one object per scene)"},
-          {"--suite", "", "",
-           "measure the benchmark suite instead of one scene\n(defaults: 256x256 with --suite, 2 spp, 3 "
-           "runs; a scene file's size does not apply)"},
-          {"--max-triangles", "", "N", "with --suite: skip the scenes with more than N triangles"},
-          {"--scenes", "", "A,B,...",
-           "with --suite: only these scenes (cornell, sphere-1k, bunny, sphere-100k,\nsoup-100k, sphere-1m), "
-           "in the suite's order"},
-          {"--with-bunny", "", "", "with --suite: add the Stanford bunny (needs npm and the network)"},
-          {"--native", "", "",
-           "also measure the native reference (fragpath_native: one thread of scalar C++,\nthe same "
-           "algorithm "
-           "on the same BVH) on each scene, 1 spp per run, and print\nGPU paths per CPU-second over the "
-           "native's. Only with --integrator nee, and\nonly on scenes of Lambertian materials without "
-           "textures "
-           "or an environment\nmap: anything else is an error, not a comparison of two algorithms"},
-          {"--study", "", "caustic", "compare bdpt with nee at equal CPU time (see below)"},
-          {"--budget", "", "SECONDS", "with --study: CPU seconds for each integrator (default 40)"},
-          {"--reference-spp", "", "N", "with --study: samples of the bdpt reference (default 16384)"}}}};
-    for (OptionGroup& g : requestOptionGroups(kBenchOptions, benchDefaults(false)))
-        groups.push_back(std::move(g));
-    groups.push_back(helpOptions());
-    return groups;
+    return commandOptions(
+        {{"Benchmark",
+          {{"--runs", "", "R", "timed runs after the warm-up (default 5; 3 with --suite)"},
+           {"--json", "", "FILE",
+            "also write every figure to FILE as JSON (with --suite: one object per scene)"},
+           {"--suite", "", "",
+            "measure the benchmark suite instead of one scene\n(defaults: 256x256 with --suite, 2 spp, 3 "
+            "runs; a scene file's size does not apply)"},
+           {"--max-triangles", "", "N", "with --suite: skip the scenes with more than N triangles"},
+           {"--scenes", "", "A,B,...",
+            "with --suite: only these scenes (cornell, sphere-1k, bunny, sphere-100k,\nsoup-100k, "
+            "sphere-1m), "
+            "in the suite's order"},
+           {"--with-bunny", "", "", "with --suite: add the Stanford bunny (needs npm and the network)"},
+           {"--native", "", "",
+            "also measure the native reference (fragpath_native: one thread of scalar C++,\nthe same "
+            "algorithm "
+            "on the same BVH) on each scene, 1 spp per run, and print\nGPU paths per CPU-second over the "
+            "native's. Only with --integrator nee, and\nonly on scenes of Lambertian materials without "
+            "textures "
+            "or an environment\nmap: anything else is an error, not a comparison of two algorithms"},
+           {"--study", "", "caustic", "compare bdpt with nee at equal CPU time (see below)"},
+           {"--budget", "", "SECONDS", "with --study: CPU seconds for each integrator (default 40)"},
+           {"--reference-spp", "", "N", "with --study: samples of the bdpt reference (default 16384)"}}}},
+        kBenchOptions, benchDefaults(false));
 }
 
 int benchOneScene(const Args& args, const bench::BenchSettings& settings, std::optional<std::string> jsonPath,

@@ -28,28 +28,26 @@ namespace {
 constexpr unsigned kRenderOptions = kAllRequestOptions;
 
 std::vector<OptionGroup> renderOptions() {
-    std::vector<OptionGroup> groups = {
-        {"Output",
-         {{"--output", "-o", "FILE",
-           "the image (default render.png): .png (sRGB, tone-mapped), .exr or .pfm\n"
-           "(linear radiance); always the raw samples"},
-          {"--denoise", "", "NAME",
-           "none | bilateral (joint bilateral filter) | atrous (edge-avoiding a-trous\nwavelets, "
-           "variance-guided); needs --denoised-out"},
-          {"--denoised-out", "", "FILE",
-           "where the denoised image goes (.png, .exr or .pfm); needs --denoise"},
-          {"--sample-offset", "", "K",
-           "render sample indices K, K+1, ... (one part of a render spread over\nmachines; combine the "
-           "parts' .exr files with `fragpath merge`)"},
-          {"--time-budget", "", "T",
-           "stop after the pass that uses up T (e.g. 90s, 5m, 1.5h); --spp is then a cap"},
-          {"--resume", "", "FILE.exr",
-           "continue a render saved as .exr (same scene and settings) up to --spp"},
-          {"--stats", "", "", "print scene, BVH, memory and timing statistics"},
-          {"--quiet", "", "", "no progress bar or summary line"}}}};
-    for (OptionGroup& g : requestOptionGroups(kRenderOptions)) groups.push_back(std::move(g));
-    groups.push_back(helpOptions());
-    return groups;
+    return commandOptions(
+        {{"Output",
+          {{"--output", "-o", "FILE",
+            "the image (default render.png): .png (sRGB, tone-mapped), .exr or .pfm\n"
+            "(linear radiance); always the raw samples"},
+           {"--denoise", "", "NAME",
+            "none | bilateral (joint bilateral filter) | atrous (edge-avoiding a-trous\nwavelets, "
+            "variance-guided); needs --denoised-out"},
+           {"--denoised-out", "", "FILE",
+            "where the denoised image goes (.png, .exr or .pfm); needs --denoise"},
+           {"--sample-offset", "", "K",
+            "render sample indices K, K+1, ... (one part of a render spread over\nmachines; combine the "
+            "parts' .exr files with `fragpath merge`)"},
+           {"--time-budget", "", "T",
+            "stop after the pass that uses up T (e.g. 90s, 5m, 1.5h); --spp is then a cap"},
+           {"--resume", "", "FILE.exr",
+            "continue a render saved as .exr (same scene and settings) up to --spp"},
+           {"--stats", "", "", "print scene, BVH, memory and timing statistics"},
+           {"--quiet", "", "", "no progress bar or summary line"}}}},
+        kRenderOptions);
 }
 
 void printRenderUsage() {

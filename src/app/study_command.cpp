@@ -46,26 +46,24 @@ FrontEndDefaults studyDefaults() {
 const FrontEndDefaults kStudyDefaults = studyDefaults();
 
 std::vector<OptionGroup> studyOptions() {
-    std::vector<OptionGroup> groups = {
-        {"Study",
-         {{"--out", "", "DIR", "output directory, created if missing (default: study)"},
-          {"--max-spp", "", "N", "the largest sample count (default 64)"},
-          {"--integrators", "", "LIST", "comma-separated (default naive,bsdf,nee,bdpt)"},
-          {"--denoisers", "", "LIST",
-           "comma-separated, of those built in (default: all; 'none' is the raw image)"},
-          {"--reference-spp", "", "N", "samples of the rendered reference (default 4096)"},
-          {"--reference-integrator", "", "NAME", "integrator of the rendered reference (default nee)"},
-          {"--reference", "", "FILE.exr", "load the reference instead of rendering it (same size, linear)"},
-          {"--threshold", "", "X",
-           "relative MSE under which an image counts as not noisy (default 4e-4:\n2% RMS relative error, "
-           "the Weber fraction; report.md gives the sources)"},
-          {"--runs", "", "R", "timed runs of each sweep; times are medians (default 1)"},
-          {"--count-spp", "", "N", "samples per pixel of the counting render (default 4)"},
-          {"--no-plots", "", "", "skip gnuplot (the CSV, strip and report are still written)"},
-          {"--quiet", "", "", "no progress lines"}}}};
-    for (OptionGroup& g : requestOptionGroups(kStudyOptions, kStudyDefaults)) groups.push_back(std::move(g));
-    groups.push_back(helpOptions());
-    return groups;
+    return commandOptions(
+        {{"Study",
+          {{"--out", "", "DIR", "output directory, created if missing (default: study)"},
+           {"--max-spp", "", "N", "the largest sample count (default 64)"},
+           {"--integrators", "", "LIST", "comma-separated (default naive,bsdf,nee,bdpt)"},
+           {"--denoisers", "", "LIST",
+            "comma-separated, of those built in (default: all; 'none' is the raw image)"},
+           {"--reference-spp", "", "N", "samples of the rendered reference (default 4096)"},
+           {"--reference-integrator", "", "NAME", "integrator of the rendered reference (default nee)"},
+           {"--reference", "", "FILE.exr", "load the reference instead of rendering it (same size, linear)"},
+           {"--threshold", "", "X",
+            "relative MSE under which an image counts as not noisy (default 4e-4:\n2% RMS relative error, "
+            "the Weber fraction; report.md gives the sources)"},
+           {"--runs", "", "R", "timed runs of each sweep; times are medians (default 1)"},
+           {"--count-spp", "", "N", "samples per pixel of the counting render (default 4)"},
+           {"--no-plots", "", "", "skip gnuplot (the CSV, strip and report are still written)"},
+           {"--quiet", "", "", "no progress lines"}}}},
+        kStudyOptions, kStudyDefaults);
 }
 
 void printStudyUsage() {

@@ -26,24 +26,22 @@ FrontEndDefaults viewDefaults() {
 const FrontEndDefaults kViewDefaults = viewDefaults();
 
 std::vector<OptionGroup> viewOptions() {
-    std::vector<OptionGroup> groups = {
-        {"Viewer",
-         {{"--split", "", "NAME", "split view: the right half uses integrator NAME"},
-          {"--split-depth", "", "D", "max depth of the right half (default: --max-depth)"},
-          {"--denoise", "", "NAME",
-           "none | bilateral | atrous: denoise the radiance view for display (N toggles\nraw / denoised; "
-           "screenshots are of what is shown)"},
-          {"--scale", "", "F", "accumulation size / window size, 0.0625 to 1 (default 1)"},
-          {"--frames", "", "N",
-           "close after N frames (with --spp S: not before S samples per pixel; never in the middle of a "
-           "pass, so a screenshot holds whole passes) and print the median frame time and samples/s"},
-          {"--screenshot", "", "FILE",
-           "at exit, write the rendered image: .png as shown, .exr or .pfm linear"},
-          {"--screenshot-window", "", "FILE", "at exit, write the whole window, panel included (.png)"},
-          {"--no-ui", "", "", "no panel"}}}};
-    for (OptionGroup& g : requestOptionGroups(kViewOptions, kViewDefaults)) groups.push_back(std::move(g));
-    groups.push_back(helpOptions());
-    return groups;
+    return commandOptions(
+        {{"Viewer",
+          {{"--split", "", "NAME", "split view: the right half uses integrator NAME"},
+           {"--split-depth", "", "D", "max depth of the right half (default: --max-depth)"},
+           {"--denoise", "", "NAME",
+            "none | bilateral | atrous: denoise the radiance view for display (N toggles\nraw / denoised; "
+            "screenshots are of what is shown)"},
+           {"--scale", "", "F", "accumulation size / window size, 0.0625 to 1 (default 1)"},
+           {"--frames", "", "N",
+            "close after N frames (with --spp S: not before S samples per pixel; never in the middle of a "
+            "pass, so a screenshot holds whole passes) and print the median frame time and samples/s"},
+           {"--screenshot", "", "FILE",
+            "at exit, write the rendered image: .png as shown, .exr or .pfm linear"},
+           {"--screenshot-window", "", "FILE", "at exit, write the whole window, panel included (.png)"},
+           {"--no-ui", "", "", "no panel"}}}},
+        kViewOptions, kViewDefaults);
 }
 
 void printViewUsage() {

@@ -32,4 +32,11 @@ std::vector<std::string> splitNameList(const std::string& text, const std::strin
     return names;
 }
 
+std::string choiceList(const std::vector<std::string>& names) {
+    std::string text;
+    for (size_t i = 0; i < names.size(); ++i)
+        text += (i == 0 ? "" : i + 1 == names.size() ? " or " : ", ") + names[i];
+    return text;
+}
+
 }  // namespace fp

@@ -1,7 +1,10 @@
 #pragma once
 // Small text helpers for names, flags and file names.
+#include <cstddef>
 #include <string>
 #include <vector>
+
+#include "core/error.h"
 
 namespace fp {
 
@@ -15,5 +18,20 @@ std::string lowerCaseExtension(const std::string& path);
 // A comma-separated list of names on the command line: "a,b,c" -> {"a", "b", "c"}. Throws fp::Error
 // naming `flag` for an empty entry ("a,,b", "", "a,") or a repeated one.
 std::vector<std::string> splitNameList(const std::string& text, const std::string& flag);
+
+// "a", "a or b", "a, b or c": the choices an error message offers.
+std::string choiceList(const std::vector<std::string>& names);
+
+// The one of `all` that `nameOf` calls `name`: how every --flag NAME and scene-file name is read.
+// Throws fp::Error "unknown <what> '<name>' (choose a, b or c)".
+template <typename Enum, std::size_t N>
+Enum parseName(const std::string& name, const Enum (&all)[N], const char* (*nameOf)(Enum), const char* what) {
+    std::vector<std::string> names;
+    for (Enum e : all) {
+        if (name == nameOf(e)) return e;
+        names.push_back(nameOf(e));
+    }
+    throw Error("unknown " + std::string(what) + " '" + name + "' (choose " + choiceList(names) + ")");
+}
 
 }  // namespace fp

@@ -1,14 +1,13 @@
 #include "denoise/denoiser.h"
 
 #include "core/error.h"
+#include "core/text.h"
 #include "denoise/denoise_passes.h"
 
 namespace fp {
 
 Denoiser parseDenoiser(const std::string& name) {
-    for (Denoiser d : kAllDenoisers)
-        if (name == denoiserName(d)) return d;
-    throw Error("unknown denoiser '" + name + "' (choose none, bilateral or atrous)");
+    return parseName(name, kAllDenoisers, denoiserName, "denoiser");
 }
 
 const char* denoiserName(Denoiser denoiser) {

@@ -19,6 +19,7 @@ struct Image {
 };
 
 enum class ToneMap { Clamp, Reinhard, Aces };
+constexpr ToneMap kAllToneMaps[] = {ToneMap::Clamp, ToneMap::Reinhard, ToneMap::Aces};
 
 struct DisplaySettings {
     float exposure = 0.0f;  // in stops: pixels are scaled by 2^exposure before tone mapping

@@ -1,14 +1,11 @@
 #include "image/tone_map.h"
 
-#include "core/error.h"
+#include "core/text.h"
 
 namespace fp {
 
 ToneMap parseToneMap(const std::string& name) {
-    if (name == "clamp") return ToneMap::Clamp;
-    if (name == "reinhard") return ToneMap::Reinhard;
-    if (name == "aces") return ToneMap::Aces;
-    throw Error("unknown tone map '" + name + "' (choose clamp, reinhard or aces)");
+    return parseName(name, kAllToneMaps, toneMapName, "tone map");
 }
 
 const char* toneMapName(ToneMap toneMap) {

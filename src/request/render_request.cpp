@@ -99,6 +99,22 @@ std::vector<OptionGroup> requestOptionGroups(unsigned options, const FrontEndDef
     return groups;
 }
 
+std::vector<OptionGroup> commandOptions(std::vector<OptionGroup> own, unsigned shared,
+                                        const FrontEndDefaults& defaults) {
+    for (OptionGroup& g : requestOptionGroups(shared, defaults)) own.push_back(std::move(g));
+    own.push_back(helpOptions());
+    return own;
+}
+
+FrontEndDefaults FrontEndDefaults::ownImage(glm::ivec2 size, int spp) {
+    FrontEndDefaults d;
+    d.size = size;
+    d.sceneSize = false;
+    d.spp = spp;
+    d.sceneSpp = false;
+    return d;
+}
+
 RenderRequest::RenderRequest(const Args& args, const FrontEndDefaults& defaults) : defaults_(defaults) {
     if (defaults.scene && args.positional().size() > 1)
         throw Error("expected one scene file, got " + std::to_string(args.positional().size()) +

@@ -42,11 +42,18 @@ struct FrontEndDefaults {
     bool sceneSpp = true;   // a scene file's spp applies (not to a benchmark run)
     int samplesPerPass = 1;
     bool scene = true;  // the positional argument names the scene (merge's are the parts it merges)
+
+    // A window, a sweep or a benchmark run: its own size and spp (0: none), whatever the scene file says.
+    static FrontEndDefaults ownImage(glm::ivec2 size, int spp);
 };
 
 // The shared options a front end takes, grouped for its --help ("Image", "Path tracing", ...), with
 // the defaults it applies.
 std::vector<OptionGroup> requestOptionGroups(unsigned options, const FrontEndDefaults& defaults = {});
+
+// A command's whole table: its own groups, the shared options it takes, then -h/--help.
+std::vector<OptionGroup> commandOptions(std::vector<OptionGroup> own, unsigned shared,
+                                        const FrontEndDefaults& defaults = {});
 
 class RenderRequest {
   public:

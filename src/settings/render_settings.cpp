@@ -1,13 +1,12 @@
 #include "settings/render_settings.h"
 
 #include "core/error.h"
+#include "core/text.h"
 
 namespace fp {
 
 Integrator parseIntegrator(const std::string& name) {
-    for (Integrator i : kAllIntegrators)
-        if (name == integratorName(i)) return i;
-    throw Error("unknown integrator '" + name + "' (choose naive, bsdf, nee or bdpt)");
+    return parseName(name, kAllIntegrators, integratorName, "integrator");
 }
 
 const char* integratorName(Integrator integrator) {
@@ -25,9 +24,7 @@ const char* integratorName(Integrator integrator) {
 }
 
 Sampler parseSampler(const std::string& name) {
-    for (Sampler s : kAllSamplers)
-        if (name == samplerName(s)) return s;
-    throw Error("unknown sampler '" + name + "' (choose sobol or independent)");
+    return parseName(name, kAllSamplers, samplerName, "sampler");
 }
 
 const char* samplerName(Sampler sampler) {
@@ -35,9 +32,7 @@ const char* samplerName(Sampler sampler) {
 }
 
 LightSampling parseLightSampling(const std::string& name) {
-    for (LightSampling l : kAllLightSamplings)
-        if (name == lightSamplingName(l)) return l;
-    throw Error("unknown light sampling '" + name + "' (choose auto, area or solid-angle)");
+    return parseName(name, kAllLightSamplings, lightSamplingName, "light sampling");
 }
 
 const char* lightSamplingName(LightSampling sampling) {
@@ -52,10 +47,7 @@ const char* lightSamplingName(LightSampling sampling) {
 }
 
 View parseView(const std::string& name) {
-    for (View v : kAllViews)
-        if (name == viewName(v)) return v;
-    throw Error("unknown view '" + name +
-                "' (choose radiance, depth, normal, albedo, bounces, nodes, triangles or cost)");
+    return parseName(name, kAllViews, viewName, "view");
 }
 
 const char* viewName(View view) {

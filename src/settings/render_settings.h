@@ -17,7 +17,7 @@ const char* integratorName(Integrator integrator);
 // Where the random numbers come from (glsl/common/rng.glsl): Owen-scrambled Sobol points, stratified per
 // pixel (Burley 2020), or independent uniform numbers, the textbook's plain Monte Carlo.
 enum class Sampler { Independent, Sobol };
-constexpr Sampler kAllSamplers[] = {Sampler::Independent, Sampler::Sobol};
+constexpr Sampler kAllSamplers[] = {Sampler::Sobol, Sampler::Independent};
 Sampler parseSampler(const std::string& name);  // throws fp::Error listing the choices
 const char* samplerName(Sampler sampler);
 
