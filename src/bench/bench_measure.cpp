@@ -107,9 +107,19 @@ double SceneMeasurement::sceneFirstFrameSeconds() const {
     return secondsBetween(loadStart, firstPassEnd);
 }
 
+RenderSettings BenchSettings::renderFor(const Scene& scene) const {
+    RenderSettings r = request ? request->settings(scene) : render;
+    if (independentSampler) r.sampler = Sampler::Independent;
+    return r;
+}
+
+Camera BenchSettings::cameraFor(const Scene& scene) const {
+    return request ? request->camera(scene) : scene.camera.value_or(frameBounds(scene.bounds()));
+}
+
 SceneMeasurement measureScene(const std::function<Scene()>& load, const BenchSettings& settings) {
     SceneMeasurement m;
-    RenderSettings render = settings.render;
+    RenderSettings render;
     // The stages of the first frame, each timed on its own so a slow start can be attributed.
     m.loadStart = SteadyClock::now();
     Camera camera;
@@ -118,7 +128,8 @@ SceneMeasurement measureScene(const std::function<Scene()>& load, const BenchSet
         // The scene lives only until the renderer has its GPU copy, so that the largest scenes do not
         // hold two copies through the runs.
         Scene scene = load();
-        camera = scene.camera.value_or(frameBounds(scene.bounds()));
+        render = m.render = settings.renderFor(scene);
+        camera = settings.cameraFor(scene);
         m.source = scene.source;
         m.loadSeconds = secondsSince(m.loadStart);
         auto stage = SteadyClock::now();
@@ -133,7 +144,7 @@ SceneMeasurement measureScene(const std::function<Scene()>& load, const BenchSet
     // Run i has seed i: the warm-up is run 0, the timed runs 1..R, so no two runs trace the same paths.
     auto measure = [&](uint32_t seed, bool first) {
         render.seed = seed;
-        render.samplesPerPass = first ? 1 : settings.render.samplesPerPass;
+        render.samplesPerPass = first ? 1 : m.render.samplesPerPass;
         renderer->configure(render, camera);
         Run run;
         run.seed = seed;

@@ -11,8 +11,9 @@
 
 #include "core/clock.h"
 #include "render/renderer.h"
-#include "render/settings.h"
+#include "request/render_request.h"
 #include "scene/scene.h"
+#include "settings/render_settings.h"
 
 namespace fp {
 
@@ -51,8 +52,8 @@ const std::vector<Column>& columns();
 // The settings every scene of one command is measured with.
 struct BenchSettings {
     // The timed runs draw render.samplesPerPass samples per pass (bench's default: 8, which costs about
-    // 5 % less CPU per path than 1 on llvmpipe: BENCHMARKS.md); the warm-up, whose first pass is the
-    // first frame, always draws 1, as `fragpath render` does by default.
+    // 5 % less CPU per path than 1 on llvmpipe: docs/optimisation-log.md, entry 8); the warm-up, whose
+    // first pass is the first frame, always draws 1, as `fragpath render` does by default.
     RenderSettings render;
     int spp = 8;   // samples per pixel in each run
     int runs = 5;  // timed runs after the warm-up
@@ -60,10 +61,18 @@ struct BenchSettings {
     // Read the shaders from this directory instead of the ones built in (empty: built in), so that
     // shader variants can be compared run for run with one binary.
     std::string shaderDir;
+    // The command line's request: each scene is rendered with its flags over the scene file's defaults
+    // (request/render_request.h). Without one, `render` and the scene's camera as they are.
+    std::optional<RenderRequest> request;
+    bool independentSampler = false;  // --native without --sampler: the native reference's numbers
+
+    RenderSettings renderFor(const Scene& scene) const;
+    Camera cameraFor(const Scene& scene) const;
 };
 
 struct SceneMeasurement {
     std::string source;
+    RenderSettings render;  // what it was rendered with (BenchSettings::renderFor)
     SceneStats stats;
     // Stages of the first frame: load (or generate) the scene; build the BVH, pack and upload; compile
     // and link the GLSL; the first pass, which includes llvmpipe's JIT of the fragment shader.

@@ -6,7 +6,7 @@
 #include "image/image.h"
 #include "image/image_stats.h"
 #include "render/accumulation.h"
-#include "render/settings.h"
+#include "settings/render_settings.h"
 
 namespace fp::bench {
 

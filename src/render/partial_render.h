@@ -8,8 +8,8 @@
 
 #include "image/exr.h"
 #include "image/image.h"
-#include "render/settings.h"
 #include "scene/scene.h"
+#include "settings/render_settings.h"
 
 namespace fp {
 

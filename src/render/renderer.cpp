@@ -6,8 +6,9 @@
 
 #include "core/clock.h"
 #include "core/error.h"
-#include "gpu/layout.h"
-#include "gpu/light_strategy.h"
+#include "gpu/layout_defines.h"
+#include "pack/layout.h"
+#include "pack/light_strategy.h"
 #include "scene/spectrum.h"
 
 namespace fp {

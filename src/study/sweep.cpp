@@ -23,7 +23,8 @@ SweepResult runSweep(Renderer& renderer, const Image& reference, const SweepOpti
     for (Integrator integrator : options.integrators) {
         RenderSettings settings = options.render;
         settings.integrator = integrator;
-        // The denoisers need the first-hit guides; they cost the raw render about a tenth (BENCHMARKS.md).
+        // The denoisers need the first-hit guides; they cost the raw render about a tenth (BENCHMARKS.md,
+        // "Denoisers: cost on llvmpipe").
         for (const StudyDenoiser& denoiser : options.denoisers)
             if (denoiser.name != "none") settings.guides = true;
         const std::string name = integratorName(integrator);
