@@ -7,10 +7,10 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
-#include <filesystem>
 #include <fstream>
 
 #include "core/error.h"
+#include "core/file.h"
 #include "core/log.h"
 #include "core/statistics.h"
 #include "core/text.h"
@@ -324,11 +324,7 @@ nlohmann::json measurementJson(const SceneMeasurement& m, double firstFrameSecon
 }
 
 void checkJsonPath(const std::string& path) {
-    std::filesystem::path dir = std::filesystem::path(path).parent_path();
-    if (dir.empty()) dir = ".";
-    if (!std::filesystem::is_directory(dir))
-        throw Error("--json " + path + ": directory " + dir.string() + " does not exist");
-    if (std::filesystem::is_directory(path)) throw Error("--json " + path + " is a directory");
+    checkWritablePath(path, "--json");
 }
 
 void writeJson(const std::string& path, const nlohmann::json& j) {

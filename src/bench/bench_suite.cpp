@@ -211,14 +211,21 @@ const std::vector<std::string>& suiteSceneNames() {
     return names;
 }
 
-int runSuite(const SuiteOptions& options) {
-    std::vector<SuiteScene> scenes;
-    for (SuiteScene& s : suiteScenes()) {
-        bool listed = std::find(options.scenes.begin(), options.scenes.end(), s.name) != options.scenes.end();
-        bool chosen =
-            (options.scenes.empty() ? s.name != "bunny" : listed) || (s.name == "bunny" && options.withBunny);
-        if (chosen) scenes.push_back(std::move(s));
+std::vector<std::string> selectSuiteScenes(const std::vector<std::string>& requested, bool withBunny) {
+    std::vector<std::string> chosen;
+    for (const std::string& name : suiteSceneNames()) {
+        bool listed = std::find(requested.begin(), requested.end(), name) != requested.end();
+        if ((requested.empty() ? name != "bunny" : listed) || (name == "bunny" && withBunny))
+            chosen.push_back(name);
     }
+    return chosen;
+}
+
+int runSuite(const SuiteOptions& options) {
+    const std::vector<std::string> chosen = selectSuiteScenes(options.scenes, options.withBunny);
+    std::vector<SuiteScene> scenes;
+    for (SuiteScene& s : suiteScenes())
+        if (std::find(chosen.begin(), chosen.end(), s.name) != chosen.end()) scenes.push_back(std::move(s));
 
     BenchEnvironment environment = readBenchEnvironment();
     // One context for the whole suite: its creation is not part of any scene's first frame.

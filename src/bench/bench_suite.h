@@ -22,6 +22,11 @@ struct SuiteOptions {
 // The suite's scene names in the order they run; "bunny" only runs when asked for.
 const std::vector<std::string>& suiteSceneNames();
 
+// The scenes runSuite measures, in the suite's order whatever the order of `requested`: those named in
+// `requested` (empty: every scene but the bunny), and the bunny with `withBunny` too. Names that are not
+// suite scenes are ignored (the command refuses them first).
+std::vector<std::string> selectSuiteScenes(const std::vector<std::string>& requested, bool withBunny);
+
 // Runs the suite, printing each scene's figures and a summary table. Returns the exit code.
 int runSuite(const SuiteOptions& options);
 

@@ -17,19 +17,20 @@ namespace {
 constexpr int kSize = 24;  // kCausticUnderSphere is given for this size
 constexpr int kMaxDepth = 5;
 
-Image crop(const Image& image, const PixelRect& r) {
+}  // namespace
+
+Image cropImage(const Image& image, const PixelRect& r) {
     Image out(r.width, r.height);
     for (int y = 0; y < r.height; ++y)
         for (int x = 0; x < r.width; ++x) out.at(x, y) = image.at(r.x + x, r.y + y);
     return out;
 }
 
-// The per-pixel variance of the mean, summed over the region.
 double regionVariance(const Accumulation& acc, const PixelRect& r) {
     return meanColor(acc.varianceOfMean(), r).y * double(r.width) * double(r.height);
 }
 
-RenderSettings studySettings(Integrator integrator, uint32_t seed) {
+RenderSettings causticStudySettings(Integrator integrator, uint32_t seed) {
     RenderSettings s;
     s.width = s.height = kSize;
     s.integrator = integrator;
@@ -38,8 +39,6 @@ RenderSettings studySettings(Integrator integrator, uint32_t seed) {
     s.samplesPerPass = 16;
     return s;
 }
-
-}  // namespace
 
 int runCausticStudy(const CausticStudyOptions& options) {
     std::unique_ptr<GlContext> context = createOsMesaContext();
@@ -52,7 +51,7 @@ int runCausticStudy(const CausticStudyOptions& options) {
     for (float roughness : {0.0f, 0.3f}) {
         Scene scene = causticScene(roughness);
         Renderer renderer(scene);
-        renderer.configure(studySettings(Integrator::Bdpt, 99), *scene.camera);
+        renderer.configure(causticStudySettings(Integrator::Bdpt, 99), *scene.camera);
         renderer.render(options.referenceSpp);
         Accumulation reference = renderer.readback();
         Image ref = reference.mean();
@@ -62,9 +61,9 @@ int runCausticStudy(const CausticStudyOptions& options) {
         std::printf(
             "  integrator      spp   cpu s  wall s  RMSE image  RMSE under sphere  var under sphere\n");
         for (Integrator integrator : {Integrator::Nee, Integrator::Bdpt}) {
-            renderer.configure(studySettings(integrator, 7), *scene.camera);
+            renderer.configure(causticStudySettings(integrator, 7), *scene.camera);
             renderer.render(16);  // warm-up: shader JIT
-            renderer.configure(studySettings(integrator, 7), *scene.camera);
+            renderer.configure(causticStudySettings(integrator, 7), *scene.camera);
             double cpuStart = processCpuSeconds(), cpu = 0.0;
             auto wallStart = SteadyClock::now();
             while (cpu < options.budgetSeconds) {
@@ -76,7 +75,7 @@ int runCausticStudy(const CausticStudyOptions& options) {
             Image mean = acc.mean();
             std::printf("  %-10s %8d %7.1f %7.1f %11.5f %18.5f %17.4g\n", integratorName(integrator),
                         renderer.samples(), cpu, wall, rmse(mean, ref),
-                        rmse(crop(mean, region), crop(ref, region)), regionVariance(acc, region));
+                        rmse(cropImage(mean, region), cropImage(ref, region)), regionVariance(acc, region));
         }
     }
     return 0;

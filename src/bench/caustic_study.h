@@ -1,6 +1,13 @@
 #pragma once
 // `fragpath bench --study caustic`: bdpt against nee at equal process CPU time on causticScene
 // (scene/procedural.h), the figures of BENCHMARKS.md ("BDPT vs NEE on a caustic scene").
+#include <cstdint>
+
+#include "image/image.h"
+#include "image/image_stats.h"
+#include "render/accumulation.h"
+#include "settings/render_settings.h"
+
 namespace fp::bench {
 
 struct CausticStudyOptions {
@@ -10,5 +17,14 @@ struct CausticStudyOptions {
 
 // Prints the table; returns the exit code.
 int runCausticStudy(const CausticStudyOptions& options);
+
+// The study's parts that need no GL context.
+// The settings of each of its renders: 24x24 (the size kCausticUnderSphere is given for), depth 5,
+// 16 samples per pass.
+RenderSettings causticStudySettings(Integrator integrator, uint32_t seed);
+// The pixels of `rect` (inside `image`) as an image of their own.
+Image cropImage(const Image& image, const PixelRect& rect);
+// The per-pixel variance of the mean in the luminance channel G, summed over `rect`.
+double regionVariance(const Accumulation& acc, const PixelRect& rect);
 
 }  // namespace fp::bench

@@ -1,5 +1,7 @@
 #include "core/file.h"
 
+#include <unistd.h>
+
 #include <cerrno>
 #include <cstring>
 #include <filesystem>
@@ -33,6 +35,16 @@ std::string readFileBytes(const std::string& path) {
     bytes.append(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
     if (in.bad()) throw Error(path + ": read error");
     return bytes;
+}
+
+void checkWritablePath(const std::string& path, const std::string& label) {
+    fs::path dir = fs::path(path).parent_path();
+    if (dir.empty()) dir = ".";
+    const std::string what = label + " " + path;
+    if (!fs::is_directory(dir)) throw Error(what + ": directory " + dir.string() + " does not exist");
+    if (access(dir.c_str(), W_OK) != 0)
+        throw Error(what + ": directory " + dir.string() + " is not writable");
+    if (fs::is_directory(path)) throw Error(what + " is a directory");
 }
 
 }  // namespace fp

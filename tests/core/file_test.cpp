@@ -1,5 +1,7 @@
-// readFileBytes: the whole file, byte for byte, whatever the file system says its size is.
+// readFileBytes: the whole file, byte for byte, whatever the file system says its size is;
+// checkWritablePath: why an output cannot be written, said before the work that would write it.
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <filesystem>
 #include <fstream>
@@ -32,6 +34,33 @@ TEST(ReadFileBytes, RefusesWhatIsNotARegularFile) {
     EXPECT_THROW(readFileBytes(""), Error);
     EXPECT_THROW(readFileBytes("/nonexistent/fragpath"), Error);
     EXPECT_THROW(readFileBytes(std::filesystem::temp_directory_path().string()), Error);
+}
+
+// The message of the fp::Error checkWritablePath throws, "" for none.
+std::string writeRefusal(const std::string& path) {
+    try {
+        checkWritablePath(path, "--json");
+    } catch (const Error& e) {
+        return e.what();
+    }
+    return "";
+}
+
+TEST(CheckWritablePath, SaysWhyAFileCannotBeWrittenThere) {
+    namespace fs = std::filesystem;
+    const fs::path dir = fs::temp_directory_path() / ("fragpath_writable_" + std::to_string(getpid()));
+    fs::create_directories(dir / "sub");
+    const std::string file = (dir / "out.json").string();
+    EXPECT_EQ(writeRefusal(file), "");
+    EXPECT_EQ(writeRefusal("relative.json"), "");  // in the current directory
+    const std::string missing = (dir / "missing" / "out.json").string();
+    EXPECT_EQ(writeRefusal(missing),
+              "--json " + missing + ": directory " + (dir / "missing").string() + " does not exist");
+    EXPECT_EQ(writeRefusal((dir / "sub").string()), "--json " + (dir / "sub").string() + " is a directory");
+    // A directory no one may create files in, root included.
+    EXPECT_EQ(writeRefusal("/proc/self/out.json"),
+              "--json /proc/self/out.json: directory /proc/self is not writable");
+    fs::remove_all(dir);
 }
 
 }  // namespace
