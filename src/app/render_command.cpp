@@ -1,18 +1,16 @@
 // `fragpath render`: the offscreen batch renderer (OSMesa, no display, no GPU needed).
-#include <unistd.h>
 
 #include <algorithm>
 #include <atomic>
-#include <chrono>
 #include <cmath>
 #include <csignal>
 #include <cstdio>
 #include <cstdlib>
-#include <ctime>
 #include <filesystem>
 
 #include "app/commands.h"
 #include "app/progress.h"
+#include "core/clock.h"
 #include "core/error.h"
 #include "denoise/denoiser.h"
 #include "gl/context.h"
@@ -82,25 +80,6 @@ double parseDuration(const std::string& flag, const std::string& text) {
     return value * scale;
 }
 
-double processCpuSeconds() {
-    return double(std::clock()) / CLOCKS_PER_SEC;
-}
-
-// Fails before a long render, not after it, when the output cannot be written.
-void checkOutputPath(const std::string& path) {
-    std::string ext = std::filesystem::path(path).extension().string();
-    for (char& c : ext) c = char(std::tolower(static_cast<unsigned char>(c)));
-    if (ext != ".png" && ext != ".exr" && ext != ".pfm")
-        throw Error("output " + path + ": unknown image format '" + ext + "' (use .png, .exr or .pfm)");
-    std::filesystem::path dir = std::filesystem::path(path).parent_path();
-    if (dir.empty()) dir = ".";
-    if (!std::filesystem::is_directory(dir))
-        throw Error("output " + path + ": directory " + dir.string() + " does not exist");
-    if (access(dir.c_str(), W_OK) != 0)
-        throw Error("output " + path + ": directory " + dir.string() + " is not writable");
-    if (std::filesystem::is_directory(path)) throw Error("output " + path + " is a directory");
-}
-
 }  // namespace
 
 int renderCommand(const std::vector<std::string>& argv) {
@@ -111,7 +90,7 @@ int renderCommand(const std::vector<std::string>& argv) {
     }
     const RenderRequest request(args);
     std::string output = args.text("--output").value_or("render.png");
-    checkOutputPath(output);
+    checkImageOutput(output, "output");
     // -o always holds the raw samples (resumable, mergeable); a denoised image needs a name of its own,
     // so that no file silently holds something other than what its flag says.
     Denoiser denoiser = parseDenoiser(args.text("--denoise").value_or("none"));
@@ -122,7 +101,7 @@ int renderCommand(const std::vector<std::string>& argv) {
     if (denoisedOutput && !args.has("--denoise"))
         throw Error("--denoised-out needs --denoise NAME (none, bilateral or atrous)");
     if (denoisedOutput) {
-        checkOutputPath(*denoisedOutput);
+        checkImageOutput(*denoisedOutput, "--denoised-out");
         if (std::filesystem::absolute(*denoisedOutput).lexically_normal() ==
             std::filesystem::absolute(output).lexically_normal())
             throw Error("--denoised-out and -o name the same file, " + output);
@@ -136,7 +115,7 @@ int renderCommand(const std::vector<std::string>& argv) {
     // From here on an interrupt stops the render after the current pass, and the image is still written.
     std::signal(SIGINT, onInterrupt);
     std::signal(SIGTERM, onInterrupt);
-    auto start = std::chrono::steady_clock::now();
+    auto start = SteadyClock::now();
     Scene scene = request.loadScene();
     RenderSettings settings = request.settings(scene);
     settings.sampleOffset = sampleOffset;
@@ -173,17 +152,17 @@ int renderCommand(const std::vector<std::string>& argv) {
     }
 
     Progress progress(spp - already);
-    auto traceStart = std::chrono::steady_clock::now();
+    auto traceStart = SteadyClock::now();
     double cpuStart = processCpuSeconds();
     double firstFrameSeconds = 0.0;
     renderer.render(std::max(spp - already, 0), [&](int done) {
-        auto now = std::chrono::steady_clock::now();
-        if (firstFrameSeconds == 0.0) firstFrameSeconds = std::chrono::duration<double>(now - start).count();
+        auto now = SteadyClock::now();
+        if (firstFrameSeconds == 0.0) firstFrameSeconds = secondsBetween(start, now);
         if (!quiet) progress.update(done);
-        bool overBudget = budget && std::chrono::duration<double>(now - traceStart).count() >= *budget;
+        bool overBudget = budget && secondsBetween(traceStart, now) >= *budget;
         return !interrupted.load() && !overBudget;
     });
-    double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - traceStart).count();
+    double seconds = secondsSince(traceStart);
     double cpuSeconds = processCpuSeconds() - cpuStart;
     progress.finish();
 

@@ -12,6 +12,7 @@
 
 #include "app/commands.h"
 #include "core/error.h"
+#include "core/text.h"
 #include "gl/context.h"
 #include "image/file_io.h"
 #include "image/image_stats.h"
@@ -21,7 +22,6 @@
 #include "study/denoisers.h"
 #include "study/image_strip.h"
 #include "study/metrics.h"
-#include "study/name_list.h"
 #include "study/path_cost.h"
 #include "study/plots.h"
 #include "study/report.h"
@@ -123,7 +123,7 @@ int studyCommand(const std::vector<std::string>& argv) {
     // Everything that can be wrong with the request fails here, before minutes of rendering.
     std::vector<Integrator> integrators;
     for (const std::string& name :
-         study::splitNameList(args.text("--integrators").value_or("naive,bsdf,nee,bdpt"), "--integrators"))
+         splitNameList(args.text("--integrators").value_or("naive,bsdf,nee,bdpt"), "--integrators"))
         integrators.push_back(parseIntegrator(name));
     std::vector<std::string> known;
     for (const study::StudyDenoiser& d : study::availableDenoisers()) known.push_back(d.name);

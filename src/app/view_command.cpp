@@ -61,13 +61,6 @@ void printViewUsage() {
     std::fputs(kViewerControlsHelp, stdout);
 }
 
-void checkImagePath(const std::string& flag, const std::string& path, bool pngOnly) {
-    std::string ext = lowerCaseExtension(path);
-    if (ext != ".png" && (pngOnly || (ext != ".exr" && ext != ".pfm")))
-        throw Error("option " + flag + ": '" + path + "' must end in .png" +
-                    (pngOnly ? "" : ", .exr or .pfm"));
-}
-
 }  // namespace
 
 int viewCommand(const std::vector<std::string>& argv) {
@@ -82,9 +75,9 @@ int viewCommand(const std::vector<std::string>& argv) {
     options.printTiming = options.frames > 0;
     options.screenshot = args.text("--screenshot").value_or("");
     options.windowScreenshot = args.text("--screenshot-window").value_or("");
-    if (!options.screenshot.empty()) checkImagePath("--screenshot", options.screenshot, false);
+    if (!options.screenshot.empty()) checkImageOutput(options.screenshot, "--screenshot");
     if (!options.windowScreenshot.empty())
-        checkImagePath("--screenshot-window", options.windowScreenshot, true);
+        checkImageOutput(options.windowScreenshot, "--screenshot-window", true);
     options.ui = !args.has("--no-ui");
     options.shaderDir = request.shaderDir();
 

@@ -8,6 +8,8 @@
 #include <cstring>
 
 #include "core/error.h"
+#include "core/file.h"
+#include "core/text.h"
 
 namespace fp {
 
@@ -45,6 +47,14 @@ void writeFileAtomically(const std::string& path, const std::vector<std::uint8_t
         std::remove(temporary.c_str());
         throw Error("cannot write '" + path + "': " + reason(error));
     }
+}
+
+void checkImageOutput(const std::string& path, const std::string& label, bool pngOnly) {
+    const std::string ext = lowerCaseExtension(path);
+    if (ext != ".png" && (pngOnly || (ext != ".exr" && ext != ".pfm")))
+        throw Error(label + " " + path + ": unknown image format '" + ext + "' (use " +
+                    (pngOnly ? ".png" : ".png, .exr or .pfm") + ")");
+    checkWritablePath(path, label);
 }
 
 }  // namespace fp
