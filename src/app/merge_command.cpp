@@ -17,7 +17,8 @@ const char* kMergeUsage =
     "Averages partial renders weighted by their sample counts. The parts must come from the same scene\n"
     "and settings (their fingerprints must match) and hold disjoint sample ranges, as written by\n"
     "`fragpath render --sample-offset K --spp N -o part.exr`. The output's extension picks its format:\n"
-    ".exr keeps the sample ranges (merge or --resume it again), .pfm the linear image, .png sRGB.\n";
+    ".exr keeps the sample ranges (merge or --resume it again), .pfm the linear image, .png sRGB.\n"
+    "An .exr output keeps each AOV layer (render --aovs) that every part has, averaged the same way.\n";
 
 }  // namespace
 

@@ -68,6 +68,10 @@ const char* kRenderUsage =
     "  --resume FILE.exr     continue a render saved as .exr (same scene and settings) up to --spp samples\n"
     "  --backend NAME        auto (default: a GPU through EGL if there is one, else OSMesa) | egl | osmesa\n"
     "  --bvh-threads N       threads that build the BVH (default: every CPU); the tree is the same\n"
+    "  --aovs LIST           .exr output only: add first-hit layers, averaged over the samples, next to\n"
+    "                        the beauty's R, G, B: albedo (albedo.R/G/B), normal (normal.X/Y/Z: world\n"
+    "                        space, facing the camera) and depth (depth.Z: distance along the camera ray,\n"
+    "                        0 for no hit), e.g. --aovs albedo,normal,depth (src/render/aovs.h)\n"
     "  --stats               print scene, BVH, memory and timing statistics\n"
     "  --quiet               no progress bar or summary line\n"
     "  -h, --help            this text\n"
@@ -140,7 +144,8 @@ int renderCommand(const std::vector<std::string>& argv) {
                "--resume",
                "--denoise",
                "--denoised-out",
-               "--bvh-threads"},
+               "--bvh-threads",
+               "--aovs"},
               {"--stats", "--quiet", "-h", "--help"});
     if (args.has("-h") || args.has("--help")) {
         std::fputs(kRenderUsage, stdout);
@@ -150,6 +155,7 @@ int renderCommand(const std::vector<std::string>& argv) {
         throw Error("render takes one scene file, got " + std::to_string(args.positional().size()));
     std::string output = args.text("-o").value_or(args.text("--output").value_or("render.png"));
     checkOutputPath(output);
+    std::vector<Aov> aovs = parseAovOption(args.text("--aovs"), output);
     // -o always holds the raw samples (resumable, mergeable); a denoised image needs a name of its own,
     // so that no file silently holds something other than what its flag says.
     Denoiser denoiser = parseDenoiser(args.text("--denoise").value_or("none"));
@@ -198,7 +204,7 @@ int renderCommand(const std::vector<std::string>& argv) {
     settings.samplesPerPass =
         args.integer("--samples-per-pass", 1, RenderSettings::kMaxSamplesPerPass).value_or(1);
     settings.sampleOffset = uint32_t(args.integer("--sample-offset", 0, 1 << 30).value_or(0));
-    settings.guides = denoiser != Denoiser::None;
+    settings.guides = denoiser != Denoiser::None || !aovs.empty();
     std::optional<PartialRender> resumed;
     if (auto r = args.text("--resume")) resumed = readPartial(*r);
 
@@ -253,8 +259,10 @@ int renderCommand(const std::vector<std::string>& argv) {
 
     Accumulation acc = renderer.readback();
     const int total = renderer.samples();
-    writeRenderOutput(output, {acc.mean(), {{settings.sampleOffset, uint64_t(total)}}, fingerprint}, display,
-                      settings.view);
+    writeRenderOutput(
+        output,
+        {acc.mean(), {{settings.sampleOffset, uint64_t(total)}}, fingerprint, outputAovs(acc, aovs, resumed)},
+        display, settings.view);
     if (denoisedOutput) writeImage(*denoisedOutput, denoise(renderer, denoiser), display);
 
     int done = total - already;
