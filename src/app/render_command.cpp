@@ -14,6 +14,7 @@
 #include "app/args.h"
 #include "app/commands.h"
 #include "app/progress.h"
+#include "app/render_stats.h"
 #include "core/error.h"
 #include "denoise/denoiser.h"
 #include "gl/context.h"
@@ -73,6 +74,7 @@ const char* kRenderUsage =
     "                        space, facing the camera) and depth (depth.Z: distance along the camera ray,\n"
     "                        0 for no hit), e.g. --aovs albedo,normal,depth (src/render/aovs.h)\n"
     "  --stats               print scene, BVH, memory and timing statistics\n"
+    "  --json FILE           write those statistics to FILE as JSON (with or without --stats)\n"
     "  --quiet               no progress bar or summary line\n"
     "  -h, --help            this text\n"
     "\n"
@@ -145,7 +147,8 @@ int renderCommand(const std::vector<std::string>& argv) {
                "--denoise",
                "--denoised-out",
                "--bvh-threads",
-               "--aovs"},
+               "--aovs",
+               "--json"},
               {"--stats", "--quiet", "-h", "--help"});
     if (args.has("-h") || args.has("--help")) {
         std::fputs(kRenderUsage, stdout);
@@ -156,6 +159,8 @@ int renderCommand(const std::vector<std::string>& argv) {
     std::string output = args.text("-o").value_or(args.text("--output").value_or("render.png"));
     checkOutputPath(output);
     std::vector<Aov> aovs = parseAovOption(args.text("--aovs"), output);
+    std::optional<std::string> statsJson = args.text("--json");
+    if (statsJson) checkStatsJsonPath(*statsJson);
     // -o always holds the raw samples (resumable, mergeable); a denoised image needs a name of its own,
     // so that no file silently holds something other than what its flag says.
     Denoiser denoiser = parseDenoiser(args.text("--denoise").value_or("none"));
@@ -272,35 +277,11 @@ int renderCommand(const std::vector<std::string>& argv) {
                      output.c_str(), done, settings.width, settings.height,
                      integratorName(settings.integrator), settings.maxDepth, seconds, paths / seconds,
                      acc.raysTraced() / seconds);
-    if (showStats) {
-        const SceneStats& s = renderer.stats();
-        std::printf("renderer         %s\n", context->description().c_str());
-        std::printf("scene            %s\n", scene.source.c_str());
-        std::printf("triangles        %u (%u emissive)\n", s.triangles, s.emitters);
-        std::printf(
-            "bvh              %u nodes, %u leaves, depth %u, leaf size %u..%u (mean %.2f), SAH cost %.2f\n",
-            s.bvh.nodeCount, s.bvh.leafCount, s.bvh.maxDepth, s.bvh.minLeafSize, s.bvh.maxLeafSize,
-            s.bvh.meanLeafSize, s.bvh.sahCost);
-        std::printf("bvh build        %.3f s, %.3f CPU-s, threads %d (%.3g triangles/s)\n", s.bvhBuildSeconds,
-                    s.bvhBuildCpuSeconds, s.bvhBuildThreads,
-                    s.bvhBuildSeconds > 0 ? s.triangles / s.bvhBuildSeconds : 0.0);
-        std::printf(
-            "gpu memory       %zu bytes (%.1f per triangle; positions + BVH %.1f per triangle; "
-            "textures %zu bytes)\n",
-            s.gpuBytes, double(s.gpuBytes) / s.triangles, double(s.gpuGeometryBytes) / s.triangles,
-            s.gpuTextureBytes);
-        std::printf("scene reads      %s\n", sceneReadsName(s.sceneReads));
-        std::printf("image buffers    %zu bytes (%.0f per pixel: accumulation%s)\n", renderer.imageBytes(),
-                    double(renderer.imageBytes()) / (double(settings.width) * settings.height),
-                    settings.integrator == Integrator::Bdpt ? " and bdpt's light image" : "");
-        std::printf("first frame      %.3f s after start (load, build, upload, shader compile, first pass)\n",
-                    firstFrameSeconds);
-        std::printf("samples          %d per pixel, %.0f paths, %.0f rays (%.2f rays per path)\n", done,
-                    paths, acc.raysTraced(), acc.raysTraced() / paths);
-        std::printf("throughput       %.3g paths/s, %.3g rays/s, %.3g paths per CPU-second\n",
-                    paths / seconds, acc.raysTraced() / seconds, paths / cpuSeconds);
-        std::printf("dropped samples  %llu (NaN or Inf, replaced by 0)\n",
-                    (unsigned long long)acc.droppedSamples());
+    if (showStats || statsJson) {
+        RenderStats stats = collectRenderStats(renderer, acc, context->description(), scene.source, output,
+                                               {done, firstFrameSeconds, seconds, cpuSeconds});
+        if (showStats) std::fputs(formatRenderStats(stats).c_str(), stdout);
+        if (statsJson) writeRenderStatsJson(*statsJson, stats);
     }
     if (interrupted.load()) {
         std::fprintf(stderr, "fragpath: interrupted after %d of %d spp; %s holds those samples\n", total, spp,
