@@ -108,8 +108,8 @@ TEST(Aovs, MergeCarriesOnlyTheAovsOfEveryPart) {
         }
         return p;
     };
-    PartialRender merged = mergePartials({part(0, 1, 1.0f, {Aov::Normal, Aov::Albedo}),
-                                          part(1, 3, 5.0f, {Aov::Albedo, Aov::Depth, Aov::Normal})},
+    PartialRender merged = mergePartials({part(0, 1, 1.0f, {Aov::Normal, Aov::Depth, Aov::Albedo}),
+                                          part(1, 3, 5.0f, {Aov::Albedo, Aov::Normal})},
                                          {"a", "b"});
     EXPECT_EQ(merged.mean.pixels[0], glm::vec3(4.0f));
     ASSERT_EQ(merged.aovs.size(), 2u);
