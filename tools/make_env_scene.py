@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-# The environment-lit scene of BENCHMARKS.md, optimisation log, entry 31 (not an asset: regenerate it): writes sky.hdr (256x128, a sky with a
+# The environment-lit scene of docs/optimisation-log.md, entry 31 (not an asset: regenerate it): writes sky.hdr (256x128, a sky with a
 # 4x4-texel sun of radiance (400, 300, 200)), scene.obj/.mtl (a 10x10 ground quad and three UV spheres,
 # 6626 triangles, Kd 0.6) and env.json into the current directory.
 import math

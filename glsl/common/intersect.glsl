@@ -1,4 +1,4 @@
-// Ray queries against the scene's BVH (layout in src/gpu/layout.h): closest hit and any hit.
+// Ray queries against the scene's BVH (layout in src/pack/layout.h): closest hit and any hit.
 #ifndef BVH_STACK_SIZE
 #define BVH_STACK_SIZE 32
 #endif
@@ -34,7 +34,7 @@ bool intersectTriangle(Ray ray, vec3 v0, vec3 e1, vec3 e2, float tMax, out float
     return uv.x >= 0.0 && uv.y >= 0.0 && uv.x + uv.y <= 1.0 && t > 0.0 && t < tMax;
 }
 
-// Child i's quantised planes, q = byte i of a plane's uint (gpu/quantised_node.h), as floats.
+// Child i's quantised planes, q = byte i of a plane's uint (pack/quantised_node.h), as floats.
 vec4 planeSteps(uint plane) { return vec4((uvec4(plane) >> uvec4(0u, 8u, 16u, 24u)) & 255u); }
 
 // Slab test (Kay & Kajiya 1986) of the four children of a wide node at once, channel i for child i:
@@ -65,7 +65,7 @@ vec4 boxEntries(vec3 origin, vec3 invDir, uvec4 grid, uvec4 planesXY, uvec4 plan
 // one loop, shrinking hit.t; returns true as soon as one is hit when anyHit is set. One loop for all the
 // leaf children of a node, not one per child: llvmpipe runs every inlined copy of this loop whenever
 // any pixel of its SIMD group needs it, and a second copy cost 15 % of a Cornell box render
-// (BENCHMARKS.md, optimisation log).
+// (docs/optimisation-log.md, entry 3).
 bool intersectLeaves(Ray ray, uvec4 first, uvec4 count, bool anyHit, inout Hit hit) {
     // Where each range starts in the loop's count, and what turns the loop index into a triangle index.
     uint end0 = count.x, end1 = end0 + count.y, end2 = end1 + count.z, total = end2 + count.w;
@@ -76,8 +76,8 @@ bool intersectLeaves(Ray ray, uvec4 first, uvec4 count, bool anyHit, inout Hit h
         // A pixel with no triangle left still runs this iteration (masked: llvmpipe runs a loop's body
         // while any pixel of its SIMD group needs it, and every node visit enters the loop once), and
         // its fetches still read memory: at a stray index (an interior child's link, a range's end)
-        // each is a cache miss on a large scene. Triangle 0 is always in the cache (BENCHMARKS.md,
-        // optimisation log: "Stray fetches").
+        // each is a cache miss on a large scene. Triangle 0 is always in the cache (docs/optimisation-log.md,
+        // entry 25: "Stray fetches").
         i = k < total ? i : 0u;
         TriangleData tri = fetchTriangle(int(i));
         float t;

@@ -23,12 +23,12 @@ float environmentSelection() {
 }
 
 #if ENVIRONMENT_MAP
-// An equirectangular map (layout in src/gpu/layout.h), importance-sampled texel by texel with the
+// An equirectangular map (layout in src/pack/layout.h), importance-sampled texel by texel with the
 // probability of luminance * sin(theta), then uniformly inside the texel in (u, v). A texel spans the
 // solid angle 2 pi^2 sin(theta) du dv, which converts the density (as pbrt-v4 does for image infinite lights).
 // Read as images or texel fetches like the scene buffers (scene_data.glsl). The map's size is the define
 // ENVIRONMENT_SIZE (an ivec2): a constant costs fewer instructions than a uniform or textureSize, and
-// an image's imageSize would need GL_ARB_shader_image_size (BENCHMARKS.md, optimisation log, entry 31).
+// an image's imageSize would need GL_ARB_shader_image_size (docs/optimisation-log.md, entry 31).
 #ifdef SCENE_READS_IMAGES
 layout(rgba32f) readonly uniform image2D uEnvironmentMap;
 layout(r32f) readonly uniform imageBuffer uEnvironmentCdf;
@@ -145,7 +145,7 @@ EmitterPoint sampleEmitterPoint() {
 
 // The area density of sampleLight's emitter points on triangle tri: its pmf (the probability that
 // pickLight returns it: the packer stores the cdf on a 2^-24 grid, the resolution of rand(), and the pmf
-// as the exact difference of two entries, gpu/pack.cpp) over its area. Every estimator that needs the
+// as the exact difference of two entries, pack/pack.cpp) over its area. Every estimator that needs the
 // density of an emitter point reads it from here, so sampling and MIS weights agree to the last bit.
 float emitterAreaPdf(TriangleData tri) { return tri.lightPmf / (0.5 * length(cross(tri.e1, tri.e2))); }
 
@@ -157,7 +157,7 @@ float emitterAreaPdf(TriangleData tri) { return tri.lightPmf / (0.5 * length(cro
 // lamp, 0.05 sr from its floor, renders the same either way: BENCHMARKS.md, "Samplers"). Beyond
 // kMaxSphericalArea (nearly a hemisphere) the spherical triangle is ill-conditioned (pbrt-v4's bound).
 // SPHERICAL_LIGHT_SAMPLING (set by the renderer from RenderSettings::lightSampling: --light-sampling
-// auto chooses it for scenes with an emitter close to a surface it faces, gpu/light_strategy.h): 1
+// auto chooses it for scenes with an emitter close to a surface it faces, pack/light_strategy.h): 1
 // samples as above, 0 always by area (the spherical code costs registers even where no emitter is
 // large enough to take it).
 #ifndef SPHERICAL_LIGHT_SAMPLING

@@ -8,7 +8,7 @@
 // pixels and samples add up to 2^32, which a 512x512 render reaches at a few hundred samples per pixel.)
 // The key packs the pixel as x | y << 16: textures are at most 16384 wide, so both fit in 16 bits.
 
-// SAMPLER (set by the renderer, src/render/settings.h): 0 independent numbers, 1 Owen-scrambled Sobol.
+// SAMPLER (set by the renderer, src/settings/render_settings.h): 0 independent numbers, 1 Owen-scrambled Sobol.
 #ifndef SAMPLER
 #define SAMPLER 0
 #endif

@@ -1,4 +1,4 @@
-// Reading the scene from its buffer textures. The texel layout is documented once, in src/gpu/layout.h;
+// Reading the scene from its buffer textures. The texel layout is documented once, in src/pack/layout.h;
 // the *_TEXELS constants come from there as defines.
 //
 // Every read of these buffers goes through the one-line helpers below (triangleTexel ... lightTexel), and
@@ -6,9 +6,9 @@
 // environmentCdfTexel in lights.glsl), through SCENE_TEXEL and SCENE_TEXEL_2D. With SCENE_READS_IMAGES
 // (the context has GL_ARB_shader_image_load_store: gpu/scene_textures.h), they are imageLoads of
 // read-only images, which llvmpipe generates inline; without, texelFetches, which llvmpipe makes
-// out-of-line calls for these formats, spilling everything live (BENCHMARKS.md, entries 18 and 23). The
-// texels are the same, so the images rendered are bit-identical. Each image uses the image unit of its
-// texture unit's number (the uniforms keep their names); layout::kImageUnits lists them.
+// out-of-line calls for these formats, spilling everything live (docs/optimisation-log.md, entries 18 and
+// 23). The texels are the same, so the images rendered are bit-identical. Each image uses the image unit
+// of its texture unit's number (the uniforms keep their names); layout::kImageUnits lists them.
 #ifdef SCENE_READS_IMAGES
 layout(rgba32f) readonly uniform imageBuffer uTriangles;
 layout(rgba32f) readonly uniform imageBuffer uNormals;

@@ -68,7 +68,7 @@ bool sameSide(Surface s, vec3 local, vec3 world) { return (local.z > 0.0) == (do
 // A ray leaving the surface, nudged off it to the side it leaves on.
 Ray spawnRay(Surface s, vec3 dir) { return Ray(offsetToward(s.position, s.geometricNormal, s.offset, dir), dir); }
 
-// --clamp-indirect X (src/render/settings.h): light that reached the first surface the camera sees after
+// --clamp-indirect X (src/settings/render_settings.h): light that reached the first surface the camera sees after
 // bouncing off another one (paths of two bounces or more) is summed apart, and each sample's sum is
 // scaled down to a largest channel of at most X; direct light is never clamped. Biased (energy is
 // lost), off by default (uClampIndirect 0): it trades rare bright fireflies through glass and glossy

@@ -1,5 +1,5 @@
 // Colour textures (MTL map_Kd), compiled in only when the scene has some (SURFACE_TEXTURES), so that
-// other scenes pay nothing. The layout is in src/gpu/layout.h: three texture coordinates per triangle,
+// other scenes pay nothing. The layout is in src/pack/layout.h: three texture coordinates per triangle,
 // every texture's sRGB-encoded texels in one RGBA8 buffer, and (first texel, width, height) per texture.
 #ifdef SURFACE_TEXTURES
 // Read as images or texel fetches like the scene buffers (scene_data.glsl), except the RGBA8 texels,

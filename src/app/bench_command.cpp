@@ -3,29 +3,28 @@
 // settings report wall time, process CPU time and throughput as median, min and max (bench_measure.h).
 // With --suite it does so for a fixed set of scenes (bench_suite.h).
 #include <algorithm>
-#include <chrono>
 #include <cstdio>
 #include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
-#include "app/args.h"
-#include "app/bench_measure.h"
-#include "app/bench_native.h"
-#include "app/bench_suite.h"
-#include "app/caustic_study.h"
 #include "app/commands.h"
+#include "bench/bench_measure.h"
+#include "bench/bench_native.h"
+#include "bench/bench_suite.h"
+#include "bench/caustic_study.h"
+#include "core/clock.h"
 #include "core/error.h"
+#include "core/text.h"
 #include "gl/context.h"
-#include "scene/builtin_scene.h"
-#include "scene/load.h"
+#include "request/render_request.h"
 
 namespace fp {
 
 namespace {
 
-const char* kBenchUsage =
+const char* kBenchAbout =
     "usage: fragpath bench [SCENE] [options]\n"
     "       fragpath bench --suite [options]\n"
     "       fragpath bench --study caustic [--budget SECONDS] [--reference-spp N]\n"
@@ -42,33 +41,9 @@ const char* kBenchUsage =
     "triangle, time to first frame and the throughput figures, then one summary table. --with-bunny adds\n"
     "the Stanford bunny, fetched at run time with `npm pack bunny` into a temporary directory (skipped\n"
     "with a note when npm or the network is missing).\n"
-    "\n"
-    "options:\n"
-    "  --size WxH            image size (default 512x512; 256x256 with --suite)\n"
-    "  --spp N               samples per pixel in each run (default 8; 2 with --suite)\n"
-    "  --runs R              timed runs after the warm-up (default 5; 3 with --suite)\n"
-    "  --max-depth D         bounces (default 5)\n"
-    "  --integrator NAME     naive | bsdf | nee | bdpt (default nee)\n"
-    "  --sampler NAME        sobol (default; independent with --native, the native reference's) |\n"
-    "                        independent\n"
-    "  --light-sampling NAME auto (default) | area | solid-angle: how nee samples points on emitters\n"
-    "  --bvh-threads N       threads that build the BVH (default: every CPU); the tree is the same\n"
-    "  --samples-per-pass N  samples per pixel per draw in the timed runs, 1 to 16 (default 8); the\n"
-    "                        warm-up, whose first pass is the first frame, draws 1\n"
-    "  --shader-dir DIR      read the shaders from DIR instead of the ones built in (to compare shader\n"
-    "                        variants with one binary)\n"
-    "  --json FILE           also write every figure to FILE as JSON (with --suite: one object per scene)\n"
-    "  --suite               measure the benchmark suite instead of one scene\n"
-    "  --max-triangles N     with --suite: skip the scenes with more than N triangles\n"
-    "  --scenes A,B,...      with --suite: only these scenes (cornell, sphere-1k, bunny, sphere-100k,\n"
-    "                        soup-100k, sphere-1m), in the suite's order\n"
-    "  --with-bunny          with --suite: add the Stanford bunny (needs npm and the network)\n"
-    "  --native              also measure the native reference (fragpath_native: one thread of scalar C++,\n"
-    "                        the same algorithm on the same BVH) on each scene, 1 spp per run, and print\n"
-    "                        GPU paths per CPU-second over the native's. Only with --integrator nee, and\n"
-    "                        only on scenes of Lambertian materials without textures or an environment\n"
-    "                        map: anything else is an error, not a comparison of two algorithms\n"
-    "  -h, --help            this text\n"
+    "\n";
+
+const char* kBenchNotes =
     "\n"
     "--study caustic compares bdpt with nee at equal process CPU time (--budget, default 40 s each) on a\n"
     "small light over a smooth, then a rough glass sphere over a diffuse floor (24x24, depth 5): RMSE\n"
@@ -81,29 +56,61 @@ const char* kBenchUsage =
     "shader change has a longer time to first frame; MESA_SHADER_CACHE_DISABLE=true measures the cold\n"
     "case every time.\n";
 
-std::vector<std::string> splitNames(const std::string& text) {
-    std::vector<std::string> names;
-    size_t start = 0;
-    while (start <= text.size()) {
-        size_t end = text.find(',', start);
-        if (end == std::string::npos) end = text.size();
-        names.push_back(text.substr(start, end - start));
-        start = end + 1;
-    }
-    return names;
+// A benchmark run is not one final image: its spp is a measuring choice (the scene file's is ignored),
+// and the suite renders every scene at one size.
+constexpr unsigned kBenchOptions = kSizeOption | kSppOption | kIntegratorOption | kPathOptions |
+                                   kSamplingOptions | kCameraOptions | kShaderOptions;
+FrontEndDefaults benchDefaults(bool suite) {
+    FrontEndDefaults d;
+    d.size = suite ? glm::ivec2(256) : glm::ivec2(512);
+    d.sceneSize = !suite;
+    d.spp = suite ? 2 : 8;
+    d.sceneSpp = false;
+    d.samplesPerPass = 8;  // the timed runs' (about 5 % less CPU per path than 1 on llvmpipe)
+    return d;
+}
+
+std::vector<OptionGroup> benchOptions() {
+    std::vector<OptionGroup> groups = {
+        {"Benchmark",
+         {{"--runs", "", "R", "timed runs after the warm-up (default 5; 3 with --suite)"},
+          {"--json", "", "FILE",
+           "also write every figure to FILE as JSON (with --suite: one object per scene)"},
+          {"--suite", "", "",
+           "measure the benchmark suite instead of one scene\n(defaults: 256x256 with --suite, 2 spp, 3 "
+           "runs; a scene file's size does not apply)"},
+          {"--max-triangles", "", "N", "with --suite: skip the scenes with more than N triangles"},
+          {"--scenes", "", "A,B,...",
+           "with --suite: only these scenes (cornell, sphere-1k, bunny, sphere-100k,\nsoup-100k, sphere-1m), "
+           "in the suite's order"},
+          {"--with-bunny", "", "", "with --suite: add the Stanford bunny (needs npm and the network)"},
+          {"--native", "", "",
+           "also measure the native reference (fragpath_native: one thread of scalar C++,\nthe same "
+           "algorithm "
+           "on the same BVH) on each scene, 1 spp per run, and print\nGPU paths per CPU-second over the "
+           "native's. Only with --integrator nee, and\nonly on scenes of Lambertian materials without "
+           "textures "
+           "or an environment\nmap: anything else is an error, not a comparison of two algorithms"},
+          {"--study", "", "caustic", "compare bdpt with nee at equal CPU time (see below)"},
+          {"--budget", "", "SECONDS", "with --study: CPU seconds for each integrator (default 40)"},
+          {"--reference-spp", "", "N", "with --study: samples of the bdpt reference (default 16384)"}}}};
+    for (OptionGroup& g : requestOptionGroups(kBenchOptions, benchDefaults(false)))
+        groups.push_back(std::move(g));
+    groups.push_back(helpOptions());
+    return groups;
 }
 
 int benchOneScene(const Args& args, const bench::BenchSettings& settings, std::optional<std::string> jsonPath,
-                  bench::Clock::time_point start) {
+                  SteadyClock::time_point start) {
     using namespace bench;
     BenchEnvironment environment = readBenchEnvironment();
-    auto stage = Clock::now();
+    auto stage = SteadyClock::now();
     std::unique_ptr<GlContext> context = createOsMesaContext();
     double contextSeconds = secondsSince(stage);
     environment.renderer = context->description();
     bool withNative = args.has("--native");
     auto load = [&] {
-        Scene scene = args.positional().empty() ? builtinCornellBox() : loadScene(args.positional()[0]);
+        Scene scene = settings.request->loadScene();
         // Checked as soon as the scene is read (a loop over its materials, nothing timed notices), so
         // that a scene the reference cannot render stops the command before any measuring.
         if (withNative) refuseWhatNativeLacks(scene);
@@ -113,11 +120,13 @@ int benchOneScene(const Args& args, const bench::BenchSettings& settings, std::o
     std::optional<NativeMeasurement> native;
     if (withNative) native = measureNative(load, settings);
     // Here the first frame counts from the start of the command, so it includes the context.
-    double firstFrameSeconds = std::chrono::duration<double>(m.firstPassEnd - start).count();
+    double firstFrameSeconds = secondsBetween(start, m.firstPassEnd);
 
-    printHeader(environment, settings);
+    bench::BenchSettings resolved = settings;  // as rendered: with the scene file's defaults
+    resolved.render = m.render;
+    printHeader(environment, resolved);
     printMeasurement(m, firstFrameSeconds, contextSeconds);
-    const RenderSettings& r = settings.render;
+    const RenderSettings& r = m.render;
     Spread paths = m.summary("paths_per_second");
     std::printf(
         "\nbench: %s %dx%d %d spp depth %d, LP_NUM_THREADS=%s: median %.4g paths/s (min %.4g, max %.4g), "
@@ -129,7 +138,7 @@ int benchOneScene(const Args& args, const bench::BenchSettings& settings, std::o
 
     if (jsonPath) {
         nlohmann::json j = environmentJson(environment);
-        j["settings"] = settingsJson(settings);
+        j["settings"] = settingsJson(resolved);
         j.update(measurementJson(m, firstFrameSeconds));
         j["first_frame"]["context_seconds"] = contextSeconds;
         if (native) j["native"] = nativeJson(*native, m);
@@ -143,14 +152,12 @@ int benchOneScene(const Args& args, const bench::BenchSettings& settings, std::o
 int benchCommand(const std::vector<std::string>& argv) {
     // Time to first frame counts from here: argument parsing is negligible, and everything a user waits
     // for before the first pixel (context, load, BVH, upload, compile, JIT, first pass) comes after.
-    auto start = bench::Clock::now();
-    Args args(argv,
-              {"--size", "--spp", "--runs", "--max-depth", "--integrator", "--sampler", "--light-sampling",
-               "--json", "--max-triangles", "--scenes", "--bvh-threads", "--samples-per-pass", "--shader-dir",
-               "--study", "--budget", "--reference-spp"},
-              {"-h", "--help", "--suite", "--with-bunny", "--native"});
-    if (args.has("-h") || args.has("--help")) {
-        std::fputs(kBenchUsage, stdout);
+    auto start = SteadyClock::now();
+    Args args(argv, benchOptions());
+    if (args.wantsHelp()) {
+        std::fputs(kBenchAbout, stdout);
+        std::fputs(formatOptions(benchOptions()).c_str(), stdout);
+        std::fputs(kBenchNotes, stdout);
         return 0;
     }
     if (auto study = args.text("--study")) {
@@ -167,40 +174,31 @@ int benchCommand(const std::vector<std::string>& argv) {
         for (const char* flag : {"--max-triangles", "--scenes", "--with-bunny"})
             if (args.has(flag)) throw Error(std::string(flag) + " only goes with --suite");
     if (suite && !args.positional().empty()) throw Error("bench --suite takes no scene file");
-    if (args.positional().size() > 1)
-        throw Error("bench takes one scene file, got " + std::to_string(args.positional().size()));
+    const RenderRequest request(args, benchDefaults(suite));
 
-    // The suite renders several scenes, the largest of a million triangles, so its defaults are smaller.
     bench::BenchSettings settings;
-    settings.render.width = settings.render.height = suite ? 256 : 512;
-    if (auto s = args.size("--size")) settings.render.width = s->x, settings.render.height = s->y;
-    settings.spp = args.integer("--spp", 1, 1 << 20).value_or(suite ? 2 : 8);
+    settings.request = request;
+    settings.render = request.settings(Scene());  // the flags over the defaults; each scene adds its file's
+    settings.spp = request.spp(Scene());
     settings.runs = args.integer("--runs", 1, 1000).value_or(suite ? 3 : 5);
-    settings.render.maxDepth = args.integer("--max-depth", 0, 1000).value_or(5);
-    settings.render.integrator = parseIntegrator(args.text("--integrator").value_or("nee"));
     // The native reference draws independent numbers (src/native): with --native the shader does too,
     // unless the user asked for another sampler, which would compare two algorithms.
-    if (auto l = args.text("--light-sampling")) {
-        settings.render.lightSampling = parseLightSampling(*l);
-        if (args.has("--native") && settings.render.lightSampling != LightSampling::Auto)
+    if (args.has("--native")) {
+        if (settings.render.lightSampling != LightSampling::Auto)
             throw Error("--native: the native reference makes the automatic light-sampling choice only");
-    }
-    if (auto s = args.text("--sampler")) {
-        settings.render.sampler = parseSampler(*s);
-        if (args.has("--native") && settings.render.sampler != Sampler::Independent)
+        settings.independentSampler = !args.has("--sampler");
+        if (settings.independentSampler) settings.render.sampler = Sampler::Independent;
+        if (settings.render.sampler != Sampler::Independent)
             throw Error(std::string("--native: the native reference implements only the independent sampler, "
                                     "not ") +
                         samplerName(settings.render.sampler) + "; a ratio would compare two algorithms");
-    } else if (args.has("--native")) {
-        settings.render.sampler = Sampler::Independent;
+        if (settings.render.integrator != Integrator::Nee)
+            throw Error(
+                std::string("--native: the native reference implements only the nee integrator, not ") +
+                integratorName(settings.render.integrator) + "; a ratio would compare two algorithms");
     }
-    if (args.has("--native") && settings.render.integrator != Integrator::Nee)
-        throw Error(std::string("--native: the native reference implements only the nee integrator, not ") +
-                    integratorName(settings.render.integrator) + "; a ratio would compare two algorithms");
-    settings.bvh.threadCount = args.integer("--bvh-threads", 1, 1024).value_or(0);
-    settings.shaderDir = args.text("--shader-dir").value_or("");
-    settings.render.samplesPerPass =
-        args.integer("--samples-per-pass", 1, RenderSettings::kMaxSamplesPerPass).value_or(8);
+    settings.bvh = layout::bvhOptions(request.bvhThreads());
+    settings.shaderDir = request.shaderDir();
     std::optional<std::string> jsonPath = args.text("--json");
     if (jsonPath) bench::checkJsonPath(*jsonPath);
     if (!suite) return benchOneScene(args, settings, jsonPath, start);
@@ -213,7 +211,7 @@ int benchCommand(const std::vector<std::string>& argv) {
     if (auto n = args.integer("--max-triangles", 1, 2000000000)) options.maxTriangles = *n;
     if (auto names = args.text("--scenes")) {
         const std::vector<std::string>& known = bench::suiteSceneNames();
-        for (const std::string& name : splitNames(*names)) {
+        for (const std::string& name : splitNameList(*names, "--scenes")) {
             if (std::find(known.begin(), known.end(), name) == known.end()) {
                 std::string list;
                 for (const std::string& k : known) list += (list.empty() ? "" : ", ") + k;

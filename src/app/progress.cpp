@@ -4,6 +4,8 @@
 
 #include <cstdio>
 
+#include "core/clock.h"
+
 namespace fp {
 
 Progress::Progress(int total)
@@ -11,7 +13,7 @@ Progress::Progress(int total)
 
 void Progress::update(int done) {
     if (!enabled_ || total_ <= 0) return;
-    double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+    double elapsed = secondsSince(start_);
     double fraction = double(done) / double(total_);
     double eta = done > 0 ? elapsed * (1.0 - fraction) / fraction : 0.0;
     constexpr int kWidth = 30;

@@ -3,11 +3,11 @@
 #include <unistd.h>
 
 #include <cmath>
-#include <cstdarg>
 #include <cstdio>
 #include <filesystem>
 
 #include "core/error.h"
+#include "core/text.h"
 #include "image/file_io.h"
 
 namespace fp {
@@ -17,21 +17,6 @@ namespace {
 // a / b, or 0 when b is not positive (a render too short for the clock, a scene without triangles).
 double per(double a, double b) {
     return b > 0.0 ? a / b : 0.0;
-}
-
-// printf into a std::string.
-std::string format(const char* pattern, ...) __attribute__((format(printf, 1, 2)));
-std::string format(const char* pattern, ...) {
-    va_list args, copy;
-    va_start(args, pattern);
-    va_copy(copy, args);
-    int size = std::vsnprintf(nullptr, 0, pattern, copy);
-    va_end(copy);
-    std::string text(size_t(std::max(size, 0)) + 1, '\0');
-    std::vsnprintf(text.data(), text.size(), pattern, args);
-    va_end(args);
-    text.resize(size_t(std::max(size, 0)));
-    return text;
 }
 
 }  // namespace
@@ -61,32 +46,34 @@ std::string formatRenderStats(const RenderStats& stats) {
     const RenderSettings& settings = stats.settings;
     const double paths = double(stats.paths), rays = double(stats.rays);
     std::string text;
-    text += format("renderer         %s\n", stats.renderer.c_str());
-    text += format("scene            %s\n", stats.scene.c_str());
-    text += format("triangles        %u (%u emissive)\n", s.triangles, s.emitters);
-    text += format(
+    text += formatText("renderer         %s\n", stats.renderer.c_str());
+    text += formatText("scene            %s\n", stats.scene.c_str());
+    text += formatText("triangles        %u (%u emissive)\n", s.triangles, s.emitters);
+    text += formatText(
         "bvh              %u nodes, %u leaves, depth %u, leaf size %u..%u (mean %.2f), SAH cost %.2f\n",
         s.bvh.nodeCount, s.bvh.leafCount, s.bvh.maxDepth, s.bvh.minLeafSize, s.bvh.maxLeafSize,
         s.bvh.meanLeafSize, s.bvh.sahCost);
-    text += format("bvh build        %.3f s, %.3f CPU-s, threads %d (%.3g triangles/s)\n", s.bvhBuildSeconds,
+    text +=
+        formatText("bvh build        %.3f s, %.3f CPU-s, threads %d (%.3g triangles/s)\n", s.bvhBuildSeconds,
                    s.bvhBuildCpuSeconds, s.bvhBuildThreads, per(s.triangles, s.bvhBuildSeconds));
-    text += format(
+    text += formatText(
         "gpu memory       %zu bytes (%.1f per triangle; positions + BVH %.1f per triangle; textures %zu "
         "bytes)\n",
         s.gpuBytes, per(double(s.gpuBytes), s.triangles), per(double(s.gpuGeometryBytes), s.triangles),
         s.gpuTextureBytes);
-    text += format("scene reads      %s\n", sceneReadsName(s.sceneReads));
-    text += format("image buffers    %zu bytes (%.0f per pixel: accumulation%s)\n", stats.imageBytes,
-                   per(double(stats.imageBytes), double(settings.width) * settings.height),
-                   settings.integrator == Integrator::Bdpt ? " and bdpt's light image" : "");
-    text += format("first frame      %.3f s after start (load, build, upload, shader compile, first pass)\n",
+    text += formatText("scene reads      %s\n", sceneReadsName(s.sceneReads));
+    text += formatText("image buffers    %zu bytes (%.0f per pixel: accumulation%s)\n", stats.imageBytes,
+                       per(double(stats.imageBytes), double(settings.width) * settings.height),
+                       settings.integrator == Integrator::Bdpt ? " and bdpt's light image" : "");
+    text +=
+        formatText("first frame      %.3f s after start (load, build, upload, shader compile, first pass)\n",
                    stats.firstFrameSeconds);
-    text += format("samples          %d per pixel, %.0f paths, %.0f rays (%.2f rays per path)\n", stats.spp,
-                   paths, rays, per(rays, paths));
-    text += format("throughput       %.3g paths/s, %.3g rays/s, %.3g paths per CPU-second\n",
-                   per(paths, stats.seconds), per(rays, stats.seconds), per(paths, stats.cpuSeconds));
-    text += format("dropped samples  %llu (NaN or Inf, replaced by 0)\n",
-                   (unsigned long long)stats.droppedSamples);
+    text += formatText("samples          %d per pixel, %.0f paths, %.0f rays (%.2f rays per path)\n",
+                       stats.spp, paths, rays, per(rays, paths));
+    text += formatText("throughput       %.3g paths/s, %.3g rays/s, %.3g paths per CPU-second\n",
+                       per(paths, stats.seconds), per(rays, stats.seconds), per(paths, stats.cpuSeconds));
+    text += formatText("dropped samples  %llu (NaN or Inf, replaced by 0)\n",
+                       (unsigned long long)stats.droppedSamples);
     return text;
 }
 

@@ -10,15 +10,13 @@
 #include <memory>
 #include <sstream>
 
-#include "app/args.h"
 #include "app/commands.h"
 #include "core/error.h"
 #include "gl/context.h"
 #include "image/file_io.h"
 #include "image/image_stats.h"
 #include "render/renderer.h"
-#include "scene/builtin_scene.h"
-#include "scene/load.h"
+#include "request/render_request.h"
 #include "study/cpu_peak.h"
 #include "study/denoisers.h"
 #include "study/image_strip.h"
@@ -34,38 +32,62 @@ namespace fp {
 
 namespace {
 
-const char* kStudyUsage =
-    "usage: fragpath study [SCENE] [options]\n"
-    "\n"
-    "How much noise is too much? Renders (or loads) a converged reference of SCENE (default: the built-in\n"
-    "Cornell box), then for 1, 2, 4, ... samples per pixel, each integrator and each denoiser measures the\n"
-    "render time and the error (RMSE, relative MSE, SSIM). Counts BVH nodes, triangle tests and surface\n"
-    "interactions per path for a FLOP estimate, and writes to the output directory:\n"
-    "  study.csv        one row per integrator x denoiser x spp (columns: README.md, \"Study\")\n"
-    "  plots.gp + *.png error against samples and against time, log-log (needs gnuplot)\n"
-    "  strip.png        the same crop at 1, 4, 16, 64 spp and the reference, a row per integrator+denoiser\n"
-    "  report.md        the noise threshold, the spp each needs, and the real-time feasibility estimate\n"
-    "  reference.exr    the reference it rendered (reuse it with --reference)\n"
-    "\n"
-    "options:\n"
-    "  --out DIR               output directory, created if missing (default: study)\n"
-    "  --size WxH              image size (default 128x128)\n"
-    "  --max-spp N             the largest sample count (default 64)\n"
-    "  --integrators LIST      comma-separated (default naive,bsdf,nee,bdpt)\n"
-    "  --denoisers LIST        comma-separated, of those built in (default: all; 'none' is the raw image)\n"
-    "  --reference-spp N       samples of the rendered reference (default 4096)\n"
-    "  --reference-integrator NAME   integrator of the rendered reference (default nee)\n"
-    "  --reference FILE.exr    load the reference instead of rendering it (same size, linear radiance)\n"
-    "  --threshold X           relative MSE under which an image counts as not noisy (default 4e-4:\n"
-    "                          2% RMS relative error, the Weber fraction; report.md gives the sources)\n"
-    "  --runs R                timed runs of each sweep; times are medians (default 1)\n"
-    "  --count-spp N           samples per pixel of the counting render (default 4)\n"
-    "  --max-depth D           bounces (default: the scene file's, else 5)\n"
-    "  --seed S                random seed of the sweep; the reference uses S + 1 (default 0)\n"
-    "  --backend NAME          auto | egl | osmesa (default auto)\n"
-    "  --no-plots              skip gnuplot (the CSV, strip and report are still written)\n"
-    "  --quiet                 no progress lines\n"
-    "  -h, --help              this text\n";
+// Not the scene file's size: that is meant for one final render, the study renders hundreds.
+constexpr unsigned kStudyOptions =
+    kSizeOption | kPathOptions | kSamplingOptions | kCameraOptions | kShaderOptions | kBackendOption;
+FrontEndDefaults studyDefaults() {
+    FrontEndDefaults d;
+    d.size = {128, 128};
+    d.sceneSize = false;
+    d.spp = 0;
+    d.sceneSpp = false;
+    return d;
+}
+const FrontEndDefaults kStudyDefaults = studyDefaults();
+
+std::vector<OptionGroup> studyOptions() {
+    std::vector<OptionGroup> groups = {
+        {"Study",
+         {{"--out", "", "DIR", "output directory, created if missing (default: study)"},
+          {"--max-spp", "", "N", "the largest sample count (default 64)"},
+          {"--integrators", "", "LIST", "comma-separated (default naive,bsdf,nee,bdpt)"},
+          {"--denoisers", "", "LIST",
+           "comma-separated, of those built in (default: all; 'none' is the raw image)"},
+          {"--reference-spp", "", "N", "samples of the rendered reference (default 4096)"},
+          {"--reference-integrator", "", "NAME", "integrator of the rendered reference (default nee)"},
+          {"--reference", "", "FILE.exr", "load the reference instead of rendering it (same size, linear)"},
+          {"--threshold", "", "X",
+           "relative MSE under which an image counts as not noisy (default 4e-4:\n2% RMS relative error, "
+           "the Weber fraction; report.md gives the sources)"},
+          {"--runs", "", "R", "timed runs of each sweep; times are medians (default 1)"},
+          {"--count-spp", "", "N", "samples per pixel of the counting render (default 4)"},
+          {"--no-plots", "", "", "skip gnuplot (the CSV, strip and report are still written)"},
+          {"--quiet", "", "", "no progress lines"}}}};
+    for (OptionGroup& g : requestOptionGroups(kStudyOptions, kStudyDefaults)) groups.push_back(std::move(g));
+    groups.push_back(helpOptions());
+    return groups;
+}
+
+void printStudyUsage() {
+    std::fputs(
+        "usage: fragpath study [SCENE] [options]\n"
+        "\n"
+        "How much noise is too much? Renders (or loads) a converged reference of SCENE (default: the "
+        "built-in\n"
+        "Cornell box), then for 1, 2, 4, ... samples per pixel, each integrator and each denoiser measures "
+        "the\n"
+        "render time and the error (RMSE, relative MSE, SSIM). Counts BVH nodes, triangle tests and surface\n"
+        "interactions per path for a FLOP estimate, and writes to the output directory:\n"
+        "  study.csv        one row per integrator x denoiser x spp (columns: README.md, \"Study\")\n"
+        "  plots.gp + *.png error against samples and against time, log-log (needs gnuplot)\n"
+        "  strip.png        the same crop at 1, 4, 16, 64 spp and the reference, a row per "
+        "integrator+denoiser\n"
+        "  report.md        the noise threshold, the spp each needs, and the real-time feasibility estimate\n"
+        "  reference.exr    the reference it rendered (reuse it with --reference)\n"
+        "The sweep uses --seed S; the rendered reference S + 1.\n",
+        stdout);
+    std::fputs(formatOptions(studyOptions()).c_str(), stdout);
+}
 
 // Creates DIR if needed; fails before any rendering if it cannot be written.
 void prepareOutputDirectory(const std::string& dir) {
@@ -89,17 +111,12 @@ std::string readLoadAverage() {
 }  // namespace
 
 int studyCommand(const std::vector<std::string>& argv) {
-    Args args(argv,
-              {"--out", "--size", "--max-spp", "--integrators", "--denoisers", "--reference-spp",
-               "--reference-integrator", "--reference", "--threshold", "--runs", "--count-spp", "--max-depth",
-               "--seed", "--backend"},
-              {"--no-plots", "--quiet", "-h", "--help"});
-    if (args.has("-h") || args.has("--help")) {
-        std::fputs(kStudyUsage, stdout);
+    Args args(argv, studyOptions());
+    if (args.wantsHelp()) {
+        printStudyUsage();
         return 0;
     }
-    if (args.positional().size() > 1)
-        throw Error("study takes one scene file, got " + std::to_string(args.positional().size()));
+    const RenderRequest request(args, kStudyDefaults);
     const bool quiet = args.has("--quiet"), plots = !args.has("--no-plots");
     auto say = [&](const std::string& line) {
         if (!quiet) std::fprintf(stderr, "study: %s\n", line.c_str());
@@ -129,16 +146,11 @@ int studyCommand(const std::vector<std::string>& argv) {
     if (plots) study::requireGnuplot();
     const std::string loadText = readLoadAverage();
 
-    Scene scene = args.positional().empty() ? builtinCornellBox() : loadScene(args.positional()[0]);
-    RenderSettings settings;
-    // Not the scene file's size: that is meant for one final render, the study renders hundreds.
-    settings.width = settings.height = 128;
-    if (auto s = args.size("--size")) settings.width = s->x, settings.height = s->y;
+    Scene scene = request.loadScene();
+    RenderSettings settings = request.settings(scene);
     if (settings.width < study::kSsimWindow || settings.height < study::kSsimWindow)
         throw Error("--size: the study needs at least " + std::to_string(study::kSsimWindow) + "x" +
                     std::to_string(study::kSsimWindow) + " pixels (the SSIM window)");
-    settings.maxDepth = args.integer("--max-depth", 0, 1000).value_or(scene.defaults.maxDepth.value_or(5));
-    settings.seed = uint32_t(args.integer("--seed", 0, 2147483646).value_or(0));
     std::optional<Image> loadedReference;
     std::string referenceText;
     if (auto file = args.text("--reference")) {
@@ -150,12 +162,12 @@ int studyCommand(const std::vector<std::string>& argv) {
         if (!allFinite(*loadedReference)) throw Error("reference " + *file + " holds NaN or infinite pixels");
         referenceText = "loaded from `" + *file + "`.";
     }
-    const Camera camera = scene.camera.value_or(frameBounds(scene.bounds()));
+    const Camera camera = request.camera(scene);
 
-    std::unique_ptr<GlContext> context = createOffscreenContext(args.text("--backend").value_or("auto"));
+    std::unique_ptr<GlContext> context = createOffscreenContext(request.backend());
     const std::string glRenderer = context->description();
     say("renderer: " + glRenderer);
-    Renderer renderer(scene);
+    Renderer renderer(scene, ShaderLibrary(request.shaderDir()), layout::bvhOptions(request.bvhThreads()));
 
     Image reference;
     if (loadedReference) {

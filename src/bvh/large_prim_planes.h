@@ -3,12 +3,13 @@
 // to src/bvh), evaluated next to the binned builder's planes.
 //
 // Why: a few huge triangles (a room's walls around a finely tessellated object) have centroids that share
-// equal-width bins with thousands of small ones, so no bin boundary separates them, and the binned
-// builder peels them off one level at a time, each level with the root's area. A full sweep separates
-// them with one plane between the last small centroid and the first large one (BENCHMARKS.md, "Tree
-// quality"). Such a plane is always "centroid < c" or "centroid <= c" for the centroid c of one large
-// primitive along one axis, so evaluating those few planes exactly recovers it, at the cost of one pass
-// to find the large primitives and one to evaluate their planes, and only in nodes that have any.
+// equal-width bins with thousands of small ones, so no bin boundary separates them, and the binned builder
+// peels them off one level at a time, each level with the root's area. A full sweep separates them with one
+// plane between the last small centroid and the first large one (docs/optimisation-log.md, "Tree quality: why
+// the binned builder fell short, and the fix"). Such a plane is always "centroid < c" or "centroid <= c" for
+// the centroid c of one large primitive along one axis, so evaluating those few planes exactly recovers it,
+// at the cost of one pass to find the large primitives and one to evaluate their planes, and only in nodes
+// that have any.
 #include <cstdint>
 
 #include "bvh/build_common.h"
@@ -18,13 +19,13 @@ namespace fp::detail {
 struct Bin;          // binned_sah_split.h
 struct PlaneChoice;  // binned_sah_split.h
 
-// A node is searched when it has at least kLargeMinNodeCount primitives and at least
-// kLargeMinRootAreaRatio of the root's area, for at most kMaxLargePrims of its largest primitives among
-// those whose box has at least kLargeAreaRatio of the node's area. Measured on the room scenes
-// (BENCHMARKS.md, "Tree quality"): the Cornell box needs nodes down to 16 primitives; root-area ratios
-// from 0 to 1/4 give the same costs within 0.2 %, but deep in a soup almost every node has a large
-// primitive, so searching there cost +56 % instructions on soup-100k; a node-area ratio of 1/2 misses
-// the walls (a flat wall's box has at most 1/3 of a cube's area).
+// A node is searched when it has at least kLargeMinNodeCount primitives and at least kLargeMinRootAreaRatio
+// of the root's area, for at most kMaxLargePrims of its largest primitives among those whose box has at least
+// kLargeAreaRatio of the node's area. Measured on the room scenes (docs/optimisation-log.md, "BVH builder:
+// profile and changes"): the Cornell box needs nodes down to 16 primitives; root-area ratios from 0 to 1/4
+// give the same costs within 0.2 %, but deep in a soup almost every node has a large primitive, so searching
+// there cost +56 % instructions on soup-100k; a node-area ratio of 1/2 misses the walls (a flat wall's box
+// has at most 1/3 of a cube's area).
 constexpr uint32_t kLargeMinNodeCount = 16;
 constexpr float kLargeMinRootAreaRatio = 0.25f;
 constexpr int kMaxLargePrims = 8;

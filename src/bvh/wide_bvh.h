@@ -1,7 +1,7 @@
 #pragma once
 // A 4-wide BVH collapsed from a binary one: each node holds the boxes and links of up to four
 // children, so a ray decides four children per node visit and a traversal needs about half the visits
-// of the binary tree's (BENCHMARKS.md, optimisation log). The GPU layout (gpu/layout.h) and the native
+// of the binary tree's (docs/optimisation-log.md, entry 11). The GPU layout (pack/layout.h) and the native
 // reference (native/native_scene.h) both store this tree, so they trace it in the same order (the GPU
 // with quantised child boxes, which let a ray into a few more nodes).
 #include <cstdint>

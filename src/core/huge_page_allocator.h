@@ -3,10 +3,10 @@
 // allocations of 2 MiB or more.
 //
 // Why: on the virtual machines fragpath is benchmarked on, the first touch of each 4 KiB page costs
-// 10 to 25 µs (a fault that goes through the hypervisor; BENCHMARKS.md, "BVH build: first touch"), and a
-// build of a million triangles writes about 70 MB of fresh memory: its page faults cost as much as the
-// build's own work. madvise(MADV_HUGEPAGE) asks for one fault per 2 MiB instead of 512, where the
-// kernel's transparent huge pages are enabled ("madvise" or "always" in
+// 10 to 25 µs (a fault that goes through the hypervisor; docs/optimisation-log.md, "BVH build: first
+// touch"), and a build of a million triangles writes about 70 MB of fresh memory: its page faults cost as
+// much as the build's own work. madvise(MADV_HUGEPAGE) asks for one fault per 2 MiB instead of 512, where
+// the kernel's transparent huge pages are enabled ("madvise" or "always" in
 // /sys/kernel/mm/transparent_hugepage/enabled); elsewhere it is a no-op, and the memory is ordinary.
 #include <cstddef>
 #include <cstdlib>

@@ -3,7 +3,7 @@
 #include <algorithm>
 
 #include "core/error.h"
-#include "gpu/layout.h"
+#include "pack/layout.h"
 
 namespace fp {
 

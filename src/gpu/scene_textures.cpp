@@ -5,7 +5,7 @@
 #include <string>
 
 #include "core/error.h"
-#include "gpu/layout.h"
+#include "pack/layout.h"
 
 namespace fp {
 

@@ -1,17 +1,17 @@
 #pragma once
-// The packed scene uploaded into buffer textures (layout in gpu/layout.h), bound to fixed units.
+// The packed scene uploaded into buffer textures (layout in pack/layout.h), bound to fixed units.
 #include <string>
 #include <vector>
 
 #include "gl/gl.h"
-#include "gpu/pack.h"
+#include "pack/pack.h"
 
 namespace fp {
 
 // How the trace shaders read the scene buffers and the environment map (glsl/common/scene_data.glsl).
 // On llvmpipe, texelFetch of a buffer texture in any format but RGBA8 is an out-of-line call that makes
-// LLVM spill everything live, while imageLoad of an image is generated inline (BENCHMARKS.md,
-// optimisation log, entries 18 and 23); both read the same texels, so the images are bit-identical.
+// LLVM spill everything live, while imageLoad of an image is generated inline (docs/optimisation-log.md,
+// entries 18 and 23); both read the same texels, so the images are bit-identical.
 enum class SceneReads {
     Auto,        // images where the context has them, else texel fetches (FRAGPATH_SCENE_READS may force)
     TexelFetch,  // samplerBuffer + texelFetch: plain OpenGL 4.1 (macOS)
@@ -55,7 +55,7 @@ class SceneTextures {
     // Takes the packed scene. Where pinnedUploadAllowed(), each array of at least a page that starts on
     // a page boundary (the large ones are HugePageVectors: 2 MiB-aligned) becomes its buffer's storage
     // in place: no copy, and none of the page faults of fresh buffer memory, which dominated a
-    // million-triangle scene's upload (BENCHMARKS.md, optimisation log, entry 37); so the scene lives
+    // million-triangle scene's upload (docs/optimisation-log.md, entry 37); so the scene lives
     // as long as the buffers. Elsewhere, or when the driver refuses, the buffer gets a copy, and the
     // scene's arrays are freed after the upload. Throws fp::Error if a buffer exceeds
     // GL_MAX_TEXTURE_BUFFER_SIZE (or `maxTexels`, when given, to check the message without a

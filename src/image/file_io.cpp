@@ -3,11 +3,9 @@
 #include <unistd.h>
 
 #include <atomic>
-#include <cctype>
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
-#include <filesystem>
 
 #include "core/error.h"
 
@@ -47,12 +45,6 @@ void writeFileAtomically(const std::string& path, const std::vector<std::uint8_t
         std::remove(temporary.c_str());
         throw Error("cannot write '" + path + "': " + reason(error));
     }
-}
-
-std::string lowerCaseExtension(const std::string& path) {
-    std::string extension = std::filesystem::path(path).extension().string();
-    for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-    return extension;
 }
 
 }  // namespace fp

@@ -1,7 +1,7 @@
 // writeImage / readImage from image.h: pick the format by the file name's extension.
 #include "core/error.h"
+#include "core/text.h"
 #include "image/exr.h"
-#include "image/file_io.h"
 #include "image/hdr.h"
 #include "image/image.h"
 #include "image/pfm.h"

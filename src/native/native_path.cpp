@@ -1,10 +1,9 @@
 #include "native/native_path.h"
 
-#include <time.h>
-
 #include <algorithm>
 #include <cmath>
 
+#include "core/clock.h"
 #include "core/error.h"
 #include "native/native_trace.h"
 
@@ -329,12 +328,6 @@ class PathTracer {
     int maxDepth_;
     float environmentSelection_ = 0.0f;
 };
-
-double threadCpuSeconds() {
-    timespec t{};
-    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
-    return double(t.tv_sec) + 1e-9 * double(t.tv_nsec);
-}
 
 }  // namespace
 

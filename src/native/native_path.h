@@ -9,12 +9,13 @@
 
 #include "native/native_scene.h"
 #include "scene/scene.h"
+#include "settings/render_settings.h"
 
 namespace fp::native {
 
 struct Settings {
     int width = 512, height = 512;
-    int maxDepth = 5;
+    int maxDepth = kDefaultMaxDepth;
     uint32_t seed = 0;
     int spp = 1;
     uint32_t sampleOffset = 0;  // the first sample index

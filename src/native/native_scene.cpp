@@ -7,8 +7,8 @@
 #include "bvh/bvh.h"
 #include "bvh/wide_bvh.h"
 #include "core/error.h"
-#include "gpu/layout.h"
-#include "gpu/light_strategy.h"
+#include "pack/layout.h"
+#include "pack/light_strategy.h"
 #include "scene/light_selection.h"
 
 namespace fp::native {
@@ -41,7 +41,7 @@ Scene buildScene(const fp::Scene& scene, const BvhBuildOptions& options) {
     Bvh bvh = buildBinnedSah(bounds, options);
     out.solidAngleLights = emittersFaceCloseSurfaces(scene, bvh);
 
-    // Emitters chosen in proportion to their power, with the probabilities gpu/pack.cpp stores.
+    // Emitters chosen in proportion to their power, with the probabilities pack/pack.cpp stores.
     std::vector<float> pmf = emitterPmfs(scene, bvh.primIndex.data(), bvh.primIndex.size()).pmf;
     float cdf = 0.0f;
     for (size_t k = 0; k < bvh.primIndex.size(); ++k) {
@@ -54,7 +54,7 @@ Scene buildScene(const fp::Scene& scene, const BvhBuildOptions& options) {
         out.normals.push_back(t.n);
     }
 
-    // The same wide tree, in the same order, as gpu/pack.cpp stores (with exact boxes: see Node).
+    // The same wide tree, in the same order, as pack/pack.cpp stores (with exact boxes: see Node).
     WideBvh wide = collapseToWide(bvh);
     for (const WideBvhNode& w : wide.nodes) {
         Node n{};

@@ -1,7 +1,7 @@
 #pragma once
-// The native reference's scene: the data the GPU layout holds (src/gpu/layout.h), as plain C++ arrays
+// The native reference's scene: the data the GPU layout holds (src/pack/layout.h), as plain C++ arrays
 // in the natural in-memory form a scalar CPU tracer would use. The BVH is the renderer's own
-// (buildBinnedSah with gpu/layout.h bvhOptions()), so both trace the same tree in the same order; the
+// (buildBinnedSah with pack/layout.h bvhOptions()), so both trace the same tree in the same order; the
 // reference keeps its children's exact boxes where the GPU stores them quantised (see Node below).
 //
 // Benchmark-only: this and the other src/native files are a single-threaded scalar C++ path tracer of
@@ -27,8 +27,8 @@ constexpr uint32_t kStackSize = 64;  // traversal stack entries
 // bound of all four children per vector, so that the slab test of four boxes is a few vector operations
 // (what a native SIMD tracer does; Wald, Benthin & Boulos 2008). Empty slots are the unreachable box
 // kEmptyChildCoordinate. The boxes are exact floats, not the GPU layout's 8-bit quantised boxes
-// (gpu/quantised_node.h): decoding those costs a scalar CPU tracer more than it saves (the reference
-// ran 25-30 % slower with them on both the Cornell box and sphere-1m, BENCHMARKS.md "Quantised nodes"),
+// (pack/quantised_node.h): decoding those costs a scalar CPU tracer more than it saves (the reference
+// ran 25-30 % slower with them on both the Cornell box and sphere-1m, docs/optimisation-log.md, entry 21),
 // so a native tracer would not use them, and the comparison stays against what native code does best.
 // The quantised boxes are a little larger, so the shader visits a few more nodes and tests more
 // triangles than the reference (the Cornell box: +1 % nodes, +2 % triangle tests per path); every
@@ -59,11 +59,11 @@ struct Scene {
     std::vector<glm::vec3> diffuse, emission;  // per material
     std::vector<Light> lights;
     glm::vec3 environment{0.0f};    // constant radiance from every unblocked direction
-    bool solidAngleLights = false;  // the renderer's LightSampling::Auto choice (gpu/light_strategy.h)
+    bool solidAngleLights = false;  // the renderer's LightSampling::Auto choice (pack/light_strategy.h)
 };
 
 // Throws fp::Error for what the reference does not implement (unsupportedFeature).
-// `options` must be the renderer's (gpu/layout.h bvhOptions()) for both to trace the same tree.
+// `options` must be the renderer's (pack/layout.h bvhOptions()) for both to trace the same tree.
 Scene buildScene(const fp::Scene& scene, const BvhBuildOptions& options);
 
 // Why the reference cannot render `scene` as the renderer would (materials other than Lambertian with

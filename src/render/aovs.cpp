@@ -3,7 +3,7 @@
 #include <algorithm>
 
 #include "core/error.h"
-#include "image/file_io.h"
+#include "core/text.h"
 
 namespace fp {
 
@@ -37,22 +37,18 @@ std::vector<std::string> aovChannels(Aov aov) {
 }
 
 std::vector<Aov> parseAovs(const std::string& list) {
-    std::string choices;
-    for (Aov a : allAovs()) choices += std::string(choices.empty() ? "" : ", ") + aovName(a);
     std::vector<Aov> aovs;
-    for (size_t start = 0;;) {
-        const size_t comma = list.find(',', start);
-        std::string name = list.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
-        name.erase(0, name.find_first_not_of(' '));
-        name.erase(name.find_last_not_of(' ') + 1);
+    for (const std::string& name : splitNameList(list, "--aovs")) {
         auto it = std::find_if(allAovs().begin(), allAovs().end(), [&](Aov a) { return name == aovName(a); });
-        if (it == allAovs().end())
-            throw Error("--aovs: unknown AOV '" + name + "' in '" + list + "' (choose from " + choices +
+        if (it == allAovs().end()) {
+            std::string choices;
+            for (Aov a : allAovs()) choices += std::string(choices.empty() ? "" : ", ") + aovName(a);
+            throw Error("--aovs: unknown AOV '" + name + "' (choose from " + choices +
                         ", separated by commas)");
-        if (std::find(aovs.begin(), aovs.end(), *it) == aovs.end()) aovs.push_back(*it);
-        if (comma == std::string::npos) return aovs;
-        start = comma + 1;
+        }
+        aovs.push_back(*it);
     }
+    return aovs;
 }
 
 std::vector<Aov> parseAovOption(const std::optional<std::string>& list, const std::string& output) {

@@ -45,8 +45,8 @@ const char* aovName(Aov aov);  // the --aovs name and the EXR layer name
 // The EXR channel names of the layer, in component order: R, G, B; X, Y, Z; Z.
 std::vector<std::string> aovChannels(Aov aov);
 
-// "albedo,normal,depth": the named AOVs in the order given, each once. Throws fp::Error listing the
-// choices for an unknown or empty name.
+// "albedo,normal,depth": the named AOVs in the order given. Throws fp::Error listing the choices for an
+// unknown name, and for an empty or repeated one (splitNameList, core/text.h).
 std::vector<Aov> parseAovs(const std::string& list);
 // The value of --aovs for a render written to `output` (none without the flag). Throws fp::Error
 // unless `output` is an .exr file, the only format with room for them.

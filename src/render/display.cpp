@@ -1,6 +1,6 @@
 #include "render/display.h"
 
-#include "gpu/layout.h"
+#include "pack/layout.h"
 
 static_assert(int(fp::ToneMap::Clamp) == 0 && int(fp::ToneMap::Reinhard) == 1 && int(fp::ToneMap::Aces) == 2,
               "glsl/common/tone_map.glsl numbers the tone maps the same way");

@@ -4,7 +4,7 @@
 #include <string>
 
 #include "core/error.h"
-#include "gpu/layout.h"
+#include "pack/layout.h"
 
 namespace fp {
 

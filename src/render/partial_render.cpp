@@ -5,7 +5,7 @@
 #include <sstream>
 
 #include "core/error.h"
-#include "image/file_io.h"
+#include "core/text.h"
 #include "image/image.h"
 #include "render/view_image.h"
 

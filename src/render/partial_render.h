@@ -11,8 +11,8 @@
 #include "image/image.h"
 #include "render/accumulation.h"
 #include "render/aovs.h"
-#include "render/settings.h"
 #include "scene/scene.h"
+#include "settings/render_settings.h"
 
 namespace fp {
 

@@ -1,23 +1,19 @@
 #include "render/renderer.h"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <ctime>
 
+#include "core/clock.h"
 #include "core/error.h"
-#include "gpu/layout.h"
-#include "gpu/light_strategy.h"
+#include "gpu/layout_defines.h"
+#include "pack/layout.h"
+#include "pack/light_strategy.h"
 #include "scene/spectrum.h"
 
 namespace fp {
 
 namespace {
-
-double secondsSince(std::chrono::steady_clock::time_point start) {
-    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
 
 constexpr int kSumUnit = layout::kFirstFreeUnit;  // then the other attachments, in order
 constexpr int kSpareUnit = kSumUnit + RenderTargets::kAttachments;
@@ -28,20 +24,20 @@ Renderer::Renderer(const Scene& scene, ShaderLibrary shaders, const BvhBuildOpti
                    SceneReads reads)
     : shaders_(std::move(shaders)) {
     stats_.sceneReads = resolveSceneReads(reads);  // before the slow work, so that a refusal is quick
-    auto start = std::chrono::steady_clock::now();
-    const std::clock_t cpuStart = std::clock();  // CPU time of the whole process, so of every build thread
+    auto start = SteadyClock::now();
+    const double cpuStart = processCpuSeconds();  // CPU time of the whole process, so of every build thread
     AabbArray bounds;
     bounds.reserve(scene.triangles.size());
     for (const Triangle& t : scene.triangles) bounds.push_back(t.bounds());
     Bvh bvh = buildBinnedSah(bounds, bvhOptions);
     stats_.bvhBuildSeconds = secondsSince(start);
-    stats_.bvhBuildCpuSeconds = double(std::clock() - cpuStart) / CLOCKS_PER_SEC;
+    stats_.bvhBuildCpuSeconds = processCpuSeconds() - cpuStart;
     stats_.bvhBuildThreads = buildThreadCount(bvhOptions);
     // SAH cost with unit node and triangle costs, whatever the build was tuned with, so that figures
     // compare between builds and commits.
     stats_.bvh = computeStats(bvh);
 
-    start = std::chrono::steady_clock::now();
+    start = SteadyClock::now();
     closeEmitters_ = emittersFaceCloseSurfaces(scene, bvh);
     PackedScene packed = packScene(scene, bvh);
     stats_.triangles = packed.triangleCount;

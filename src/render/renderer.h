@@ -7,14 +7,14 @@
 #include "bvh/bvh.h"
 #include "gl/program.h"
 #include "gpu/environment.h"
-#include "gpu/layout.h"
-#include "gpu/pack.h"
 #include "gpu/scene_textures.h"
+#include "pack/layout.h"
+#include "pack/pack.h"
 #include "render/accumulation.h"
 #include "render/light_splat.h"
 #include "render/render_targets.h"
-#include "render/settings.h"
 #include "scene/scene.h"
+#include "settings/render_settings.h"
 
 namespace fp {
 
@@ -91,7 +91,7 @@ class Renderer {
     float environmentRotation_ = 0.0f;
     uint32_t materialTypes_ = 0;  // bit mask of the MaterialTypes in the scene
     uint32_t lightCount_ = 0;
-    bool closeEmitters_ = false;    // LightSampling::Auto samples by solid angle (gpu/light_strategy.h)
+    bool closeEmitters_ = false;    // LightSampling::Auto samples by solid angle (pack/light_strategy.h)
     bool surfaceTextures_ = false;  // some material has a texture: compile the lookups in
     std::unique_ptr<SceneTextures> textures_;
     std::unique_ptr<EnvironmentTextures> environmentTextures_;  // only for an environment map

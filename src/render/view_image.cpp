@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "core/error.h"
+#include "core/text.h"
 #include "image/file_io.h"
 #include "image/png.h"
 #include "image/tone_map.h"

@@ -9,7 +9,7 @@
 
 #include "image/image.h"
 #include "render/display.h"
-#include "render/settings.h"
+#include "settings/render_settings.h"
 
 namespace fp {
 

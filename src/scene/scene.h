@@ -12,6 +12,7 @@
 #include "core/aabb.h"
 #include "image/image.h"
 #include "image/rgba8_image.h"
+#include "settings/render_settings.h"
 
 namespace fp {
 
@@ -71,9 +72,10 @@ struct Camera {
 struct RenderDefaults {
     std::optional<int> width, height, spp, maxDepth;
     std::optional<uint32_t> seed;
-    std::optional<std::string> integrator;
-    std::optional<std::string> sampler;  // "sobol" or "independent"
-    std::optional<float> clampIndirect;  // 0: no clamp (src/render/settings.h)
+    std::optional<Integrator> integrator;
+    std::optional<Sampler> sampler;
+    std::optional<LightSampling> lightSampling;
+    std::optional<float> clampIndirect;  // 0: no clamp (settings/render_settings.h)
 };
 
 // Light arriving from infinitely far away, from every direction no surface blocks: a constant colour,

@@ -1,7 +1,6 @@
 #include "scene/scene_file.h"
 
 #include <algorithm>
-#include <cctype>
 #include <cmath>
 #include <filesystem>
 #include <limits>
@@ -10,6 +9,7 @@
 
 #include "core/error.h"
 #include "core/log.h"
+#include "core/text.h"
 #include "image/image.h"
 #include "scene/load.h"
 #include "scene/text_file.h"
@@ -140,9 +140,9 @@ Camera parseCamera(const json& camera, Fields& fields) {
 
 RenderDefaults parseRender(const json& render, Fields& fields) {
     fields.object(render, "render");
-    fields.checkKeys(
-        render, "render.",
-        {"width", "height", "spp", "max_depth", "seed", "integrator", "sampler", "clamp_indirect"});
+    fields.checkKeys(render, "render.",
+                     {"width", "height", "spp", "max_depth", "seed", "integrator", "sampler",
+                      "light_sampling", "clamp_indirect"});
     constexpr long long kIntMax = std::numeric_limits<int>::max();
     RenderDefaults d;
     if (render.contains("width"))
@@ -154,20 +154,20 @@ RenderDefaults parseRender(const json& render, Fields& fields) {
     if (render.contains("max_depth"))
         d.maxDepth = static_cast<int>(fields.integer(render["max_depth"], "render.max_depth", 0, kIntMax));
     if (render.contains("seed"))
-        d.seed = static_cast<uint32_t>(
-            fields.integer(render["seed"], "render.seed", 0, std::numeric_limits<uint32_t>::max()));
-    if (render.contains("integrator")) {
-        std::string integrator = fields.string(render["integrator"], "render.integrator");
-        if (integrator != "naive" && integrator != "bsdf" && integrator != "nee" && integrator != "bdpt")
-            fields.fail("render.integrator must be one of naive, bsdf, nee, bdpt; got '" + integrator + "'");
-        d.integrator = integrator;
-    }
-    if (render.contains("sampler")) {
-        std::string sampler = fields.string(render["sampler"], "render.sampler");
-        if (sampler != "sobol" && sampler != "independent")
-            fields.fail("render.sampler must be sobol or independent; got '" + sampler + "'");
-        d.sampler = sampler;
-    }
+        d.seed = static_cast<uint32_t>(fields.integer(render["seed"], "render.seed", 0, kMaxSeed));
+    // The names are the command line's (settings/render_settings.h), with the same messages.
+    auto choice = [&](const char* key, auto parse) -> std::optional<decltype(parse(""))> {
+        if (!render.contains(key)) return std::nullopt;
+        std::string name = fields.string(render[key], std::string("render.") + key);
+        try {
+            return parse(name);
+        } catch (const Error& e) {
+            fields.fail(std::string("render.") + key + ": " + e.what());
+        }
+    };
+    d.integrator = choice("integrator", parseIntegrator);
+    d.sampler = choice("sampler", parseSampler);
+    d.lightSampling = choice("light_sampling", parseLightSampling);
     if (render.contains("clamp_indirect")) {
         float clamp = fields.real(render["clamp_indirect"], "render.clamp_indirect");
         if (!(clamp >= 0.0f)) fields.fail("render.clamp_indirect must be 0 (off) or more");
@@ -253,12 +253,6 @@ Scene parseSceneFile(std::string_view bytes, const std::string& name, const Mesh
 
 namespace fs = std::filesystem;
 
-static std::string lowercaseExtension(const fs::path& path) {
-    std::string ext = path.extension().string();
-    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
-    return ext;
-}
-
 Scene loadSceneFile(const std::string& path) {
     std::string bytes = readFileBytes(path);
     fs::path directory = fs::path(path).parent_path();
@@ -266,7 +260,7 @@ Scene loadSceneFile(const std::string& path) {
         bytes, path,
         [&](const std::string& mesh) {
             fs::path meshPath = fs::path(mesh).is_absolute() ? fs::path(mesh) : directory / mesh;
-            if (lowercaseExtension(meshPath) != ".obj")
+            if (lowerCaseExtension(meshPath.string()) != ".obj")
                 throw Error(path + ": mesh '" + mesh + "' must be an .obj file");
             std::error_code ec;
             if (!fs::exists(meshPath, ec))
@@ -275,7 +269,7 @@ Scene loadSceneFile(const std::string& path) {
         },
         [&](const std::string& map) {
             fs::path mapPath = fs::path(map).is_absolute() ? fs::path(map) : directory / map;
-            if (lowercaseExtension(mapPath) != ".hdr")
+            if (lowerCaseExtension(mapPath.string()) != ".hdr")
                 throw Error(path + ": environment map '" + map + "' must be a Radiance .hdr file");
             return readImage(mapPath.string());
         });
@@ -285,7 +279,7 @@ Scene loadScene(const std::string& path) {
     if (path.empty()) throw Error("no scene file given (empty path)");
     std::error_code ec;
     if (!fs::exists(path, ec)) throw Error(path + ": no such file");
-    std::string ext = lowercaseExtension(path);
+    std::string ext = lowerCaseExtension(path);
     if (ext == ".obj") return loadObj(path);
     if (ext == ".json") return loadSceneFile(path);
     throw Error(path + ": unknown scene file type '" + ext + "' (expected .obj or .json)");

@@ -3,6 +3,7 @@
 #include <memory>
 
 #include "core/error.h"
+#include "core/text.h"
 #include "denoise/denoise_passes.h"
 #include "denoise/denoiser.h"
 #include "study/name_list.h"

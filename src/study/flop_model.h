@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "render/settings.h"
+#include "settings/render_settings.h"
 
 namespace fp::study {
 
@@ -19,7 +19,7 @@ struct FlopCount {
 
 // The per-operation table, as it appears in the report.
 // - Visiting a node of the 4-wide BVH (intersect.glsl traverse), its four child boxes quantised to the
-//   node's grid (gpu/quantised_node.h): boxEntries' per-axis scale and offset, 3 x (1 multiply + 1
+//   node's grid (pack/quantised_node.h): boxEntries' per-axis scale and offset, 3 x (1 multiply + 1
 //   subtract + 1 multiply) = 9; the six planes of the four children, one multiply-add each (2), 48;
 //   entry max over three axes and 0 (12), exit min (8) and ulp scale (4), min with tMax and enter <=
 //   exit (8): 89; then which leaf children were hit (4), the cull of children beyond the hit (4), the

@@ -1,12 +1,15 @@
 #pragma once
-// Comma-separated lists of names on the command line ("nee,naive").
+// Names chosen on the command line: the study's lists of integrators and denoisers ("nee,naive").
 #include <string>
 #include <vector>
 
+#include "core/text.h"
+
 namespace fp::study {
 
-// "a,b,c" -> {"a", "b", "c"}; throws fp::Error naming `flag` for an empty entry or a repeated one.
-std::vector<std::string> splitNameList(const std::string& text, const std::string& flag);
+// The splitting lives in core/text.h; named here too for the callers that still write
+// study::splitNameList (src/app/study_command.cpp), until they call fp::splitNameList.
+using fp::splitNameList;
 // The position of `name` in `known`; throws fp::Error "unknown <what> 'name' (choose a, b or c)".
 size_t indexOfName(const std::vector<std::string>& known, const std::string& name, const std::string& what);
 

@@ -1,34 +1,14 @@
 #include "study/sweep.h"
 
 #include <algorithm>
-#include <chrono>
 #include <cstdio>
-#include <ctime>
 
+#include "core/clock.h"
+#include "core/statistics.h"
 #include "image/image_stats.h"
 #include "study/metrics.h"
 
 namespace fp::study {
-
-namespace {
-
-using Clock = std::chrono::steady_clock;
-
-double secondsSince(Clock::time_point start) {
-    return std::chrono::duration<double>(Clock::now() - start).count();
-}
-
-double cpuSeconds() {
-    return double(std::clock()) / CLOCKS_PER_SEC;
-}
-
-double median(std::vector<double> values) {
-    std::sort(values.begin(), values.end());
-    size_t n = values.size();
-    return n % 2 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
-}
-
-}  // namespace
 
 std::vector<int> sppLevels(int maxSpp) {
     std::vector<int> levels;
@@ -43,7 +23,8 @@ SweepResult runSweep(Renderer& renderer, const Image& reference, const SweepOpti
     for (Integrator integrator : options.integrators) {
         RenderSettings settings = options.render;
         settings.integrator = integrator;
-        // The denoisers need the first-hit guides; they cost the raw render about a tenth (BENCHMARKS.md).
+        // The denoisers need the first-hit guides; they cost the raw render about a tenth (BENCHMARKS.md,
+        // "Denoisers: cost on llvmpipe").
         for (const StudyDenoiser& denoiser : options.denoisers)
             if (denoiser.name != "none") settings.guides = true;
         const std::string name = integratorName(integrator);
@@ -59,17 +40,17 @@ SweepResult runSweep(Renderer& renderer, const Image& reference, const SweepOpti
             double wallSoFar = 0.0, cpuSoFar = 0.0;
             int done = 0;
             for (size_t level = 0; level < levels.size(); ++level) {
-                auto start = Clock::now();
-                double cpuStart = cpuSeconds();
+                auto start = SteadyClock::now();
+                double cpuStart = processCpuSeconds();
                 renderer.render(levels[level] - done);  // waits for the GPU (glFinish) before returning
                 wallSoFar += secondsSince(start);
-                cpuSoFar += cpuSeconds() - cpuStart;
+                cpuSoFar += processCpuSeconds() - cpuStart;
                 done = levels[level];
                 wall[level].push_back(wallSoFar);
                 cpu[level].push_back(cpuSoFar);
                 if (run > 0) continue;  // later runs only time; the images are the same bit for bit
                 for (const StudyDenoiser& denoiser : options.denoisers) {
-                    auto denoiseStart = Clock::now();
+                    auto denoiseStart = SteadyClock::now();
                     Image image = denoiser.apply(renderer);
                     StudyRow row;
                     row.integrator = name;

@@ -14,7 +14,7 @@
 
 #include <glm/glm.hpp>
 
-#include "render/settings.h"
+#include "settings/render_settings.h"
 
 namespace fp {
 

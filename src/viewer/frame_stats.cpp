@@ -1,6 +1,6 @@
 #include "viewer/frame_stats.h"
 
-#include <algorithm>
+#include "core/statistics.h"
 
 namespace fp {
 
@@ -26,11 +26,7 @@ double FrameStats::pathsPerSecond() const {
 }
 
 double FrameStats::medianFrameSeconds() const {
-    if (all_.empty()) return 0.0;
-    std::vector<double> sorted = all_;
-    std::sort(sorted.begin(), sorted.end());
-    size_t n = sorted.size();
-    return n % 2 ? sorted[n / 2] : 0.5 * (sorted[n / 2 - 1] + sorted[n / 2]);
+    return all_.empty() ? 0.0 : median(all_);
 }
 
 }  // namespace fp

@@ -3,12 +3,16 @@
 #include <imgui.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <iterator>
+#include <string>
+#include <utility>
+#include <vector>
 
 #include "image/tone_map.h"
-#include "viewer/camera_controller.h"
 #include "render/heat_map.h"
+#include "viewer/camera_controller.h"
 
 namespace fp {
 
@@ -31,6 +35,9 @@ const char* const kToneMaps[] = {"clamp", "reinhard", "aces"};
 const char* const kDenoisers[] = {"none", "bilateral", "atrous"};
 const float kScales[] = {1.0f, 0.5f, 0.25f, 0.125f};
 const char* const kScaleNames[] = {"full", "1/2", "1/4", "1/8"};
+// The panel covers about a quarter of an 800x600 window with the default sections open.
+constexpr float kDefaultPanelWidth = 272.0f, kMinPanelWidth = 200.0f;
+constexpr float kLabelWidth = 84.0f;  // right of the widgets: "integrator", "resolution", "target spp"
 
 // What a count view counts, for the legend.
 const char* countUnit(View view) {
@@ -85,7 +92,22 @@ void heatLegend(View view, float heatMax) {
     ImGui::TextUnformatted("0");
     ImGui::SameLine(std::max(0.0f, width - ImGui::CalcTextSize(top).x));
     ImGui::TextUnformatted(top);
-    ImGui::TextDisabled("%s per primary ray (mean)", countUnit(view));
+    ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
+    ImGui::TextWrapped("%s per primary ray (mean)", countUnit(view));
+    ImGui::PopStyleColor();
+}
+
+// 3 significant digits and a k, M or G suffix: 448k, 12.5M (the panel is narrow).
+std::string shortNumber(double value) {
+    const char* suffix = "";
+    for (const char* s : {"k", "M", "G"}) {
+        if (!(std::abs(value) >= 999.5)) break;
+        value /= 1000.0;
+        suffix = s;
+    }
+    char text[32];
+    std::snprintf(text, sizeof text, "%.3g%s", value, suffix);
+    return text;
 }
 
 void statistics(const ViewerControls& c, const PanelInfo& info) {
@@ -95,16 +117,36 @@ void statistics(const ViewerControls& c, const PanelInfo& info) {
     else
         ImGui::Text("samples  %d", info.samples);
     ImGui::Text("image    %d x %d%s", info.accumulation.x, info.accumulation.y,
-                info.reduced ? " (reduced while moving)" : "");
-    ImGui::Text("speed    %.3g samples/s, %.3g paths/s", info.samplesPerSecond, info.pathsPerSecond);
+                info.reduced ? " (moving)" : "");
+    if (ImGui::IsItemHovered() && info.reduced)
+        ImGui::SetTooltip("a reduced resolution while the camera moves");
+    ImGui::Text("speed    %.3g spp/s, %s paths/s", info.samplesPerSecond,
+                shortNumber(info.pathsPerSecond).c_str());
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("samples per pixel per second, paths per second");
     ImGui::Text("frame    %.1f ms", info.frameMs);
-    if (info.denoiseMs > 0.0) ImGui::Text("denoise  %.1f ms (at most 1/4 of the time)", info.denoiseMs);
-    ImGui::TextDisabled("%s", info.renderer.c_str());
+    if (info.denoiseMs > 0.0) {
+        ImGui::Text("denoise  %.1f ms", info.denoiseMs);
+        if (ImGui::IsItemHovered()) ImGui::SetTooltip("the last denoising run; at most 1/4 of the time");
+    }
 }
 
+// The essentials: what is rendered, and until when.
 void renderSettings(ViewerControls& c) {
     integratorCombo("integrator", c.render.integrator);
     depthSlider("max depth", c.render.maxDepth);
+    int view = 0;
+    const char* names[std::size(kAllViews)];
+    for (size_t i = 0; i < std::size(kAllViews); ++i) {
+        names[i] = viewName(kAllViews[i]);
+        if (kAllViews[i] == c.render.view) view = int(i);
+    }
+    if (ImGui::Combo("view", &view, names, int(std::size(names)))) c.render.view = kAllViews[view];
+    ImGui::InputInt("target spp", &c.targetSpp);
+    c.targetSpp = std::max(c.targetSpp, 0);
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("stop rendering at this many samples per pixel; 0: never");
+}
+
+void samplingSettings(ViewerControls& c) {
     int sampler = 0;
     const char* samplerNames[std::size(kAllSamplers)];
     for (size_t i = 0; i < std::size(kAllSamplers); ++i) {
@@ -119,37 +161,29 @@ void renderSettings(ViewerControls& c) {
     if (c.render.integrator == Integrator::Bdpt) {
         c.render.clampIndirect = 0.0f;  // bdpt has no clamp (its strategies share paths)
     } else {
-        ImGui::InputFloat("clamp indirect", &c.render.clampIndirect, 0.0f, 0.0f, "%.3g");
+        ImGui::InputFloat("clamp", &c.render.clampIndirect, 0.0f, 0.0f, "%.3g");
         c.render.clampIndirect = std::max(c.render.clampIndirect, 0.0f);
         if (ImGui::IsItemHovered())
             ImGui::SetTooltip(
-                "scale indirect light down to at most this per channel: fewer fireflies, but "
-                "BIASED (darker); 0: off");
+                "clamp indirect: scale indirect light down to at most this per channel: fewer\n"
+                "fireflies, but BIASED (darker); 0: off");
     }
-    int view = 0;
-    const char* names[std::size(kAllViews)];
-    for (size_t i = 0; i < std::size(kAllViews); ++i) {
-        names[i] = viewName(kAllViews[i]);
-        if (kAllViews[i] == c.render.view) view = int(i);
-    }
-    if (ImGui::Combo("view", &view, names, int(std::size(names)))) c.render.view = kAllViews[view];
+    int seed = int(c.render.seed);
+    if (ImGui::InputInt("seed", &seed)) c.render.seed = uint32_t(std::max(seed, 0));
     int scale = 0;
     for (size_t i = 0; i < std::size(kScales); ++i)
         if (kScales[i] == c.resolutionScale) scale = int(i);
     if (ImGui::Combo("resolution", &scale, kScaleNames, int(std::size(kScaleNames))))
         c.resolutionScale = kScales[scale];
-    ImGui::InputInt("target spp", &c.targetSpp);
-    c.targetSpp = std::max(c.targetSpp, 0);
-    if (ImGui::IsItemHovered()) ImGui::SetTooltip("stop rendering at this many samples per pixel; 0: never");
-    int seed = int(c.render.seed);
-    if (ImGui::InputInt("seed", &seed)) c.render.seed = uint32_t(std::max(seed, 0));
+}
 
-    ImGui::Checkbox("split view", &c.split);
+void splitSettings(ViewerControls& c) {
+    ImGui::Checkbox("split the view", &c.split);
     if (ImGui::IsItemHovered())
         ImGui::SetTooltip("the right half uses another integrator or depth, at the same sample count");
     if (c.split) {
-        integratorCombo("right integrator", c.splitView.integrator);
-        depthSlider("right max depth", c.splitView.maxDepth);
+        integratorCombo("integrator##right", c.splitView.integrator);
+        depthSlider("max depth##right", c.splitView.maxDepth);
     }
 }
 
@@ -181,9 +215,10 @@ bool displaySettings(ViewerControls& c) {
 
 void cameraSettings(const PanelInfo& info, PanelActions& actions) {
     float fov = info.camera.fovY;
-    if (ImGui::SliderFloat("field of view", &fov, CameraController::kMinFovDegrees,
-                           CameraController::kMaxFovDegrees, "%.1f deg"))
+    if (ImGui::SliderFloat("fov", &fov, CameraController::kMinFovDegrees, CameraController::kMaxFovDegrees,
+                           "%.1f deg"))
         actions.fov = fov;
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("vertical field of view");
     bool flying = info.flying;
     if (ImGui::Checkbox("fly mode (F)", &flying)) actions.toggleFly = true;
     ImGui::SameLine();
@@ -194,21 +229,63 @@ void cameraSettings(const PanelInfo& info, PanelActions& actions) {
                         double(cam.target.z));
 }
 
+// kViewerControlsHelp as a table whose descriptions wrap to the panel's width: a line that starts with
+// spaces continues the description above it.
+void controlsHelp() {
+    constexpr size_t kKeyColumn = 17;  // where kViewerControlsHelp's descriptions start
+    std::vector<std::pair<std::string, std::string>> rows;
+    std::string text = kViewerControlsHelp;
+    for (size_t start = 0; start < text.size();) {
+        size_t end = std::min(text.find('\n', start), text.size());
+        std::string line = text.substr(start, end - start);
+        start = end + 1;
+        std::string key = line.substr(0, std::min(kKeyColumn, line.size()));
+        std::string what = line.size() > kKeyColumn ? line.substr(kKeyColumn) : "";
+        key.erase(key.find_last_not_of(' ') + 1);
+        if (key.empty() && !rows.empty())
+            rows.back().second += " " + what;
+        else
+            rows.emplace_back(key, what);
+    }
+    if (!ImGui::BeginTable("controls", 2)) return;
+    ImGui::TableSetupColumn("key", ImGuiTableColumnFlags_WidthFixed);
+    ImGui::TableSetupColumn("what", ImGuiTableColumnFlags_WidthStretch);
+    for (const auto& [key, what] : rows) {
+        ImGui::TableNextRow();
+        ImGui::TableNextColumn();
+        ImGui::TextUnformatted(key.c_str());
+        ImGui::TableNextColumn();
+        ImGui::TextWrapped("%s", what.c_str());
+    }
+    ImGui::EndTable();
+}
+
 }  // namespace
 
-PanelActions drawPanel(ViewerControls& c, const PanelInfo& info) {
+PanelActions Panel::draw(ViewerControls& c, const PanelInfo& info) {
     PanelActions actions;
     ImGui::SetNextWindowPos(ImVec2(8, 8), ImGuiCond_FirstUseEver);
-    // As tall as its contents (they change: split view, errors), but never taller than the window: it
-    // scrolls instead.
-    float height = std::max(ImGui::GetIO().DisplaySize.y - 16.0f, 100.0f);
-    ImGui::SetNextWindowSizeConstraints(ImVec2(320, 0), ImVec2(320, height));
+    // Narrow at first (0: ImGui fits the first frames' height), as tall as its contents (they change:
+    // open sections, split view, errors) but never taller than the window, where it scrolls. The user
+    // may drag an edge to change the width, and collapse the panel by its title. Not AlwaysAutoResize,
+    // nor a height set every frame: either would stop ImGui from resizing the window by hand.
+    const ImVec2 display = ImGui::GetIO().DisplaySize;
+    ImGui::SetNextWindowSize(ImVec2(kDefaultPanelWidth, 0.0f), ImGuiCond_FirstUseEver);
+    float maxHeight = std::max(display.y - 16.0f, 100.0f);
+    heightWanted_ = std::min(contentHeight_, maxHeight);
+    ImGui::SetNextWindowSizeConstraints(
+        ImVec2(kMinPanelWidth, 0.0f), ImVec2(std::max(display.x - 16.0f, kMinPanelWidth), maxHeight),
+        [](ImGuiSizeCallbackData* data) {
+            float height = *static_cast<const float*>(data->UserData);
+            if (height > 0.0f) data->DesiredSize.y = height;
+        },
+        &heightWanted_);
     ImGui::SetNextWindowBgAlpha(0.8f);
-    if (!ImGui::Begin("fragpath", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
+    if (!ImGui::Begin("fragpath")) {
         ImGui::End();
         return actions;
     }
-    ImGui::PushItemWidth(-130.0f);  // room for the labels
+    ImGui::PushItemWidth(-kLabelWidth);  // room for the labels
     statistics(c, info);
     // Right below the figures, where it cannot be missed or scrolled away.
     if (!info.shaderError.empty()) {
@@ -219,18 +296,29 @@ PanelActions drawPanel(ViewerControls& c, const PanelInfo& info) {
         ImGui::PopTextWrapPos();
         ImGui::PopStyleColor();
     }
+    // The essentials open, the rest collapsed (ImGui remembers what the user opens). A split view asked
+    // for on the command line opens its section.
     if (ImGui::CollapsingHeader("render", ImGuiTreeNodeFlags_DefaultOpen)) renderSettings(c);
     if (ImGui::CollapsingHeader("display", ImGuiTreeNodeFlags_DefaultOpen))
         actions.fitHeatMap = displaySettings(c);
-    if (ImGui::CollapsingHeader("camera", ImGuiTreeNodeFlags_DefaultOpen)) cameraSettings(info, actions);
-    if (ImGui::CollapsingHeader("shaders")) ImGui::TextWrapped("source: %s", info.shaderSource.c_str());
-    if (ImGui::CollapsingHeader("help")) ImGui::TextUnformatted(kViewerControlsHelp);
+    if (ImGui::CollapsingHeader("sampling")) samplingSettings(c);
+    if (ImGui::CollapsingHeader("split view", c.split ? ImGuiTreeNodeFlags_DefaultOpen : 0)) splitSettings(c);
+    if (ImGui::CollapsingHeader("camera")) cameraSettings(info, actions);
+    if (ImGui::CollapsingHeader("renderer")) {
+        ImGui::TextWrapped("%s", info.renderer.c_str());
+        ImGui::TextWrapped("shaders: %s", info.shaderSource.c_str());
+    }
+    if (ImGui::CollapsingHeader("help")) controlsHelp();
     actions.screenshot = ImGui::Button("screenshot (P)");
     if (!info.message.empty()) {
-        ImGui::SameLine();
-        ImGui::TextDisabled("%s", info.message.c_str());
+        ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
+        ImGui::TextWrapped("%s", info.message.c_str());
+        ImGui::PopStyleColor();
     }
     ImGui::PopItemWidth();
+    // The window's height for these contents (the cursor's position is independent of the scrolling).
+    contentHeight_ =
+        ImGui::GetCursorPosY() - ImGui::GetStyle().ItemSpacing.y + ImGui::GetStyle().WindowPadding.y;
     ImGui::End();
     return actions;
 }

@@ -36,7 +36,16 @@ struct PanelActions {
     std::optional<float> fov;  // degrees
 };
 
-PanelActions drawPanel(ViewerControls& controls, const PanelInfo& info);
+// The panel's window. Its height follows its contents, which it measures as it draws them.
+class Panel {
+  public:
+    // Draws the panel for this frame (between ImGuiLayer::beginFrame and render).
+    PanelActions draw(ViewerControls& controls, const PanelInfo& info);
+
+  private:
+    float contentHeight_ = 0.0f;  // the window's height for last frame's contents; 0 before the first
+    float heightWanted_ = 0.0f;   // read by ImGui's size callback
+};
 
 // The controls, one per line, for the panel's help section and `fragpath view --help`.
 extern const char* const kViewerControlsHelp;

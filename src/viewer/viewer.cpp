@@ -7,12 +7,12 @@
 // clang-format on
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <memory>
 #include <optional>
 
+#include "core/clock.h"
 #include "core/error.h"
 #include "denoise/denoise_passes.h"
 #include "render/display.h"
@@ -39,8 +39,8 @@ constexpr double kTargetFrameSeconds = 0.040;
 constexpr double kMinBudgetSeconds = 0.010, kMaxBudgetSeconds = 0.033;
 
 double now() {
-    static const auto start = std::chrono::steady_clock::now();
-    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    static const auto start = SteadyClock::now();
+    return secondsSince(start);
 }
 
 class Session {
@@ -57,7 +57,7 @@ class Session {
     void reloadShadersIfChanged(double t);
     void restart(const RenderSettings& settings, bool reduced);
     float movingScale(glm::ivec2 framebuffer) const;
-    void renderWithinBudget();
+    void renderWithinBudget(bool stopAtPassEnd);
     void fitHeatMapIfDue();
     DisplayOptions displayOptions() const;
     bool showsDenoised() const;
@@ -69,9 +69,13 @@ class Session {
     bool targetReached() const {
         return controls_.targetSpp > 0 && renderer_.samples() >= controls_.targetSpp;
     }
+    // No pass in progress, and at least one done: every pixel has the same number of samples.
+    bool wholePasses() const { return renderer_.samples() >= 1 && tile_ == 0; }
+    // When --frames run out mid-pass, the automation goes on until the pass is complete, so that what
+    // it saves at exit holds whole passes (issue 17: a screenshot with a black band, "0 spp").
     bool automationDone(int frames) const {
         return options_.frames > 0 && frames >= options_.frames &&
-               (controls_.targetSpp == 0 || renderer_.samples() >= controls_.targetSpp);
+               (controls_.targetSpp == 0 || renderer_.samples() >= controls_.targetSpp) && wholePasses();
     }
     void printTiming() const;
 
@@ -82,6 +86,7 @@ class Session {
     Display display_;
     DenoisePasses denoiser_;
     std::unique_ptr<ImGuiLayer> ui_;
+    Panel panel_;
     std::optional<ShaderWatcher> watcher_;
     ViewerControls controls_;
     CameraController camera_;
@@ -110,7 +115,7 @@ Session::Session(const Scene& scene, const ViewerOptions& options)
     : options_(options),
       window_(options.windowSize.x, options.windowSize.y, "fragpath - " + scene.source),
       description_(window_.description()),
-      renderer_(scene, ShaderLibrary(options.shaderDir)),
+      renderer_(scene, ShaderLibrary(options.shaderDir), layout::bvhOptions(options.bvhThreads)),
       display_(ShaderLibrary(options.shaderDir)),
       denoiser_(ShaderLibrary(options.shaderDir)),
       controls_(options.controls),
@@ -267,7 +272,8 @@ float Session::movingScale(glm::ivec2 framebuffer) const {
     return scale;
 }
 
-void Session::renderWithinBudget() {
+// With stopAtPassEnd the frame does not start another pass after completing one.
+void Session::renderWithinBudget(bool stopAtPassEnd) {
     glm::ivec2 size(renderer_.settings().width, renderer_.settings().height);
     double start = now();
     planner_.setBudgetSeconds(
@@ -283,6 +289,7 @@ void Session::renderWithinBudget() {
         if (passDone) {
             tile_ = 0;
             planner_.passDone();
+            if (stopAtPassEnd) break;
         }
         if (targetReached()) break;
         int next = tile_ ? tile_ : planner_.tileSize(size);
@@ -326,9 +333,10 @@ bool Session::showsDenoised() const {
            s.view == View::Radiance && renderer_.samples() >= 1;
 }
 
-// Denoises again when the sample count changed, but spends at most about a quarter of the time on it:
-// on a software renderer the a-trous passes cost about one sample (BENCHMARKS.md), on a GPU next to
-// nothing, so there it follows every sample. `current` forces an up-to-date result (screenshots).
+// Denoises again when the sample count changed, but spends at most about a quarter of the time on it: on a
+// software renderer the a-trous passes cost about one sample (BENCHMARKS.md, "Denoisers: cost on llvmpipe"),
+// on a GPU next to nothing, so there it follows every sample. `current` forces an up-to-date result
+// (screenshots).
 GLuint Session::shownTexture(bool current) {
     if (!showsDenoised()) return renderer_.textures().sum;
     bool stale = denoisedSamples_ != renderer_.samples();
@@ -435,10 +443,12 @@ void Session::run() {
         frameRenderSeconds_ = 0.0;
         frameDenoiseSeconds_ = 0.0;
         bool rendering = decision.render && !targetReached();
-        if (rendering) renderWithinBudget();
+        // From the automation's last frame on, a frame ends at a pass's end rather than start another.
+        bool lastFrames = options_.frames > 0 && frames + 1 >= options_.frames;
+        if (rendering) renderWithinBudget(lastFrames);
         fitHeatMapIfDue();
         // After rendering, so that it shows this frame's figures; its changes apply from the next frame.
-        if (ui_ && controls_.showPanel) applyActions(drawPanel(controls_, panelInfo()));
+        if (ui_ && controls_.showPanel) applyActions(panel_.draw(controls_, panelInfo()));
         ++frames;
         bool done = automationDone(frames);
         // A new accumulation is black where its first pass has not reached yet. Rather than wipe the

@@ -17,9 +17,11 @@ struct ViewerOptions {
     Camera camera;            // the home camera (R returns to it)
     std::string shaderDir;    // empty: the shaders built into the binary; else hot reload from here
     bool ui = true;           // false: no panel (tests, clean captures)
+    int bvhThreads = 0;       // threads that build the BVH; 0: every CPU
 
     // Automation: with frames > 0 the viewer closes itself after that many frames, and when
-    // controls.targetSpp > 0 not before that many samples per pixel.
+    // controls.targetSpp > 0 not before that many samples per pixel. It never closes mid-pass: the
+    // screenshots hold whole passes (at least one), which may take frames beyond `frames`.
     int frames = 0;
     std::string screenshot;        // written at exit: the rendered image (.png as shown, .exr/.pfm linear)
     std::string windowScreenshot;  // written at exit: the whole window, panel included (.png)

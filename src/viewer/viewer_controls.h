@@ -3,7 +3,7 @@
 // accumulation) and how to show it (these never do). The panel edits it; command-line flags set it.
 #include "denoise/denoiser.h"
 #include "image/image.h"
-#include "render/settings.h"
+#include "settings/render_settings.h"
 
 namespace fp {
 

@@ -4,7 +4,7 @@
 #include <cstring>
 
 #include "bvh/bvh_test_util.h"
-#include "gpu/layout.h"
+#include "pack/layout.h"
 #include "scene/procedural.h"
 
 namespace fp {

@@ -1,7 +1,7 @@
 // Tree quality by the MacDonald-Booth SAH cost: the full-sweep builder is the reference, the binned
 // builder must come close to it, and both must beat the object median.
 #include "bvh/bvh_test_util.h"
-#include "gpu/layout.h"
+#include "pack/layout.h"
 #include "scene/builtin_scene.h"
 #include "scene/procedural.h"
 

@@ -11,7 +11,7 @@
 // per-triangle offsets.
 #include <gtest/gtest.h>
 
-#include "gpu/layout.h"
+#include "pack/layout.h"
 #include "native/native_path.h"
 #include "native/native_test_util.h"
 #include "render/analytic_lamp.h"

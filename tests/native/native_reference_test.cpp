@@ -6,7 +6,7 @@
 #include <cmath>
 
 #include "core/error.h"
-#include "gpu/layout.h"
+#include "pack/layout.h"
 #include "native/native_path.h"
 #include "native/native_test_util.h"
 #include "render/render_test_util.h"

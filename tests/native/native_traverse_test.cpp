@@ -4,7 +4,7 @@
 #include <gtest/gtest.h>
 
 #include "../bvh/bvh_test_util.h"
-#include "gpu/layout.h"
+#include "pack/layout.h"
 #include "native/native_trace.h"
 
 namespace fp::test {

@@ -40,7 +40,7 @@ TEST(AnalyticLamp, BdptLightsTheFloorUnderALampCloseAboveIt) {
 // nee samples a lamp that subtends a large solid angle uniformly in that solid angle (lights.glsl,
 // Arvo 1995), not by area: the floor under a lamp 0.2 of its side above it gets the same radiance with
 // less than half the variance (the 1 / r^2 and the lamp's cosine leave the estimate). Both by the
-// analytic value; --light-sampling auto chooses solid angle for this scene (gpu/light_strategy.h).
+// analytic value; --light-sampling auto chooses solid angle for this scene (pack/light_strategy.h).
 TEST(AnalyticLamp, NeeSamplesACloseLampBySolidAngle) {
     ensureGlContext();
     const LampCase c = lampCases()[0];

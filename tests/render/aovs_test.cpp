@@ -5,36 +5,29 @@
 #include <gtest/gtest.h>
 
 #include "core/error.h"
+#include "image/test_files.h"
 #include "render/partial_render.h"
 
 namespace fp {
 namespace {
 
-std::string errorOf(const std::function<void()>& f) {
-    try {
-        f();
-    } catch (const Error& e) {
-        return e.what();
-    }
-    ADD_FAILURE() << "expected fp::Error";
-    return "";
-}
+using test::errorMessage;
 
-TEST(Aovs, ParseKeepsTheOrderGivenOnceEach) {
+TEST(Aovs, ParseKeepsTheOrderGiven) {
     EXPECT_EQ(parseAovs("depth,albedo"), (std::vector<Aov>{Aov::Depth, Aov::Albedo}));
-    EXPECT_EQ(parseAovs("normal, normal ,albedo"), (std::vector<Aov>{Aov::Normal, Aov::Albedo}));
-    std::string message = errorOf([] { parseAovs("albedo,Normal"); });
+    EXPECT_EQ(parseAovs("normal"), (std::vector<Aov>{Aov::Normal}));
+    std::string message = errorMessage([] { parseAovs("albedo,Normal"); });
     EXPECT_NE(message.find("unknown AOV 'Normal'"), std::string::npos) << message;
     EXPECT_NE(message.find("albedo, normal, depth"), std::string::npos) << message;
-    EXPECT_NE(errorOf([] { parseAovs(""); }).find("unknown AOV ''"), std::string::npos);
-    EXPECT_NE(errorOf([] { parseAovs("albedo,,depth"); }).find("unknown AOV ''"), std::string::npos);
+    for (const char* bad : {"", "albedo,,depth", "albedo,", "normal,normal"})
+        EXPECT_NE(errorMessage([&] { parseAovs(bad); }).find("--aovs"), std::string::npos) << bad;
 }
 
 TEST(Aovs, OptionNeedsAnExrOutput) {
     EXPECT_TRUE(parseAovOption(std::nullopt, "out.png").empty());
     EXPECT_EQ(parseAovOption("albedo", "dir/OUT.EXR"), (std::vector<Aov>{Aov::Albedo}));
     for (const char* output : {"out.png", "out.pfm", "out"}) {
-        std::string message = errorOf([&] { parseAovOption("albedo", output); });
+        std::string message = errorMessage([&] { parseAovOption("albedo", output); });
         EXPECT_NE(message.find("--aovs needs an .exr output"), std::string::npos) << message;
         EXPECT_NE(message.find(output), std::string::npos) << message;
     }

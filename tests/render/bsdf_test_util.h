@@ -20,7 +20,8 @@
 #include "gl/gl.h"
 #include "gl/program.h"
 #include "gl/shader_source.h"
-#include "gpu/layout.h"
+#include "gpu/layout_defines.h"
+#include "pack/layout.h"
 #include "render_test_util.h"
 #include "scene/scene.h"
 
@@ -133,7 +134,7 @@ class BsdfProbe {
     BsdfProbe(const BsdfProbe&) = delete;
     BsdfProbe& operator=(const BsdfProbe&) = delete;
 
-    // The material under test, packed as src/gpu/layout.h describes (and src/gpu/pack.cpp writes); the
+    // The material under test, packed as src/pack/layout.h describes (and src/pack/pack.cpp writes); the
     // fourth texel's w, the Cauchy coefficient of a dispersive glass, is 0: one index for all wavelengths;
     // the fifth says "no texture".
     void setMaterial(const Material& m) {

@@ -1,10 +1,10 @@
-// Which scenes --light-sampling auto samples by solid angle (gpu/light_strategy.h; here beside the
+// Which scenes --light-sampling auto samples by solid angle (pack/light_strategy.h; here beside the
 // analytic lamp scenes it is tested on): those with an emitter
 // close to the surface it faces, and no others.
 #include <gtest/gtest.h>
 
 #include "bvh/bvh.h"
-#include "gpu/light_strategy.h"
+#include "pack/light_strategy.h"
 #include "render/analytic_lamp.h"
 #include "scene/builtin_scene.h"
 

@@ -2,7 +2,7 @@
 #include <gtest/gtest.h>
 
 #include "core/error.h"
-#include "gpu/layout.h"
+#include "pack/layout.h"
 #include "gpu/scene_textures.h"
 #include "render_test_util.h"
 
@@ -28,7 +28,7 @@ TEST(Limits, SceneOverTheBufferTextureLimitIsAClearError) {
 }
 
 TEST(Limits, BvhNodesOverTheBufferTextureLimitAreAClearError) {
-    // One triangle: 3 triangle texels, but one BVH node of gpu/quantised_node.h's 4 texels.
+    // One triangle: 3 triangle texels, but one BVH node of pack/quantised_node.h's 4 texels.
     ensureGlContext();
     Scene scene = furnaceBox(0.5f, 1.0f);
     scene.triangles.resize(1);

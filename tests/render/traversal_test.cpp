@@ -87,7 +87,7 @@ TEST(GpuTraversal, OverlappingLongTrianglesFromInsideMatchBruteForce) {
 }
 
 TEST(GpuTraversal, SmallTrianglesFarFromTheOriginMatchBruteForce) {
-    // Quantised boxes (gpu/quantised_node.h) on nodes whose coordinates are 10^4 times their size:
+    // Quantised boxes (pack/quantised_node.h) on nodes whose coordinates are 10^4 times their size:
     // the plane distances are differences of large terms, which the quantiser's margin must cover.
     Scene s = randomSoup(3000, 0.08f, 3);
     const glm::vec3 offset(4000.0f, -3000.0f, 2500.0f);

@@ -339,7 +339,7 @@ Scene hundredThousandEmitters() {
 }
 
 // Catches light selection that disagrees with the stored per-emitter pmf: the pick walks a CDF summed
-// in float (src/gpu/pack.cpp), whose steps drift from the pmfs the densities use by the rounding of
+// in float (src/pack/pack.cpp), whose steps drift from the pmfs the densities use by the rounding of
 // each addition: relatively large for emitters whose pmf is a few spacings of the CDF's floats. The
 // camera sees the floor under the panel, lit by the panel alone, from below the panel's height.
 TEST(Unbiased, HundredThousandEmittersNeeMatchesBsdf) {

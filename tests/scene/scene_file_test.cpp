@@ -36,8 +36,9 @@ std::string sceneWith(const std::string& body) {
 
 TEST(SceneFile, CameraAndRenderParsed) {
     SceneDir s(sceneWith(R"("camera": {"eye": [1, 2, 3], "target": [4, 5, 6], "up": [0, 0, 1], "fov": 55.5},
-        "render": {"width": 640, "height": 480, "spp": 16, "max_depth": 0, "seed": 4294967295,
-                   "integrator": "bsdf", "sampler": "independent", "clamp_indirect": 4.5})"));
+        "render": {"width": 640, "height": 480, "spp": 16, "max_depth": 0, "seed": 2147483647,
+                   "integrator": "bsdf", "sampler": "independent", "light_sampling": "area",
+                   "clamp_indirect": 4.5})"));
     WarningCapture capture;
     Scene scene = s.load();
     EXPECT_TRUE(capture.messages().empty()) << test::joined(capture);
@@ -52,9 +53,10 @@ TEST(SceneFile, CameraAndRenderParsed) {
     EXPECT_EQ(scene.defaults.height, 480);
     EXPECT_EQ(scene.defaults.spp, 16);
     EXPECT_EQ(scene.defaults.maxDepth, 0);
-    EXPECT_EQ(scene.defaults.seed, 4294967295u);
-    EXPECT_EQ(scene.defaults.integrator, "bsdf");
-    EXPECT_EQ(scene.defaults.sampler, "independent");
+    EXPECT_EQ(scene.defaults.seed, 2147483647u);
+    EXPECT_EQ(scene.defaults.integrator, Integrator::Bsdf);
+    EXPECT_EQ(scene.defaults.sampler, Sampler::Independent);
+    EXPECT_EQ(scene.defaults.lightSampling, LightSampling::Area);
     EXPECT_EQ(scene.defaults.clampIndirect, 4.5f);
 }
 
@@ -72,7 +74,7 @@ TEST(SceneFile, CameraAndRenderOptional) {
                  scene.defaults.maxDepth || scene.defaults.seed || scene.defaults.integrator);
     Scene partial = SceneDir(sceneWith(R"("render": {"spp": 4, "integrator": "naive"})")).load();
     EXPECT_EQ(partial.defaults.spp, 4);
-    EXPECT_EQ(partial.defaults.integrator, "naive");
+    EXPECT_EQ(partial.defaults.integrator, Integrator::Naive);
     EXPECT_FALSE(partial.defaults.width.has_value());
 }
 
@@ -194,10 +196,14 @@ TEST(SceneFile, BadRenderSettings) {
     SceneDir(sceneWith(R"("render": {"spp": 0})")).reject("render.spp must be in [1,");
     SceneDir(sceneWith(R"("render": {"max_depth": -1})")).reject("render.max_depth must be in [0,");
     SceneDir(sceneWith(R"("render": {"width": 3000000000})")).reject("render.width must be in");
-    SceneDir(sceneWith(R"("render": {"seed": -1})")).reject("render.seed must be in [0, 4294967295]");
+    SceneDir(sceneWith(R"("render": {"seed": -1})")).reject("render.seed must be in [0, 2147483647]");
     SceneDir(sceneWith(R"("render": {"seed": 4294967296})")).reject("render.seed must be in");
-    SceneDir(sceneWith(R"("render": {"integrator": "path"})")).reject("naive, bsdf, nee, bdpt; got 'path'");
-    SceneDir(sceneWith(R"("render": {"sampler": "halton"})")).reject("sobol or independent; got 'halton'");
+    SceneDir(sceneWith(R"("render": {"integrator": "path"})"))
+        .reject("render.integrator: unknown integrator 'path' (choose naive, bsdf, nee or bdpt)");
+    SceneDir(sceneWith(R"("render": {"sampler": "halton"})"))
+        .reject("render.sampler: unknown sampler 'halton' (choose sobol or independent)");
+    SceneDir(sceneWith(R"("render": {"light_sampling": "cone"})"))
+        .reject("render.light_sampling: unknown light sampling 'cone'");
     SceneDir(sceneWith(R"("render": {"clamp_indirect": -1})"))
         .reject("render.clamp_indirect must be 0 (off) or more");
     SceneDir(sceneWith(R"("render": {"clamp_indirect": "big"})"))

@@ -4,7 +4,9 @@
 #include <gtest/gtest.h>
 #include <stb_image.h>
 
+#include <algorithm>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <vector>
 
@@ -100,6 +102,55 @@ TEST_F(ViewerXvfb, DenoisesWhatFragpathRenderDenoises) {
     EXPECT_NE(imageA.pixels, readImage(path("raw.exr")).pixels);
 }
 
+// The samples per pixel that `wrote FILE (N spp)` reports for the --screenshot, or -1.
+int screenshotSpp(const std::string& output, const std::string& file) {
+    size_t at = output.find("wrote " + file + " (");
+    if (at == std::string::npos) return -1;
+    return std::atoi(output.c_str() + at + file.size() + 8);
+}
+
+// Issue 17: `view --frames N --screenshot` saved a half-traced first pass (a black band, "0 spp") when the
+// frames ran out before a pass did (at 400x300 a pass takes several frames on llvmpipe). Whatever N, the
+// screenshot must hold whole passes: at least one, every pixel the same number, which makes it the image
+// `fragpath render` gives for that many samples.
+TEST_F(ViewerXvfb, ScreenshotHoldsWholePassesWhenTheFramesEndMidPass) {
+    for (int frames : {1, 2, 30}) {
+        SCOPED_TRACE("--frames " + std::to_string(frames));
+        std::string shot = path("view" + std::to_string(frames) + ".pfm");
+        CliRun a = view("--size 400x300 --seed 5 --no-ui --frames " + std::to_string(frames) +
+                        " --screenshot " + shot);
+        ASSERT_EQ(a.exitCode, 0) << a.output;
+        int spp = screenshotSpp(a.output, shot);
+        if (spp < 1) {
+            ADD_FAILURE() << "the screenshot has no whole pass\n" << a.output;
+            continue;
+        }
+        EXPECT_NE(a.output.find(", " + std::to_string(spp) + " spp;"), std::string::npos) << a.output;
+
+        Image image = readImage(shot);
+        ASSERT_EQ(image.width, 400);
+        ASSERT_EQ(image.height, 300);
+        // No black band: the Cornell box is lit in every row, so every block of 30 rows has a clear mean.
+        for (int block = 0; block < 10; ++block) {
+            double sum = 0.0;
+            for (int y = block * 30; y < (block + 1) * 30; ++y)
+                for (int x = 0; x < image.width; ++x)
+                    sum += double(glm::dot(image.at(x, y), glm::vec3(1.0f)));
+            EXPECT_GT(sum / (30.0 * image.width), 0.01) << "rows " << block * 30 << " to " << block * 30 + 29;
+        }
+        // Whole passes: exactly what render takes with that many samples (a pass in progress would leave
+        // some pixels with one sample more).
+        CliRun b = test::runFragpath("render --size 400x300 --seed 5 --quiet --spp " + std::to_string(spp) +
+                                     " -o " + path("render.pfm"));
+        ASSERT_EQ(b.exitCode, 0) << b.output;
+        Image rendered = readImage(path("render.pfm"));
+        ASSERT_EQ(rendered.pixels.size(), image.pixels.size());
+        size_t differing = 0;
+        for (size_t i = 0; i < image.pixels.size(); ++i) differing += image.pixels[i] != rendered.pixels[i];
+        EXPECT_EQ(differing, 0u) << "pixels unlike render --spp " << spp << "\n" << a.output;
+    }
+}
+
 TEST_F(ViewerXvfb, PanelSplitViewAndCountViewsRun) {
     CliRun r = view("--size 160x120 --frames 4 --split bsdf --view bounces --screenshot " + path("view.png") +
                     " --screenshot-window " + path("window.png"));
@@ -109,6 +160,36 @@ TEST_F(ViewerXvfb, PanelSplitViewAndCountViewsRun) {
     EXPECT_EQ(window.height, 120);
     Rgb8Image image = readPng(path("view.png"));
     EXPECT_EQ(image.width, 160);
+}
+
+// Issue 17: the panel covered about 40 % of an 800x600 window. Its default layout (essentials open, the
+// rest collapsed, a narrower width) must leave most of the picture visible. The panel's rectangle is
+// where the window capture differs from one without the panel (the same samples: --spp 1).
+TEST_F(ViewerXvfb, PanelCoversLittleOfTheWindowByDefault) {
+    const std::string args = "--size 800x600 --spp 1 --frames 3 --screenshot-window ";
+    CliRun a = view(args + path("ui.png"));
+    ASSERT_EQ(a.exitCode, 0) << a.output;
+    CliRun b = view(args + path("no-ui.png") + " --no-ui");
+    ASSERT_EQ(b.exitCode, 0) << b.output;
+    Rgb8Image ui = readPng(path("ui.png")), bare = readPng(path("no-ui.png"));
+    ASSERT_EQ(ui.width, 800);
+    ASSERT_EQ(ui.height, 600);
+    ASSERT_EQ(bare.rgb.size(), ui.rgb.size());
+
+    int x0 = ui.width, y0 = ui.height, x1 = -1, y1 = -1;
+    for (int y = 0; y < ui.height; ++y)
+        for (int x = 0; x < ui.width; ++x) {
+            size_t i = (size_t(y) * size_t(ui.width) + size_t(x)) * 3;
+            if (std::equal(&ui.rgb[i], &ui.rgb[i] + 3, &bare.rgb[i])) continue;
+            x0 = std::min(x0, x), y0 = std::min(y0, y), x1 = std::max(x1, x), y1 = std::max(y1, y);
+        }
+    ASSERT_GE(x1, 0) << "no panel in the capture";
+    int width = x1 - x0 + 1, height = y1 - y0 + 1;
+    double share = double(width) * double(height) / (800.0 * 600.0);
+    EXPECT_LE(share, 0.30) << "panel at " << x0 << "," << y0 << ", " << width << "x" << height;
+    // Still a panel one can read: its statistics and the main settings.
+    EXPECT_GE(width, 200);
+    EXPECT_GE(height, 200);
 }
 
 TEST_F(ViewerXvfb, WithoutADisplayNamesTheWaysOut) {

@@ -5,46 +5,67 @@
 #include <string>
 #include <vector>
 
-#include "app/args.h"
 #include "core/error.h"
-#include "gpu/layout.h"
 #include "image/image.h"
 #include "native/native_path.h"
-#include "scene/builtin_scene.h"
-#include "scene/load.h"
+#include "pack/layout.h"
+#include "request/render_request.h"
 
 namespace {
 
-const char* kUsage =
-    "usage: fragpath_native [SCENE] [--size WxH] [--spp N] [--max-depth D] [--seed S] [-o FILE]\n"
-    "\n"
-    "A single-threaded scalar C++ path tracer of the same algorithm as fragpath's default integrator\n"
-    "(next-event estimation with MIS, Lambertian surfaces only), on the same BVH. SCENE defaults to the\n"
-    "built-in Cornell box; size 512x512, 1 spp, depth 5, seed 0. Prints paths per CPU-second; -o writes\n"
-    "the mean image (.pfm, .exr or .png).\n";
+// One final image, as `fragpath render` makes, but 1 spp unless asked: the reference is slow.
+constexpr unsigned kNativeOptions = fp::kSizeOption | fp::kSppOption | fp::kPathOptions | fp::kCameraOptions;
+
+fp::FrontEndDefaults nativeDefaults() {
+    fp::FrontEndDefaults d;
+    d.spp = 1;
+    d.sceneSpp = false;
+    return d;
+}
+
+std::vector<fp::OptionGroup> nativeOptions() {
+    std::vector<fp::OptionGroup> groups = {
+        {"Output", {{"--output", "-o", "FILE", "write the mean image (.pfm, .exr or .png)"}}}};
+    for (fp::OptionGroup& g : fp::requestOptionGroups(kNativeOptions, nativeDefaults()))
+        groups.push_back(std::move(g));
+    groups.push_back(fp::helpOptions());
+    return groups;
+}
 
 int run(const std::vector<std::string>& argv) {
-    fp::Args args(argv, {"--size", "--spp", "--max-depth", "--seed", "-o"}, {"-h", "--help"});
-    if (args.has("-h") || args.has("--help")) {
-        std::fputs(kUsage, stdout);
+    fp::Args args(argv, nativeOptions());
+    if (args.wantsHelp()) {
+        std::fputs(
+            "usage: fragpath_native [SCENE] [options]\n"
+            "\n"
+            "A single-threaded scalar C++ path tracer of the same algorithm as fragpath's default "
+            "integrator\n"
+            "(next-event estimation with MIS, Lambertian surfaces only, independent random numbers), on the\n"
+            "same BVH. SCENE defaults to the built-in Cornell box. Prints paths per CPU-second.\n",
+            stdout);
+        std::fputs(fp::formatOptions(nativeOptions()).c_str(), stdout);
         return 0;
     }
-    if (args.positional().size() > 1) throw fp::Error("fragpath_native takes at most one scene file");
-    fp::Scene scene =
-        args.positional().empty() ? fp::builtinCornellBox() : fp::loadScene(args.positional()[0]);
+    const fp::RenderRequest request(args, nativeDefaults());
+    fp::Scene scene = request.loadScene();
+    const fp::RenderSettings render = request.settings(scene);
+    if (render.integrator != fp::Integrator::Nee)
+        throw fp::Error(std::string("the scene file asks for integrator ") +
+                        fp::integratorName(render.integrator) + "; fragpath_native implements only nee");
     fp::native::Settings settings;
-    if (auto s = args.size("--size")) settings.width = s->x, settings.height = s->y;
-    settings.spp = args.integer("--spp", 1, 1 << 20).value_or(1);
-    settings.maxDepth = args.integer("--max-depth", 0, 1000).value_or(5);
-    settings.seed = uint32_t(args.integer("--seed", 0, 1 << 30).value_or(0));
-    fp::Camera camera = scene.camera.value_or(fp::frameBounds(scene.bounds()));
+    settings.width = render.width;
+    settings.height = render.height;
+    settings.maxDepth = render.maxDepth;
+    settings.seed = render.seed;
+    settings.spp = request.spp(scene);
+    const fp::Camera camera = request.camera(scene);
 
     fp::native::Result r =
         fp::native::render(fp::native::buildScene(scene, fp::layout::bvhOptions()), camera, settings);
     std::printf("native: %dx%d %d spp depth %d: %.4g paths/cpu-s, %.4g rays/cpu-s (%.3f cpu s, one thread)\n",
                 settings.width, settings.height, settings.spp, settings.maxDepth, r.paths / r.cpuSeconds,
                 r.rays / r.cpuSeconds, r.cpuSeconds);
-    if (auto out = args.text("-o")) {
+    if (auto out = args.text("--output")) {
         fp::Image image(r.width, r.height);
         for (size_t i = 0; i < image.pixels.size(); ++i) image.pixels[i] = glm::vec3(r.sum[i]) / r.sum[i].w;
         fp::writeImage(*out, image);

@@ -1,4 +1,4 @@
-#include "app/bench_suite.h"
+#include "bench/bench_suite.h"
 
 #include <algorithm>
 #include <cstdio>
@@ -7,7 +7,7 @@
 #include <functional>
 #include <memory>
 
-#include "app/bench_native.h"
+#include "bench/bench_native.h"
 #include "core/error.h"
 #include "core/file.h"
 #include "gl/context.h"
@@ -222,7 +222,7 @@ int runSuite(const SuiteOptions& options) {
 
     BenchEnvironment environment = readBenchEnvironment();
     // One context for the whole suite: its creation is not part of any scene's first frame.
-    auto start = Clock::now();
+    auto start = SteadyClock::now();
     std::unique_ptr<GlContext> context = createOsMesaContext();
     double contextSeconds = secondsSince(start);
     environment.renderer = context->description();
@@ -242,7 +242,7 @@ int runSuite(const SuiteOptions& options) {
         if (s.name == "bunny") {
             // Whatever goes wrong fetching or reading it, the bunny is skipped with a note: it is the one
             // scene that depends on the network.
-            auto fetchStart = Clock::now();
+            auto fetchStart = SteadyClock::now();
             try {
                 std::string module = fetchBunny();
                 fetchSeconds = secondsSince(fetchStart);

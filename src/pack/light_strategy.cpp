@@ -1,4 +1,4 @@
-#include "gpu/light_strategy.h"
+#include "pack/light_strategy.h"
 
 #include <algorithm>
 #include <cmath>

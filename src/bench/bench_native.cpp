@@ -1,10 +1,10 @@
-#include "app/bench_native.h"
+#include "bench/bench_native.h"
 
 #include <cstdio>
 
 #include "core/error.h"
-#include "gpu/layout.h"
 #include "native/native_path.h"
+#include "pack/layout.h"
 
 namespace fp::bench {
 
@@ -25,16 +25,17 @@ NativeMeasurement measureNative(const std::function<Scene()>& load, const BenchS
     Scene scene = load();
     native::Scene prepared;
     try {
-        prepared = native::buildScene(scene, layout::bvhOptions());
+        prepared = native::buildScene(scene, settings.bvh);
     } catch (const Error& e) {
         m.skipped = e.what();
         return m;
     }
-    Camera camera = scene.camera.value_or(frameBounds(scene.bounds()));
+    const Camera camera = settings.cameraFor(scene);
+    const RenderSettings render = settings.renderFor(scene);
     native::Settings s;
-    s.width = settings.render.width;
-    s.height = settings.render.height;
-    s.maxDepth = settings.render.maxDepth;
+    s.width = render.width;
+    s.height = render.height;
+    s.maxDepth = render.maxDepth;
     s.spp = spp;
     for (int i = 0; i <= settings.runs; ++i) {  // run 0 warms the caches and is not counted
         s.seed = uint32_t(i);

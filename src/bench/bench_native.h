@@ -9,7 +9,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "app/bench_measure.h"
+#include "bench/bench_measure.h"
 
 namespace fp::bench {
 

@@ -1,4 +1,4 @@
-// The packed GPU layout (src/gpu/layout.h) read back on the CPU: every triangle reachable exactly
+// The packed GPU layout (src/pack/layout.h) read back on the CPU: every triangle reachable exactly
 // once through the node links, boxes that contain what they point to, and a light CDF that ends at 1.
 #include <gtest/gtest.h>
 
@@ -6,8 +6,8 @@
 #include <random>
 
 #include "core/error.h"
-#include "gpu/layout.h"
-#include "gpu/pack.h"
+#include "pack/layout.h"
+#include "pack/pack.h"
 #include "scene/light_selection.h"
 
 namespace fp {

@@ -2,7 +2,6 @@
 // The measurement behind `fragpath bench`, shared by the single-scene bench and the suite, so that a
 // figure means the same in both: one renderer per scene, time to first frame by stage, one untimed
 // warm-up run, then R timed runs (run i with seed i) reported as median, min and max.
-#include <chrono>
 #include <functional>
 #include <optional>
 #include <string>
@@ -10,23 +9,17 @@
 
 #include <nlohmann/json.hpp>
 
+#include "core/clock.h"
 #include "render/renderer.h"
-#include "render/settings.h"
+#include "request/render_request.h"
 #include "scene/scene.h"
+#include "settings/render_settings.h"
 
 namespace fp {
 
 class GlContext;
 
 namespace bench {
-
-using Clock = std::chrono::steady_clock;
-
-double secondsSince(Clock::time_point start);
-
-// User plus system time of every thread in the process. llvmpipe rasterises on threads of this process,
-// so this is the CPU the render cost, not just the CPU of the thread that waits in glFinish.
-double processCpuSeconds();
 
 struct Run {
     uint32_t seed = 0;
@@ -44,7 +37,7 @@ struct Run {
 struct Spread {
     double median = 0, min = 0, max = 0;
 };
-// Median, min and max of values (not empty).
+// Median, min and max of values (not empty: throws std::invalid_argument).
 Spread spread(std::vector<double> values);
 
 // One measured quantity of a run, with the names it has in the table and in the JSON.
@@ -59,8 +52,8 @@ const std::vector<Column>& columns();
 // The settings every scene of one command is measured with.
 struct BenchSettings {
     // The timed runs draw render.samplesPerPass samples per pass (bench's default: 8, which costs about
-    // 5 % less CPU per path than 1 on llvmpipe: BENCHMARKS.md); the warm-up, whose first pass is the
-    // first frame, always draws 1, as `fragpath render` does by default.
+    // 5 % less CPU per path than 1 on llvmpipe: docs/optimisation-log.md, entry 8); the warm-up, whose
+    // first pass is the first frame, always draws 1, as `fragpath render` does by default.
     RenderSettings render;
     int spp = 8;   // samples per pixel in each run
     int runs = 5;  // timed runs after the warm-up
@@ -68,14 +61,22 @@ struct BenchSettings {
     // Read the shaders from this directory instead of the ones built in (empty: built in), so that
     // shader variants can be compared run for run with one binary.
     std::string shaderDir;
+    // The command line's request: each scene is rendered with its flags over the scene file's defaults
+    // (request/render_request.h). Without one, `render` and the scene's camera as they are.
+    std::optional<RenderRequest> request;
+    bool independentSampler = false;  // --native without --sampler: the native reference's numbers
+
+    RenderSettings renderFor(const Scene& scene) const;
+    Camera cameraFor(const Scene& scene) const;
 };
 
 struct SceneMeasurement {
     std::string source;
+    RenderSettings render;  // what it was rendered with (BenchSettings::renderFor)
     SceneStats stats;
     // Stages of the first frame: load (or generate) the scene; build the BVH, pack and upload; compile
     // and link the GLSL; the first pass, which includes llvmpipe's JIT of the fragment shader.
-    Clock::time_point loadStart, firstPassEnd;
+    SteadyClock::time_point loadStart, firstPassEnd;
     double loadSeconds = 0, rendererSeconds = 0, compileSeconds = 0, firstPassSeconds = 0;
     Run warmUp;
     std::vector<Run> timed;

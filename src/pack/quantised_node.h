@@ -2,7 +2,7 @@
 // A 4-wide BVH node (bvh/wide_bvh.h) in 64 bytes, its children's boxes quantised to 8 bits per plane
 // on a grid local to the node (Ylitie, Karras & Laine 2017, "Efficient Incoherent Ray Traversal on GPUs
 // Through Compressed Wide BVHs", HPG, section 3.1), so that one node visit reads one cache line.
-// gpu/layout.h says where the texels go; this file says what they hold and how they are made. The
+// pack/layout.h says where the texels go; this file says what they hold and how they are made. The
 // native reference keeps exact boxes (native/native_scene.h says why).
 //
 //  texel  contents (4 uints each)

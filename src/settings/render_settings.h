@@ -23,7 +23,7 @@ const char* samplerName(Sampler sampler);
 
 // How next-event estimation samples a point on an emitter (glsl/common/lights.glsl): uniformly by area,
 // or uniformly in the solid angle the emitter subtends (Arvo 1995) where that is large; auto picks
-// solid angle for scenes with an emitter close to a surface it faces (gpu/light_strategy.h).
+// solid angle for scenes with an emitter close to a surface it faces (pack/light_strategy.h).
 enum class LightSampling { Auto, Area, SolidAngle };
 constexpr LightSampling kAllLightSamplings[] = {LightSampling::Auto, LightSampling::Area,
                                                 LightSampling::SolidAngle};
@@ -55,15 +55,20 @@ const char* viewName(View view);
 
 // Split view, for teaching: the right half of the image uses another integrator or depth, at the same
 // sample count, so that the difference in noise shows at a glance.
+// Bounces, as in pbrt: 0 shows only emitters seen directly, 1 adds direct lighting, ... The default of
+// every front end (request/render_request.h), the split view and the native reference.
+constexpr int kDefaultMaxDepth = 5;
+// Seeds are 31-bit so that every front end takes the same range (the study's reference uses seed + 1).
+constexpr uint32_t kMaxSeed = 2147483647u;
+
 struct SplitView {
     Integrator integrator = Integrator::Naive;
-    int maxDepth = 5;
+    int maxDepth = kDefaultMaxDepth;
 };
 
 struct RenderSettings {
     int width = 512, height = 512;
-    // Bounces, as in pbrt: 0 shows only emitters seen directly, 1 adds direct lighting, ...
-    int maxDepth = 5;
+    int maxDepth = kDefaultMaxDepth;
     uint32_t seed = 0;
     Integrator integrator = Integrator::Nee;
     Sampler sampler = Sampler::Sobol;

@@ -1,11 +1,11 @@
-#include "gpu/pack.h"
+#include "pack/pack.h"
 
 #include <algorithm>
 #include <string>
 
 #include "bvh/wide_bvh.h"
 #include "core/error.h"
-#include "gpu/layout.h"
+#include "pack/layout.h"
 #include "scene/light_selection.h"
 #include "scene/spectrum.h"
 
@@ -27,7 +27,7 @@ size_t PackedScene::geometryBytes() const {
 
 namespace {
 
-// Texture coordinates in leaf order, and every texture's texels with its table entry (gpu/layout.h).
+// Texture coordinates in leaf order, and every texture's texels with its table entry (pack/layout.h).
 void packTextures(const Scene& scene, const Bvh& bvh, PackedScene* out) {
     out->texcoords.reserve(bvh.primIndex.size() * layout::kTexcoordTexels);
     for (uint32_t prim : bvh.primIndex)

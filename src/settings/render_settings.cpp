@@ -1,4 +1,4 @@
-#include "render/settings.h"
+#include "settings/render_settings.h"
 
 #include "core/error.h"
 

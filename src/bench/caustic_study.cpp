@@ -1,10 +1,10 @@
-#include "app/caustic_study.h"
+#include "bench/caustic_study.h"
 
 #include <cmath>
 #include <cstdio>
 #include <memory>
 
-#include "app/bench_measure.h"
+#include "core/clock.h"
 #include "gl/context.h"
 #include "image/image_stats.h"
 #include "render/renderer.h"
@@ -66,12 +66,12 @@ int runCausticStudy(const CausticStudyOptions& options) {
             renderer.render(16);  // warm-up: shader JIT
             renderer.configure(studySettings(integrator, 7), *scene.camera);
             double cpuStart = processCpuSeconds(), cpu = 0.0;
-            auto wallStart = Clock::now();
+            auto wallStart = SteadyClock::now();
             while (cpu < options.budgetSeconds) {
                 renderer.render(16);
                 cpu = processCpuSeconds() - cpuStart;
             }
-            double wall = std::chrono::duration<double>(Clock::now() - wallStart).count();
+            double wall = secondsSince(wallStart);
             Accumulation acc = renderer.readback();
             Image mean = acc.mean();
             std::printf("  %-10s %8d %7.1f %7.1f %11.5f %18.5f %17.4g\n", integratorName(integrator),

@@ -1,14 +1,15 @@
 #pragma once
 // THE GPU SCENE LAYOUT: the one place that says what every texel of the scene's buffer textures holds.
-// The packer (gpu/pack.cpp) writes it; glsl/common/scene_data.glsl reads it through the defines that
-// layoutDefines() injects, so the two cannot drift apart.
+// The packer (pack/pack.cpp) writes it; glsl/common/scene_data.glsl reads it through the defines that
+// layoutDefines() (gpu/layout_defines.h) injects, so the two cannot drift apart.
 //
-// All buffers are GL_TEXTURE_BUFFERs (fastest way to read scene data on llvmpipe, see BENCHMARKS.md).
+// All buffers are GL_TEXTURE_BUFFERs (fastest way to read scene data on llvmpipe, see
+// docs/optimisation-log.md, "Traversal and layout" and entries 1-8).
 // Where the context has GL_ARB_shader_image_load_store, the trace shaders read the buffers and the
 // environment map that kImageUnits below lists with imageLoad, which llvmpipe generates inline, rather
-// than texelFetch, which is an out-of-line call for every format but RGBA8 (BENCHMARKS.md, entries 18
-// and 23); the texels are the same either way. That is every buffer but textureTexels, the one RGBA8
-// buffer, whose texelFetch llvmpipe already inlines.
+// than texelFetch, which is an out-of-line call for every format but RGBA8 (docs/optimisation-log.md,
+// entries 18 and 23); the texels are the same either way. That is every buffer but textureTexels, the
+// one RGBA8 buffer, whose texelFetch llvmpipe already inlines.
 // Triangles are stored in BVH leaf order; "triangle i" below means packed index i.
 //
 //  buffer        format     texels per item  contents
@@ -17,7 +18,7 @@
 //                                            light sampling picks this triangle (0 if not emissive).
 //                                            (RGB32F positions, 36 bytes, with the rest moved to the
 //                                            normals, rendered the same image 10 % slower on llvmpipe:
-//                                            BENCHMARKS.md, optimisation log.)
+//                                            docs/optimisation-log.md, entry 6.)
 //  normals       RGBA32F    3 per triangle   (n0.xyz, 0) (n1.xyz, 0) (n2.xyz, 0)  unit shading normals
 //  nodes         RGBA32UI   4 per node       the 4-wide BVH (bvh/wide_bvh.h), one node in 64 bytes, so one
 //                                            cache line (llvmpipe allocates buffers 64-byte aligned):
@@ -26,7 +27,7 @@
 //                                            the four children's boxes quantised to 8 bits per plane on
 //                                            a grid local to the node, child i in byte i of each plane's
 //                                            uint, rounded outwards so that each contains its exact box
-//                                            (Ylitie, Karras & Laine 2017; gpu/quantised_node.h has the
+//                                            (Ylitie, Karras & Laine 2017; pack/quantised_node.h has the
 //                                            details); then the four children's links, one uint each
 //                                            (encodeChild):
 //                                            bit 31 set: a leaf of triangles [first, first + count) with
@@ -39,7 +40,7 @@
 //                                            is about one node per 9 to 10 triangles, so positions + BVH
 //                                            come to about 48 + 7 = 55 bytes per triangle (54.0-55.5
 //                                            on cornell, sphere-100k and sphere-1m; the exact boxes of
-//                                            112-byte nodes took 57.8-61.1; BENCHMARKS.md, "Deep trees",
+//                                            112-byte nodes took 57.8-61.1; docs/optimisation-log.md,
 //                                            entry 21).
 //  materials     RGBA32F    5 per material   (Kd.rgb, type) (Ke.rgb, roughness) (Ks.rgb, ior) (Tf.rgb, B)
 //                                            (diffuse texture, 0, 0, 0)
@@ -69,14 +70,13 @@
 #include <cstdint>
 
 #include "bvh/bvh.h"
-#include "gl/shader_source.h"
-#include "gpu/quantised_node.h"
+#include "pack/quantised_node.h"
 
 namespace fp::layout {
 
 constexpr int kTriangleTexels = 3;
 constexpr int kNormalTexels = 3;
-// The nodes' texels: kNodeTexels and kNodeLinkTexel are in gpu/quantised_node.h.
+// The nodes' texels: kNodeTexels and kNodeLinkTexel are in pack/quantised_node.h.
 
 // A child link of nodes (see above).
 constexpr uint32_t kLeafBit = 1u << 31;
@@ -126,13 +126,11 @@ constexpr int kImageUnitsNeeded = [] {
     return highest + 1;
 }();
 
-// The layout's defines; with `images`, also SCENE_READS_IMAGES and the extension it needs.
-ShaderDefines layoutDefines(bool images = false);
-
 // The BVH build options the renderer uses with this layout: leaves of up to 8 triangles, and a node
 // visit priced at 3 triangle tests, so that the SAH builder makes leaves of about 4 triangles. On the
 // suite this brings positions + BVH from about 76 to about 60 bytes per triangle at the same speed
-// (BENCHMARKS.md, optimisation log). The native reference builds its tree with the same options.
-BvhBuildOptions bvhOptions();
+// (docs/optimisation-log.md, entry 7). The native reference builds its tree with the same options.
+// `threads` build it (0: every CPU); the tree is the same for any number.
+BvhBuildOptions bvhOptions(int threads = 0);
 
 }  // namespace fp::layout

@@ -1,4 +1,4 @@
-#include "app/args.h"
+#include "request/args.h"
 
 #include <cctype>
 #include <cmath>
@@ -9,30 +9,38 @@
 
 namespace fp {
 
-Args::Args(const std::vector<std::string>& argv, const std::set<std::string>& valued,
-           const std::set<std::string>& switches) {
+Args::Args(const std::vector<std::string>& argv, const std::vector<OptionGroup>& options) {
+    std::map<std::string, const Option*> known;  // by flag and by alias
+    for (const OptionGroup& group : options)
+        for (const Option& option : group.options) {
+            known[option.flag] = &option;
+            if (!option.alias.empty()) known[option.alias] = &option;
+        }
+    auto find = [&](const std::string& name) {
+        auto it = known.find(name);
+        if (it == known.end()) throw Error("unknown option " + name + " (see --help)");
+        return it->second;
+    };
     for (size_t i = 0; i < argv.size(); ++i) {
         const std::string& a = argv[i];
         size_t equals = a.find('=');
         if (a.rfind("--", 0) == 0 && equals != std::string::npos) {  // the GNU form, --option=value
-            std::string name = a.substr(0, equals);
-            if (switches.count(name)) throw Error("option " + name + " takes no value");
-            if (!valued.count(name)) throw Error("unknown option " + name + " (see --help)");
-            if (equals + 1 == a.size()) throw Error("option " + name + " needs a value");
-            values_[name] = a.substr(equals + 1);
-        } else if (a.size() > 1 && a[0] == '-') {
-            if (switches.count(a)) {
-                values_[a] = "";
-            } else if (valued.count(a)) {
-                // A value may be negative ("--eye -1,0,0") but is never another option.
-                bool nextIsOption = i + 1 < argv.size() && argv[i + 1].size() > 1 && argv[i + 1][0] == '-' &&
-                                    !std::isdigit(static_cast<unsigned char>(argv[i + 1][1])) &&
-                                    argv[i + 1][1] != '.';
-                if (i + 1 >= argv.size() || nextIsOption) throw Error("option " + a + " needs a value");
-                values_[a] = argv[++i];
-            } else {
-                throw Error("unknown option " + a + " (see --help)");
+            const Option* option = find(a.substr(0, equals));
+            if (option->value.empty()) throw Error("option " + option->flag + " takes no value");
+            if (equals + 1 == a.size()) throw Error("option " + option->flag + " needs a value");
+            values_[option->flag] = a.substr(equals + 1);
+        } else if (a.size() > 1 && a[0] == '-' && !std::isdigit(static_cast<unsigned char>(a[1]))) {
+            const Option* option = find(a);
+            if (option->value.empty()) {
+                values_[option->flag] = "";
+                continue;
             }
+            // A value may be negative ("--eye -1,0,0") but is never another option.
+            bool nextIsOption = i + 1 < argv.size() && argv[i + 1].size() > 1 && argv[i + 1][0] == '-' &&
+                                !std::isdigit(static_cast<unsigned char>(argv[i + 1][1])) &&
+                                argv[i + 1][1] != '.';
+            if (i + 1 >= argv.size() || nextIsOption) throw Error("option " + a + " needs a value");
+            values_[option->flag] = argv[++i];
         } else {
             positional_.push_back(a);
         }

@@ -1,10 +1,8 @@
-#include "app/bench_measure.h"
+#include "bench/bench_measure.h"
 
-#include <sys/resource.h>
 #include <unistd.h>
 
 #include <algorithm>
-#include <cctype>
 #include <cerrno>
 #include <cstdio>
 #include <cstdlib>
@@ -14,6 +12,8 @@
 
 #include "core/error.h"
 #include "core/log.h"
+#include "core/statistics.h"
+#include "core/text.h"
 
 namespace fp::bench {
 
@@ -28,8 +28,7 @@ std::optional<std::string> environment(const char* name) {
 // Mesa's boolean environment parsing: these values mean false, any other set value means true.
 bool mesaTrue(const std::optional<std::string>& value) {
     if (!value) return false;
-    std::string v = *value;
-    for (char& c : v) c = char(std::tolower(static_cast<unsigned char>(c)));
+    std::string v = toLowerAscii(*value);
     return !(v == "0" || v == "n" || v == "no" || v == "f" || v == "false");
 }
 
@@ -73,21 +72,9 @@ nlohmann::json runJson(const Run& run) {
 
 // The median rather than the mean, so one run disturbed by another process does not move the figure.
 Spread spread(std::vector<double> values) {
-    std::sort(values.begin(), values.end());
-    size_t n = values.size();
-    double median = n % 2 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
-    return {median, values.front(), values.back()};
-}
-
-double secondsSince(Clock::time_point start) {
-    return std::chrono::duration<double>(Clock::now() - start).count();
-}
-
-double processCpuSeconds() {
-    rusage usage{};
-    getrusage(RUSAGE_SELF, &usage);
-    auto seconds = [](const timeval& t) { return double(t.tv_sec) + 1e-6 * double(t.tv_usec); };
-    return seconds(usage.ru_utime) + seconds(usage.ru_stime);
+    double middle = median(values);  // throws for no values
+    auto [min, max] = std::minmax_element(values.begin(), values.end());
+    return {middle, *min, *max};
 }
 
 const std::vector<Column>& columns() {
@@ -117,28 +104,39 @@ Spread SceneMeasurement::summary(const std::string& key) const {
 }
 
 double SceneMeasurement::sceneFirstFrameSeconds() const {
-    return std::chrono::duration<double>(firstPassEnd - loadStart).count();
+    return secondsBetween(loadStart, firstPassEnd);
+}
+
+RenderSettings BenchSettings::renderFor(const Scene& scene) const {
+    RenderSettings r = request ? request->settings(scene) : render;
+    if (independentSampler) r.sampler = Sampler::Independent;
+    return r;
+}
+
+Camera BenchSettings::cameraFor(const Scene& scene) const {
+    return request ? request->camera(scene) : scene.camera.value_or(frameBounds(scene.bounds()));
 }
 
 SceneMeasurement measureScene(const std::function<Scene()>& load, const BenchSettings& settings) {
     SceneMeasurement m;
-    RenderSettings render = settings.render;
+    RenderSettings render;
     // The stages of the first frame, each timed on its own so a slow start can be attributed.
-    m.loadStart = Clock::now();
+    m.loadStart = SteadyClock::now();
     Camera camera;
     std::optional<Renderer> renderer;
     {
         // The scene lives only until the renderer has its GPU copy, so that the largest scenes do not
         // hold two copies through the runs.
         Scene scene = load();
-        camera = scene.camera.value_or(frameBounds(scene.bounds()));
+        render = m.render = settings.renderFor(scene);
+        camera = settings.cameraFor(scene);
         m.source = scene.source;
         m.loadSeconds = secondsSince(m.loadStart);
-        auto stage = Clock::now();
+        auto stage = SteadyClock::now();
         renderer.emplace(scene, ShaderLibrary(settings.shaderDir), settings.bvh);
         m.rendererSeconds = secondsSince(stage);  // BVH build, packing and upload
     }
-    auto stage = Clock::now();
+    auto stage = SteadyClock::now();
     render.seed = 0;
     renderer->configure(render, camera);
     m.compileSeconds = secondsSince(stage);  // GLSL compile and link; llvmpipe JITs at the first draw
@@ -146,15 +144,15 @@ SceneMeasurement measureScene(const std::function<Scene()>& load, const BenchSet
     // Run i has seed i: the warm-up is run 0, the timed runs 1..R, so no two runs trace the same paths.
     auto measure = [&](uint32_t seed, bool first) {
         render.seed = seed;
-        render.samplesPerPass = first ? 1 : settings.render.samplesPerPass;
+        render.samplesPerPass = first ? 1 : m.render.samplesPerPass;
         renderer->configure(render, camera);
         Run run;
         run.seed = seed;
-        auto wallStart = Clock::now();
+        auto wallStart = SteadyClock::now();
         double cpuStart = processCpuSeconds();
         bool firstPass = first;
         renderer->render(settings.spp, [&](int) {
-            if (firstPass) m.firstPassEnd = Clock::now();
+            if (firstPass) m.firstPassEnd = SteadyClock::now();
             firstPass = false;
             return true;
         });
@@ -165,10 +163,10 @@ SceneMeasurement measureScene(const std::function<Scene()>& load, const BenchSet
         run.paths = double(render.width) * render.height * renderer->samples();
         return run;
     };
-    auto firstPassStart = Clock::now();
+    auto firstPassStart = SteadyClock::now();
     // The warm-up's first pass ends the first frame: by then every pixel has one sample.
     m.warmUp = measure(0, true);
-    m.firstPassSeconds = std::chrono::duration<double>(m.firstPassEnd - firstPassStart).count();
+    m.firstPassSeconds = secondsBetween(firstPassStart, m.firstPassEnd);
 
     std::optional<MachineCpu> machineStart = machineCpu();
     double ownStart = processCpuSeconds();
@@ -177,7 +175,8 @@ SceneMeasurement measureScene(const std::function<Scene()>& load, const BenchSet
     double own = processCpuSeconds() - ownStart;
     if (machineStart && machineEnd && machineEnd->totalSeconds > machineStart->totalSeconds) {
         double others = machineEnd->busySeconds - machineStart->busySeconds - own;
-        // Clock ticks are coarser than getrusage, so a quiet machine can come out a little below 0.
+        // /proc/stat counts in clock ticks, coarser than the process's CPU clock, so a quiet machine can
+        // come out a little below 0.
         m.othersCpuShare = std::max(0.0, others / (machineEnd->totalSeconds - machineStart->totalSeconds));
     }
     m.stats = renderer->stats();

@@ -1,5 +1,5 @@
 #pragma once
-// Scene + BVH -> the texel arrays described in gpu/layout.h (CPU only; upload is in scene_textures.h).
+// Scene + BVH -> the texel arrays described in pack/layout.h (CPU only; upload is in scene_textures.h).
 #include <cstddef>
 #include <cstdint>
 #include <vector>
@@ -32,7 +32,7 @@ struct PackedScene {
 };
 
 // Throws fp::Error if the scene cannot be addressed by the layout (over 2^24 triangles or materials,
-// 2^31 texture texels, or a BVH node over 2^40 across: gpu/quantised_node.h).
+// 2^31 texture texels, or a BVH node over 2^40 across: pack/quantised_node.h).
 PackedScene packScene(const Scene& scene, const Bvh& bvh);
 
 }  // namespace fp

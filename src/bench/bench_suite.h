@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "app/bench_measure.h"
+#include "bench/bench_measure.h"
 
 namespace fp::bench {
 

@@ -1,4 +1,4 @@
-#include "gpu/quantised_node.h"
+#include "pack/quantised_node.h"
 
 #include <algorithm>
 #include <cmath>
@@ -6,7 +6,7 @@
 #include <string>
 
 #include "core/error.h"
-#include "gpu/layout.h"
+#include "pack/layout.h"
 
 namespace fp::layout {
 
@@ -84,7 +84,7 @@ double gridCost(const WideBvhNode& node, int axis, double margin, double p, doub
 // default grid starts at the box's corner, which leaves a flat child (a wall, a light) one step thick
 // wherever its plane falls; aligning puts the slack where it costs least. On the Cornell box the
 // default grid thickens the leaf of the ceiling and the light downwards past the light, so every
-// shadow ray would test it (BENCHMARKS.md, "Quantised nodes").
+// shadow ray would test it (docs/optimisation-log.md, entry 21).
 float gridOrigin(const WideBvhNode& node, int axis, double margin, double s, double lo, double hi) {
     float best = floatAtOrBelow(lo - margin);
     const double p0 = best;

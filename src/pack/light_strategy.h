@@ -1,5 +1,5 @@
 #pragma once
-// Which light sampling LightSampling::Auto chooses for a scene (render/settings.h).
+// Which light sampling LightSampling::Auto chooses for a scene (settings/render_settings.h).
 #include "bvh/bvh.h"
 #include "scene/scene.h"
 

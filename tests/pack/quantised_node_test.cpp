@@ -1,4 +1,4 @@
-// Quantised wide BVH nodes (src/gpu/quantised_node.h): every child's quantised box contains its exact
+// Quantised wide BVH nodes (src/pack/quantised_node.h): every child's quantised box contains its exact
 // box, is at most the margin plus one grid step larger per side, and empty slots are inverted boxes
 // with link 0.
 #include <gtest/gtest.h>
@@ -8,8 +8,8 @@
 #include <random>
 
 #include "core/error.h"
-#include "gpu/layout.h"
-#include "gpu/quantised_node.h"
+#include "pack/layout.h"
+#include "pack/quantised_node.h"
 
 namespace fp {
 namespace {

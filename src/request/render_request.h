@@ -1,0 +1,90 @@
+#pragma once
+// THE RENDER REQUEST: the one step that turns a command line, a scene file and the built-in defaults
+// into what a render needs: the scene, its camera and the render settings. Every front end (render,
+// view, study, bench, merge and fragpath_native) reads the options they share through it, so that a
+// flag means the same everywhere and each default is written once.
+//
+// Precedence, highest first: a flag; the scene file ("render" block, "camera"); the front end's own
+// default (FrontEndDefaults: a window, a sweep or a benchmark run is not one final image); the built-in
+// default (RenderSettings in settings/render_settings.h, Camera framing the scene in scene/scene.h).
+#include <optional>
+#include <string>
+
+#include <glm/glm.hpp>
+
+#include "image/image.h"
+#include "request/args.h"
+#include "scene/scene.h"
+#include "settings/render_settings.h"
+
+namespace fp {
+
+// The shared options, as bits: a front end takes the ones that mean something to it.
+enum RequestOption : unsigned {
+    kSizeOption = 1u << 0,        // --size WxH
+    kSppOption = 1u << 1,         // --spp N
+    kIntegratorOption = 1u << 2,  // --integrator NAME
+    kPathOptions = 1u << 3,       // --max-depth D, --seed S
+    kSamplingOptions = 1u << 4,   // --sampler, --light-sampling, --clamp-indirect, --samples-per-pass
+    kCameraOptions = 1u << 5,     // --eye, --target, --up, --fov
+    kViewOption = 1u << 6,        // --view NAME
+    kDisplayOptions = 1u << 7,    // --exposure, --tonemap
+    kShaderOptions = 1u << 8,     // --shader-dir, --bvh-threads
+    kBackendOption = 1u << 9,     // --backend NAME
+};
+constexpr unsigned kAllRequestOptions = (1u << 10) - 1;
+
+// Where a front end's defaults differ from one final render's.
+struct FrontEndDefaults {
+    glm::ivec2 size{512, 512};
+    bool sceneSize = true;  // a scene file's width and height apply (not to a window or a sweep)
+    int spp = 64;           // 0: no target (the viewer refines until stopped)
+    bool sceneSpp = true;   // a scene file's spp applies (not to a benchmark run)
+    int samplesPerPass = 1;
+    bool scene = true;  // the positional argument names the scene (merge's are the parts it merges)
+};
+
+// The shared options a front end takes, grouped for its --help ("Image", "Path tracing", ...), with
+// the defaults it applies.
+std::vector<OptionGroup> requestOptionGroups(unsigned options, const FrontEndDefaults& defaults = {});
+
+class RenderRequest {
+  public:
+    // Reads and checks every shared option in `args` (nothing is loaded yet, so a bad flag fails at
+    // once); `args` refused the options its front end does not take (requestOptionGroups).
+    explicit RenderRequest(const Args& args, const FrontEndDefaults& defaults = {});
+
+    // The scene named on the command line (its only positional argument), else the built-in Cornell box.
+    Scene loadScene() const;
+    const std::optional<std::string>& scenePath() const { return scenePath_; }
+
+    RenderSettings settings(const Scene& scene) const;
+    // Samples per pixel to reach; 0 for none.
+    int spp(const Scene& scene) const;
+    // Throws fp::Error when the flags make the scene's camera invalid.
+    Camera camera(const Scene& scene) const;
+
+    DisplaySettings display() const { return display_; }
+    const std::string& shaderDir() const { return shaderDir_; }
+    const std::string& backend() const { return backend_; }
+    int bvhThreads() const { return bvhThreads_; }  // 0: every CPU
+
+  private:
+    FrontEndDefaults defaults_;
+    std::optional<std::string> scenePath_;
+    std::optional<glm::ivec2> size_;
+    std::optional<int> spp_, maxDepth_, samplesPerPass_;
+    std::optional<uint32_t> seed_;
+    std::optional<Integrator> integrator_;
+    std::optional<Sampler> sampler_;
+    std::optional<LightSampling> lightSampling_;
+    std::optional<float> clampIndirect_;
+    std::optional<View> view_;
+    std::optional<glm::vec3> eye_, target_, up_;
+    std::optional<float> fov_;
+    DisplaySettings display_;
+    std::string shaderDir_, backend_ = "auto";
+    int bvhThreads_ = 0;
+};
+
+}  // namespace fp
