@@ -35,8 +35,8 @@ std::vector<OptionGroup> viewOptions() {
            "screenshots are of what is shown)"},
           {"--scale", "", "F", "accumulation size / window size, 0.0625 to 1 (default 1)"},
           {"--frames", "", "N",
-           "close after N frames (with --spp S: not before S samples per pixel) and\nprint the median frame "
-           "time and samples/s"},
+           "close after N frames (with --spp S: not before S samples per pixel; never in the middle of a "
+           "pass, so a screenshot holds whole passes) and print the median frame time and samples/s"},
           {"--screenshot", "", "FILE",
            "at exit, write the rendered image: .png as shown, .exr or .pfm linear"},
           {"--screenshot-window", "", "FILE", "at exit, write the whole window, panel included (.png)"},

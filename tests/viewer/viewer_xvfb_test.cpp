@@ -210,5 +210,30 @@ TEST_F(ViewerXvfb, BadFlagsFailBeforeOpeningAWindow) {
         EXPECT_NE(r.output.find(text), std::string::npos) << text;
 }
 
+// The viewer reads its settings through the render request (request/render_request.h) like every front
+// end: the scene file's max_depth 0 arrives in the renderer, and --max-depth overrides it. Each
+// screenshot (linear) must equal `fragpath render` of the bare OBJ given that depth by flag.
+TEST_F(ViewerXvfb, TakesTheSceneFilesDefaultsAndFlagsOverrideThem) {
+    const std::string obj = std::string(FP_SOURCE_DIR) + "/assets/cornell/cornell.obj";
+    const std::string scene =
+        write("scene.json", R"({"mesh": ")" + obj + R"(", "render": {"max_depth": 0, "seed": 5}})");
+    auto screenshot = [&](const std::string& flags) {
+        CliRun r = view(scene + " --size 32x32 --spp 2 --frames 1 --no-ui --screenshot " + path("v.pfm") +
+                        " " + flags);
+        EXPECT_EQ(r.exitCode, 0) << r.output;
+        return readImage(path("v.pfm"));
+    };
+    auto render = [&](int depth) {
+        CliRun r = test::runFragpath("render " + obj + " --size 32x32 --spp 2 --seed 5 --quiet --max-depth " +
+                                     std::to_string(depth) + " -o " + path("r.pfm"));
+        EXPECT_EQ(r.exitCode, 0) << r.output;
+        return readImage(path("r.pfm"));
+    };
+    Image fromFile = screenshot(""), flagged = screenshot("--max-depth 2");
+    EXPECT_EQ(fromFile.pixels, render(0).pixels);
+    EXPECT_EQ(flagged.pixels, render(2).pixels);
+    EXPECT_NE(fromFile.pixels, flagged.pixels);
+}
+
 }  // namespace
 }  // namespace fp

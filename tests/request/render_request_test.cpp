@@ -1,0 +1,152 @@
+// The render request's precedence, field by field: a flag, else the scene file, else the front end's
+// default, else the built-in one.
+#include <gtest/gtest.h>
+
+#include "core/error.h"
+#include "request/render_request.h"
+
+namespace fp {
+namespace {
+
+RenderRequest request(const std::vector<std::string>& argv, const FrontEndDefaults& defaults = {},
+                      unsigned options = kAllRequestOptions) {
+    return RenderRequest(Args(argv, requestOptionGroups(options, defaults)), defaults);
+}
+
+// A scene as a scene file leaves it: every default and a camera set, each unlike the built-in one.
+Scene sceneWithDefaults() {
+    Scene scene;
+    scene.triangles.push_back({});
+    scene.defaults.width = 320;
+    scene.defaults.height = 240;
+    scene.defaults.spp = 7;
+    scene.defaults.maxDepth = 2;
+    scene.defaults.seed = 9u;
+    scene.defaults.integrator = Integrator::Bsdf;
+    scene.defaults.sampler = Sampler::Independent;
+    scene.defaults.lightSampling = LightSampling::Area;
+    scene.defaults.clampIndirect = 3.0f;
+    Camera camera;
+    camera.eye = {0, 0, 5};
+    camera.fovY = 50.0f;
+    scene.camera = camera;
+    return scene;
+}
+
+TEST(RenderRequest, WithNothingGivenTheBuiltInDefaultsApply) {
+    const RenderSettings builtIn;
+    Scene bare;
+    bare.triangles.push_back({});
+    RenderSettings s = request({}).settings(bare);
+    EXPECT_EQ(s.width, 512);
+    EXPECT_EQ(s.maxDepth, kDefaultMaxDepth);
+    EXPECT_EQ(s.seed, builtIn.seed);
+    EXPECT_EQ(s.integrator, builtIn.integrator);
+    EXPECT_EQ(s.sampler, builtIn.sampler);
+    EXPECT_EQ(s.lightSampling, builtIn.lightSampling);
+    EXPECT_EQ(s.clampIndirect, builtIn.clampIndirect);
+    EXPECT_EQ(request({}).spp(bare), 64);
+}
+
+TEST(RenderRequest, TheSceneFileOverridesTheDefaults) {
+    Scene scene = sceneWithDefaults();
+    RenderRequest r = request({});
+    RenderSettings s = r.settings(scene);
+    EXPECT_EQ(s.width, 320);
+    EXPECT_EQ(s.height, 240);
+    EXPECT_EQ(s.maxDepth, 2);
+    EXPECT_EQ(s.seed, 9u);
+    EXPECT_EQ(s.integrator, Integrator::Bsdf);
+    EXPECT_EQ(s.sampler, Sampler::Independent);
+    EXPECT_EQ(s.lightSampling, LightSampling::Area);
+    EXPECT_EQ(s.clampIndirect, 3.0f);
+    EXPECT_EQ(r.spp(scene), 7);
+    EXPECT_EQ(r.camera(scene).eye, glm::vec3(0, 0, 5));
+    EXPECT_EQ(r.camera(scene).fovY, 50.0f);
+}
+
+TEST(RenderRequest, FlagsOverrideTheSceneFile) {
+    Scene scene = sceneWithDefaults();
+    RenderRequest r = request({"--size=64x32",
+                               "--spp",
+                               "3",
+                               "--max-depth",
+                               "4",
+                               "--seed",
+                               "11",
+                               "--integrator",
+                               "naive",
+                               "--sampler",
+                               "sobol",
+                               "--light-sampling",
+                               "solid-angle",
+                               "--clamp-indirect",
+                               "0",
+                               "--samples-per-pass",
+                               "4",
+                               "--view",
+                               "depth",
+                               "--eye",
+                               "1,2,3",
+                               "--fov",
+                               "30"});
+    RenderSettings s = r.settings(scene);
+    EXPECT_EQ(s.width, 64);
+    EXPECT_EQ(s.height, 32);
+    EXPECT_EQ(s.maxDepth, 4);
+    EXPECT_EQ(s.seed, 11u);
+    EXPECT_EQ(s.integrator, Integrator::Naive);
+    EXPECT_EQ(s.sampler, Sampler::Sobol);
+    EXPECT_EQ(s.lightSampling, LightSampling::SolidAngle);
+    EXPECT_EQ(s.clampIndirect, 0.0f);
+    EXPECT_EQ(s.samplesPerPass, 4);
+    EXPECT_EQ(s.view, View::Depth);
+    EXPECT_EQ(r.spp(scene), 3);
+    Camera c = r.camera(scene);
+    EXPECT_EQ(c.eye, glm::vec3(1, 2, 3));
+    EXPECT_EQ(c.target, glm::vec3(0));  // not given: the scene file's
+    EXPECT_EQ(c.fovY, 30.0f);
+}
+
+TEST(RenderRequest, AFrontEndCanKeepItsOwnSizeAndSpp) {
+    FrontEndDefaults window;
+    window.size = {800, 600};
+    window.sceneSize = false;
+    window.spp = 0;
+    window.sceneSpp = false;
+    Scene scene = sceneWithDefaults();
+    RenderRequest r = request({}, window);
+    EXPECT_EQ(r.settings(scene).width, 800);
+    EXPECT_EQ(r.settings(scene).height, 600);
+    EXPECT_EQ(r.spp(scene), 0);
+    EXPECT_EQ(r.settings(scene).maxDepth, 2);  // the rest of the scene file still applies
+    EXPECT_EQ(request({"--size", "100x50"}, window).settings(scene).width, 100);
+}
+
+TEST(RenderRequest, AFrontEndRefusesTheOptionsItDoesNotTake) {
+    EXPECT_THROW(request({"--backend", "egl"}, {}, kAllRequestOptions & ~kBackendOption), Error);
+    EXPECT_THROW(request({"--spp", "4"}, {}, kDisplayOptions), Error);
+    EXPECT_NO_THROW(request({"--exposure", "-1"}, {}, kDisplayOptions));
+}
+
+TEST(RenderRequest, BadValuesFailBeforeAnythingIsLoaded) {
+    EXPECT_THROW(request({"--integrator", "path"}), Error);
+    EXPECT_THROW(request({"--seed", "2147483648"}), Error);
+    EXPECT_THROW(request({"--clamp-indirect", "-1"}), Error);
+    EXPECT_THROW(request({"a.obj", "b.obj"}), Error);
+    EXPECT_EQ(request({"--seed", "2147483647"}).settings(Scene()).seed, kMaxSeed);
+    // A flag can break the scene file's camera: the request says so.
+    Scene scene = sceneWithDefaults();
+    EXPECT_THROW(request({"--eye", "0,0,0", "--target", "0,0,0"}).camera(scene), Error);
+}
+
+TEST(RenderRequest, TheSceneIsThePositionalArgumentUnlessTheFrontEndSaysOtherwise) {
+    EXPECT_EQ(request({"room.obj"}).scenePath(), std::optional<std::string>("room.obj"));
+    EXPECT_FALSE(request({}).scenePath());
+    FrontEndDefaults merge;
+    merge.scene = false;
+    EXPECT_FALSE(request({"a.exr", "b.exr"}, merge, kDisplayOptions).scenePath());
+}
+
+}  // namespace
+}  // namespace fp
