@@ -8,7 +8,7 @@
 
 uniform sampler2D uSum;          // (sum of radiance, samples)
 uniform sampler2D uSquares;      // (sum of squared radiance, dropped samples)
-uniform sampler2D uCounters;     // (rays, samples whose first hit was an emitter, 0, 0)
+uniform sampler2D uCounters;     // (rays, samples whose first hit was an emitter, first hits, 0)
 uniform sampler2D uNormalDepth;  // (sum of first-hit normals, sum of first-hit distances)
 uniform sampler2D uAlbedoSum;    // (sum of first-hit albedos, guide samples)
 uniform sampler2D uSplatSum;    // bdpt's light image (render/light_splat.h): (sum of contributions, rays)

@@ -6,8 +6,10 @@
 vec3 surfaceAlbedo(Surface s) { return s.material.diffuse; }
 
 // normalDepth: (shading normal, distance along the unit ray); albedo: (albedo, guide samples); a miss
-// adds zeros and one guide sample. emitterHits counts first hits on the emitting side of an emitter.
-void addFirstHitGuides(Ray ray, inout vec4 normalDepth, inout vec4 albedo, inout float emitterHits) {
+// adds zeros and one guide sample. emitterHits counts first hits on the emitting side of an emitter,
+// surfaceHits every first hit (the depth AOV averages the distances over those, src/render/aovs.h).
+void addFirstHitGuides(Ray ray, inout vec4 normalDepth, inout vec4 albedo, inout float emitterHits,
+                       inout float surfaceHits) {
     float rays = gRayCount;
     Hit hit;
     if (traceClosest(ray, hit)) {
@@ -15,6 +17,7 @@ void addFirstHitGuides(Ray ray, inout vec4 normalDepth, inout vec4 albedo, inout
         normalDepth += vec4(s.shadingNormal, hit.t);
         albedo.rgb += surfaceAlbedo(s);
         if (any(greaterThan(emittedRadiance(s), vec3(0.0)))) emitterHits += 1.0;
+        surfaceHits += 1.0;
     }
     albedo.a += 1.0;
     gRayCount = rays;

@@ -28,7 +28,7 @@ uniform sampler2D uPreviousAlbedo;
 // The attachments of src/render/render_targets.h, in order.
 layout(location = 0) out vec4 outSum;      // (sum of radiance, number of samples)
 layout(location = 1) out vec4 outSquares;  // (sum of squared radiance, number of non-finite samples dropped)
-layout(location = 2) out vec4 outCounters; // (rays traced, first hits on an emitter, 0, 0)
+layout(location = 2) out vec4 outCounters; // (rays traced, first hits on an emitter, first hits, 0)
 layout(location = 3) out vec4 outNormalDepth;  // guides (passes/guides.glsl): (sum of normals, sum of distances)
 layout(location = 4) out vec4 outAlbedo;       // (sum of albedos, guide samples)
 
@@ -58,7 +58,7 @@ void main() {
         vec3 c = debugView(ray);
 #endif
 #if GUIDES
-        addFirstHitGuides(ray, normalDepth, albedo, counters.y);
+        addFirstHitGuides(ray, normalDepth, albedo, counters.y, counters.z);
 #endif
         // A NaN or Inf sample would poison the pixel forever: count it, and add 0 instead.
         if (any(isnan(c)) || any(isinf(c))) {
@@ -70,7 +70,7 @@ void main() {
     }
     outSum = sum;
     outSquares = squares;
-    outCounters = vec4(gRayCount, counters.y, 0.0, 0.0);
+    outCounters = vec4(gRayCount, counters.y, counters.z, 0.0);
     outNormalDepth = normalDepth;
     outAlbedo = albedo;
 }

@@ -35,7 +35,8 @@ void printMergeUsage() {
         "and settings (their fingerprints must match) and hold disjoint sample ranges, as written by\n"
         "`fragpath render --sample-offset K --spp N -o part.exr`. The output's extension picks its format:\n"
         ".exr keeps the sample ranges (merge or --resume it again), .pfm the linear image, .png sRGB\n"
-        "(tone-mapped as --exposure and --tonemap say).\n",
+        "(tone-mapped as --exposure and --tonemap say). An .exr output keeps each AOV layer (render --aovs)\n"
+        "that every part has, averaged the same way.\n",
         stdout);
     std::fputs(formatOptions(mergeOptions()).c_str(), stdout);
 }

@@ -10,8 +10,10 @@
 
 #include "app/commands.h"
 #include "app/progress.h"
+#include "app/render_stats.h"
 #include "core/clock.h"
 #include "core/error.h"
+#include "core/file.h"
 #include "denoise/denoiser.h"
 #include "gl/context.h"
 #include "image/file_io.h"
@@ -29,21 +31,26 @@ std::vector<OptionGroup> renderOptions() {
     return commandOptions(
         {{"Output",
           {{"--output", "-o", "FILE",
-            "the image (default render.png): .png (sRGB, tone-mapped), .exr or .pfm\n"
-            "(linear radiance); always the raw samples"},
+            "the image (default render.png): .png (sRGB, tone-mapped), .exr or .pfm (linear radiance); "
+            "always the raw samples"},
            {"--denoise", "", "NAME",
-            "none | bilateral (joint bilateral filter) | atrous (edge-avoiding a-trous\nwavelets, "
+            "none | bilateral (joint bilateral filter) | atrous (edge-avoiding a-trous wavelets, "
             "variance-guided); needs --denoised-out"},
            {"--denoised-out", "", "FILE",
             "where the denoised image goes (.png, .exr or .pfm); needs --denoise"},
            {"--sample-offset", "", "K",
-            "render sample indices K, K+1, ... (one part of a render spread over\nmachines; combine the "
+            "render sample indices K, K+1, ... (one part of a render spread over machines; combine the "
             "parts' .exr files with `fragpath merge`)"},
            {"--time-budget", "", "T",
             "stop after the pass that uses up T (e.g. 90s, 5m, 1.5h); --spp is then a cap"},
            {"--resume", "", "FILE.exr",
             "continue a render saved as .exr (same scene and settings) up to --spp"},
+           {"--aovs", "", "LIST",
+            ".exr only: add first-hit layers, averaged over the samples, next to the beauty's R, G, B: "
+            "albedo (albedo.R/G/B), normal (normal.X/Y/Z: world space, facing the camera), depth (depth.Z: "
+            "distance along the camera ray, 0 for no hit); e.g. --aovs albedo,normal,depth"},
            {"--stats", "", "", "print scene, BVH, memory and timing statistics"},
+           {"--json", "", "FILE", "write those statistics to FILE as JSON (with or without --stats)"},
            {"--quiet", "", "", "no progress bar or summary line"}}}},
         kRenderOptions);
 }
@@ -91,6 +98,9 @@ int renderCommand(const std::vector<std::string>& argv) {
     const RenderRequest request(args);
     std::string output = args.text("--output").value_or("render.png");
     checkImageOutput(output, "output");
+    std::vector<Aov> aovs = parseAovOption(args.text("--aovs"), output);
+    std::optional<std::string> statsJson = args.text("--json");
+    if (statsJson) checkWritablePath(*statsJson, "--json");
     // -o always holds the raw samples (resumable, mergeable); a denoised image needs a name of its own,
     // so that no file silently holds something other than what its flag says.
     Denoiser denoiser = parseDenoiser(args.text("--denoise").value_or("none"));
@@ -119,7 +129,7 @@ int renderCommand(const std::vector<std::string>& argv) {
     Scene scene = request.loadScene();
     RenderSettings settings = request.settings(scene);
     settings.sampleOffset = sampleOffset;
-    settings.guides = denoiser != Denoiser::None;
+    settings.guides = denoiser != Denoiser::None || !aovs.empty();
     // With only a time budget, the budget decides when to stop.
     int spp = budget && !args.has("--spp") ? 1 << 24 : request.spp(scene);
     Camera camera = request.camera(scene);
@@ -168,8 +178,10 @@ int renderCommand(const std::vector<std::string>& argv) {
 
     Accumulation acc = renderer.readback();
     const int total = renderer.samples();
-    writeRenderOutput(output, {acc.mean(), {{settings.sampleOffset, uint64_t(total)}}, fingerprint}, display,
-                      settings.view);
+    writeRenderOutput(
+        output,
+        {acc.mean(), {{settings.sampleOffset, uint64_t(total)}}, fingerprint, outputAovs(acc, aovs, resumed)},
+        display, settings.view);
     if (denoisedOutput) writeImage(*denoisedOutput, denoise(renderer, denoiser), display);
 
     int done = total - already;
@@ -179,35 +191,11 @@ int renderCommand(const std::vector<std::string>& argv) {
                      output.c_str(), done, settings.width, settings.height,
                      integratorName(settings.integrator), settings.maxDepth, seconds, paths / seconds,
                      acc.raysTraced() / seconds);
-    if (showStats) {
-        const SceneStats& s = renderer.stats();
-        std::printf("renderer         %s\n", context->description().c_str());
-        std::printf("scene            %s\n", scene.source.c_str());
-        std::printf("triangles        %u (%u emissive)\n", s.triangles, s.emitters);
-        std::printf(
-            "bvh              %u nodes, %u leaves, depth %u, leaf size %u..%u (mean %.2f), SAH cost %.2f\n",
-            s.bvh.nodeCount, s.bvh.leafCount, s.bvh.maxDepth, s.bvh.minLeafSize, s.bvh.maxLeafSize,
-            s.bvh.meanLeafSize, s.bvh.sahCost);
-        std::printf("bvh build        %.3f s, %.3f CPU-s, threads %d (%.3g triangles/s)\n", s.bvhBuildSeconds,
-                    s.bvhBuildCpuSeconds, s.bvhBuildThreads,
-                    s.bvhBuildSeconds > 0 ? s.triangles / s.bvhBuildSeconds : 0.0);
-        std::printf(
-            "gpu memory       %zu bytes (%.1f per triangle; positions + BVH %.1f per triangle; "
-            "textures %zu bytes)\n",
-            s.gpuBytes, double(s.gpuBytes) / s.triangles, double(s.gpuGeometryBytes) / s.triangles,
-            s.gpuTextureBytes);
-        std::printf("scene reads      %s\n", sceneReadsName(s.sceneReads));
-        std::printf("image buffers    %zu bytes (%.0f per pixel: accumulation%s)\n", renderer.imageBytes(),
-                    double(renderer.imageBytes()) / (double(settings.width) * settings.height),
-                    settings.integrator == Integrator::Bdpt ? " and bdpt's light image" : "");
-        std::printf("first frame      %.3f s after start (load, build, upload, shader compile, first pass)\n",
-                    firstFrameSeconds);
-        std::printf("samples          %d per pixel, %.0f paths, %.0f rays (%.2f rays per path)\n", done,
-                    paths, acc.raysTraced(), acc.raysTraced() / paths);
-        std::printf("throughput       %.3g paths/s, %.3g rays/s, %.3g paths per CPU-second\n",
-                    paths / seconds, acc.raysTraced() / seconds, paths / cpuSeconds);
-        std::printf("dropped samples  %llu (NaN or Inf, replaced by 0)\n",
-                    (unsigned long long)acc.droppedSamples());
+    if (showStats || statsJson) {
+        RenderStats stats = collectRenderStats(renderer, acc, context->description(), scene.source, output,
+                                               {done, firstFrameSeconds, seconds, cpuSeconds});
+        if (showStats) std::fputs(formatRenderStats(stats).c_str(), stdout);
+        if (statsJson) writeRenderStatsJson(*statsJson, stats);
     }
     if (interrupted.load()) {
         std::fprintf(stderr, "fragpath: interrupted after %d of %d spp; %s holds those samples\n", total, spp,

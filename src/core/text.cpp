@@ -1,6 +1,8 @@
 #include "core/text.h"
 
 #include <algorithm>
+#include <cstdarg>
+#include <cstdio>
 #include <filesystem>
 
 #include "core/error.h"
@@ -15,6 +17,19 @@ std::string toLowerAscii(std::string text) {
 
 std::string lowerCaseExtension(const std::string& path) {
     return toLowerAscii(std::filesystem::path(path).extension().string());
+}
+
+std::string formatText(const char* format, ...) {
+    va_list args, again;
+    va_start(args, format);
+    va_copy(again, args);
+    const int size = std::vsnprintf(nullptr, 0, format, args);
+    va_end(args);
+    std::string text(size_t(std::max(size, 0)) + 1, '\0');  // room for vsnprintf's NUL
+    std::vsnprintf(text.data(), text.size(), format, again);
+    va_end(again);
+    text.resize(size_t(std::max(size, 0)));
+    return text;
 }
 
 std::vector<std::string> splitNameList(const std::string& text, const std::string& flag) {

@@ -15,6 +15,9 @@ std::string toLowerAscii(std::string text);
 // "out/Render.PFM" -> ".pfm"; "" if there is none.
 std::string lowerCaseExtension(const std::string& path);
 
+// printf into a std::string, of any length: formatText("%d spp", 16) -> "16 spp".
+std::string formatText(const char* format, ...) __attribute__((format(printf, 1, 2)));
+
 // A comma-separated list of names on the command line: "a,b,c" -> {"a", "b", "c"}. Throws fp::Error
 // naming `flag` for an empty entry ("a,,b", "", "a,") or a repeated one.
 std::vector<std::string> splitNameList(const std::string& text, const std::string& flag);

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cstdlib>
 #include <cstring>
+#include <map>
 #include <set>
 
 #include "core/error.h"
@@ -57,6 +58,29 @@ void checkAttributes(const ExrAttributes& attributes) {
     }
 }
 
+void checkLayers(const Image& image, const std::vector<ExrLayer>& layers) {
+    std::set<std::string> seen = {"R", "G", "B"};
+    for (const ExrLayer& layer : layers) {
+        const std::string what = "EXR layer '" + layer.name + "'";
+        if (layer.name.empty() || layer.name.find('.') != std::string::npos)
+            throw Error("invalid " + what + " (a name without '.')");
+        if (layer.channels.empty() || layer.channels.size() > 3)
+            throw Error(what + " needs 1 to 3 channels, has " + std::to_string(layer.channels.size()));
+        if (layer.image.width != image.width || layer.image.height != image.height ||
+            layer.image.pixels.size() != image.pixels.size())
+            throw Error(what + " is " + std::to_string(layer.image.width) + "x" +
+                        std::to_string(layer.image.height) + ", not the image's " +
+                        std::to_string(image.width) + "x" + std::to_string(image.height));
+        for (const std::string& channel : layer.channels) {
+            const std::string name = layer.name + "." + channel;
+            if (channel.empty() || channel.find('.') != std::string::npos ||
+                name.find('\0') != std::string::npos || name.size() > 255)
+                throw Error("invalid EXR channel name '" + name + "' (1 to 255 bytes, no NUL)");
+            if (!seen.insert(name).second) throw Error("duplicate EXR channel '" + name + "'");
+        }
+    }
+}
+
 // Owns what tinyexr allocates while reading, so every error path below releases it.
 struct ParsedExr {
     EXRHeader header;
@@ -94,43 +118,92 @@ float channelValue(const EXRImage& image, const EXRHeader& header, int channel, 
     return value;
 }
 
+// Where `channel` stands in the conventional order of the family it belongs to (R, G, B or X, Y, Z),
+// or -1.
+int conventionalRank(const std::string& family, const std::string& channel) {
+    size_t at = channel.size() == 1 ? family.find(channel[0]) : std::string::npos;
+    return at == std::string::npos ? -1 : int(at);
+}
+
+// The "<layer>.<channel>" channels of a loaded file, grouped by layer (the text before the last '.').
+void readLayers(const ParsedExr& exr, std::vector<ExrLayer>& layers) {
+    std::map<std::string, std::vector<std::pair<std::string, int>>> groups;  // layer -> (channel, index)
+    for (int c = 0; c < exr.header.num_channels; ++c) {
+        const std::string full = exr.header.channels[c].name;
+        const size_t dot = full.rfind('.');
+        if (dot == std::string::npos || dot == 0 || dot + 1 == full.size()) continue;
+        groups[full.substr(0, dot)].emplace_back(full.substr(dot + 1), c);
+    }
+    layers.clear();
+    for (auto& [layerName, channels] : groups) {
+        if (channels.size() > 3) continue;
+        for (const char* family : {"RGB", "XYZ"}) {
+            bool all = std::all_of(channels.begin(), channels.end(),
+                                   [&](const auto& c) { return conventionalRank(family, c.first) >= 0; });
+            if (all)
+                std::stable_sort(channels.begin(), channels.end(), [&](const auto& a, const auto& b) {
+                    return conventionalRank(family, a.first) < conventionalRank(family, b.first);
+                });
+        }
+        ExrLayer layer{layerName, {}, Image(exr.image.width, exr.image.height)};
+        for (size_t k = 0; k < channels.size(); ++k) {
+            layer.channels.push_back(channels[k].first);
+            for (size_t i = 0; i < layer.image.pixels.size(); ++i)
+                layer.image.pixels[i][int(k)] = channelValue(exr.image, exr.header, channels[k].second, i);
+        }
+        layers.push_back(std::move(layer));
+    }
+}
+
 }  // namespace
 
-std::vector<std::uint8_t> encodeExr(const Image& image, const ExrAttributes& attributes) {
+std::vector<std::uint8_t> encodeExr(const Image& image, const ExrAttributes& attributes,
+                                    const std::vector<ExrLayer>& layers) {
     checkImageShape(image, "cannot encode EXR");
     checkAttributes(attributes);
+    checkLayers(image, layers);
 
-    // OpenEXR readers expect channels sorted by name, hence B, G, R.
-    const char* names[3] = {"B", "G", "R"};
-    std::vector<float> planes[3];
-    for (int c = 0; c < 3; ++c) {
-        const int component = 2 - c;
+    // Every channel as (full name, image, component); OpenEXR readers expect them sorted by name
+    // (byte order, as strcmp), hence B, G, R, then the layers' channels.
+    struct Channel {
+        std::string name;
+        const Image* image;
+        int component;
+    };
+    std::vector<Channel> list = {{"R", &image, 0}, {"G", &image, 1}, {"B", &image, 2}};
+    for (const ExrLayer& layer : layers)
+        for (size_t c = 0; c < layer.channels.size(); ++c)
+            list.push_back({layer.name + "." + layer.channels[c], &layer.image, int(c)});
+    std::sort(list.begin(), list.end(), [](const Channel& a, const Channel& b) { return a.name < b.name; });
+
+    const size_t count = list.size();
+    std::vector<std::vector<float>> planes(count);
+    std::vector<unsigned char*> planePointers(count);
+    std::vector<EXRChannelInfo> channels(count);
+    std::vector<int> pixelTypes(count, TINYEXR_PIXELTYPE_FLOAT);      // type of the data we hand over
+    std::vector<int> requestedTypes(count, TINYEXR_PIXELTYPE_FLOAT);  // stored in the file: no HALF rounding
+    bool longNames = false;
+    for (size_t c = 0; c < count; ++c) {
+        const Channel& channel = list[c];
         planes[c].resize(image.pixels.size());
-        for (size_t i = 0; i < image.pixels.size(); ++i) planes[c][i] = image.pixels[i][component];
+        for (size_t i = 0; i < image.pixels.size(); ++i)
+            planes[c][i] = channel.image->pixels[i][channel.component];
+        planePointers[c] = reinterpret_cast<unsigned char*>(planes[c].data());
+        std::memset(&channels[c], 0, sizeof channels[c]);
+        std::strcpy(channels[c].name, channel.name.c_str());  // checkLayers keeps names under 256 bytes
+        // Names over 31 bytes need the "long names" flag in the version field (OpenEXR file layout).
+        longNames = longNames || channel.name.size() > 31;
     }
-    unsigned char* planePointers[3] = {reinterpret_cast<unsigned char*>(planes[0].data()),
-                                       reinterpret_cast<unsigned char*>(planes[1].data()),
-                                       reinterpret_cast<unsigned char*>(planes[2].data())};
 
     EXRImage exrImage;
     InitEXRImage(&exrImage);
-    exrImage.images = planePointers;
+    exrImage.images = planePointers.data();
     exrImage.width = image.width;
     exrImage.height = image.height;
-    exrImage.num_channels = 3;
-
-    EXRChannelInfo channels[3];
-    int pixelTypes[3], requestedTypes[3];
-    for (int c = 0; c < 3; ++c) {
-        std::memset(&channels[c], 0, sizeof channels[c]);
-        std::strcpy(channels[c].name, names[c]);
-        pixelTypes[c] = TINYEXR_PIXELTYPE_FLOAT;      // type of the data we hand over
-        requestedTypes[c] = TINYEXR_PIXELTYPE_FLOAT;  // type stored in the file: no HALF rounding
-    }
+    exrImage.num_channels = int(count);
 
     // tinyexr copies attribute bytes while serialising, so they can point into `attributes`.
     std::vector<EXRAttribute> custom(attributes.size());
-    bool longNames = false;
     for (size_t i = 0; i < attributes.size(); ++i) {
         std::memset(&custom[i], 0, sizeof custom[i]);
         std::strcpy(custom[i].name, attributes[i].first.c_str());
@@ -143,10 +216,10 @@ std::vector<std::uint8_t> encodeExr(const Image& image, const ExrAttributes& att
 
     EXRHeader header;
     InitEXRHeader(&header);
-    header.num_channels = 3;
-    header.channels = channels;
-    header.pixel_types = pixelTypes;
-    header.requested_pixel_types = requestedTypes;
+    header.num_channels = int(count);
+    header.channels = channels.data();
+    header.pixel_types = pixelTypes.data();
+    header.requested_pixel_types = requestedTypes.data();
     header.compression_type = TINYEXR_COMPRESSIONTYPE_ZIP;  // lossless
     header.num_custom_attributes = static_cast<int>(custom.size());
     header.custom_attributes = custom.empty() ? nullptr : custom.data();
@@ -164,7 +237,8 @@ std::vector<std::uint8_t> encodeExr(const Image& image, const ExrAttributes& att
     return bytes;
 }
 
-Image decodeExr(const std::vector<std::uint8_t>& bytes, const std::string& name, ExrAttributes* attributes) {
+Image decodeExr(const std::vector<std::uint8_t>& bytes, const std::string& name, ExrAttributes* attributes,
+                std::vector<ExrLayer>* layers) {
     const std::string context = "cannot read EXR '" + name + "': ";
     EXRVersion version;
     int code = ParseEXRVersionFromMemory(&version, bytes.data(), bytes.size());
@@ -213,6 +287,7 @@ Image decodeExr(const std::vector<std::uint8_t>& bytes, const std::string& name,
                            channelValue(exr.image, exr.header, b, i)};
     }
 
+    if (layers) readLayers(exr, *layers);
     if (attributes) {
         attributes->clear();
         for (int i = 0; i < exr.header.num_custom_attributes; ++i) {
@@ -230,20 +305,21 @@ Image decodeExr(const std::vector<std::uint8_t>& bytes, const std::string& name,
     return image;
 }
 
-void writeExr(const std::string& path, const Image& image, const ExrAttributes& attributes) {
+void writeExr(const std::string& path, const Image& image, const ExrAttributes& attributes,
+              const std::vector<ExrLayer>& layers) {
     checkImageShape(image, "cannot write '" + path + "'");
     std::vector<std::uint8_t> bytes;
     try {
-        bytes = encodeExr(image, attributes);
+        bytes = encodeExr(image, attributes, layers);
     } catch (const Error& e) {
         throw Error("cannot write '" + path + "': " + e.what());
     }
     writeFileAtomically(path, bytes);
 }
 
-Image readExr(const std::string& path, ExrAttributes* attributes) {
+Image readExr(const std::string& path, ExrAttributes* attributes, std::vector<ExrLayer>* layers) {
     const std::string bytes = readFileBytes(path);
-    return decodeExr(std::vector<std::uint8_t>(bytes.begin(), bytes.end()), path, attributes);
+    return decodeExr(std::vector<std::uint8_t>(bytes.begin(), bytes.end()), path, attributes, layers);
 }
 
 }  // namespace fp

@@ -12,7 +12,8 @@ namespace fp {
 struct Accumulation {
     int width = 0, height = 0;
     // Per pixel, rows top to bottom: (sum of radiance, samples), (sum of squares, dropped samples) and
-    // (rays traced, samples whose camera ray hit an emitter first, 0, 0); then the first-hit guides of
+    // (rays traced, samples whose camera ray hit an emitter first, samples whose camera ray hit anything,
+    // 0), the last two counted with the guides only; then the first-hit guides of
     // the denoisers, summed over the samples: (shading normal, distance) and (albedo, guide samples).
     // A miss adds zeros (and 1 guide sample).
     std::vector<glm::vec4> sum, squares, counters, normalDepth, albedo;

@@ -101,10 +101,13 @@ std::string renderFingerprint(const Scene& scene, const RenderSettings& settings
 }
 
 void writePartial(const std::string& path, const PartialRender& partial) {
+    std::vector<ExrLayer> layers;
+    for (const AovImage& aov : partial.aovs) layers.push_back(toExrLayer(aov));
     writeExr(path, partial.mean,
              {{kRanges, formatRanges(partial.ranges)},
               {kSamples, std::to_string(partial.samples())},
-              {kFingerprint, partial.fingerprint}});
+              {kFingerprint, partial.fingerprint}},
+             layers);
 }
 
 void writeRenderOutput(const std::string& path, const PartialRender& partial, const DisplaySettings& display,
@@ -117,8 +120,10 @@ void writeRenderOutput(const std::string& path, const PartialRender& partial, co
 
 PartialRender readPartial(const std::string& path) {
     ExrAttributes attributes;
+    std::vector<ExrLayer> layers;
     PartialRender partial;
-    partial.mean = readExr(path, &attributes);
+    partial.mean = readExr(path, &attributes, &layers);
+    partial.aovs = aovsFromExrLayers(layers);
     std::string ranges;
     for (const auto& [key, value] : attributes) {
         if (key == kRanges) ranges = value;
@@ -163,6 +168,35 @@ PartialRender mergePartials(const std::vector<PartialRender>& parts, const std::
     out.ranges = joined;
     double total = double(out.samples());
     for (size_t k = 0; k < sums.size(); ++k) out.mean.pixels[k] = glm::vec3(sums[k] / total);
+    std::vector<AovPart> aovParts;
+    for (const PartialRender& p : parts) aovParts.push_back({&p.aovs, {double(p.samples())}});
+    for (const AovImage& aov : parts[0].aovs) {
+        bool everyPart = std::all_of(parts.begin(), parts.end(), [&](const PartialRender& p) {
+            return std::any_of(p.aovs.begin(), p.aovs.end(),
+                               [&](const AovImage& a) { return a.aov == aov.aov; });
+        });
+        if (!everyPart) continue;
+        if (std::optional<AovImage> merged = combineAov(aov.aov, aovParts))
+            out.aovs.push_back(std::move(*merged));
+    }
+    return out;
+}
+
+std::vector<AovImage> outputAovs(const Accumulation& acc, const std::vector<Aov>& aovs,
+                                 const std::optional<PartialRender>& resumed) {
+    const std::vector<AovImage> now = aovImages(acc, aovs);
+    AovPart rendered{&now, std::vector<double>(acc.albedo.size())};
+    for (size_t i = 0; i < acc.albedo.size(); ++i) rendered.samples[i] = acc.albedo[i].a;  // guide samples
+    std::vector<AovPart> parts = {rendered};
+    if (resumed) parts.push_back({&resumed->aovs, {double(resumed->samples())}});
+    std::vector<AovImage> out;
+    for (Aov aov : aovs) {
+        std::optional<AovImage> combined = combineAov(aov, parts);
+        if (!combined)
+            throw Error(std::string("no samples for the ") + aovName(aov) +
+                        " AOV: the resumed render has no such layer and no samples were rendered now");
+        out.push_back(std::move(*combined));
+    }
     return out;
 }
 

@@ -2,9 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdarg>
 #include <cstdio>
 
+#include "core/text.h"
 #include "study/feasibility.h"
 #include "study/flop_model.h"
 #include "study/metrics.h"
@@ -26,15 +26,6 @@ const char* const kThresholdRationale =
 
 namespace {
 
-std::string format(const char* fmt, ...) {
-    char text[4096];
-    va_list args;
-    va_start(args, fmt);
-    std::vsnprintf(text, sizeof text, fmt, args);
-    va_end(args);
-    return text;
-}
-
 std::vector<StudyRow> seriesOf(const std::vector<StudyRow>& rows, const std::string& integrator,
                                const std::string& denoiser) {
     std::vector<StudyRow> series;
@@ -44,8 +35,8 @@ std::vector<StudyRow> seriesOf(const std::vector<StudyRow>& rows, const std::str
 }
 
 std::string yearText(const YearAnswer& a) {
-    if (a.firstGpuYear) return format("%d (%s)", *a.firstGpuYear, a.firstGpuName.c_str());
-    return format("none up to 2025; the trend line reaches it in ~%.0f", a.extrapolatedYear);
+    if (a.firstGpuYear) return formatText("%d (%s)", *a.firstGpuYear, a.firstGpuName.c_str());
+    return formatText("none up to 2025; the trend line reaches it in ~%.0f", a.extrapolatedYear);
 }
 
 }  // namespace
@@ -89,16 +80,16 @@ std::string reportMarkdown(const ReportInput& in) {
     md +=
         "Written by `fragpath study`; every number below comes from the files next to this one "
         "(`study.csv`) or is derived from them as stated.\n\n## Set-up\n\n";
-    md += format("- Scene: %s, %dx%d pixels, max depth %d.\n", in.scene.c_str(), in.width, in.height,
-                 in.maxDepth);
+    md += formatText("- Scene: %s, %dx%d pixels, max depth %d.\n", in.scene.c_str(), in.width, in.height,
+                     in.maxDepth);
     md += "- Reference: " + in.referenceText + "\n";
-    md += format("- Sample counts 1, 2, 4, ... %d per pixel; integrators: ", in.maxSpp);
+    md += formatText("- Sample counts 1, 2, 4, ... %d per pixel; integrators: ", in.maxSpp);
     for (size_t i = 0; i < in.integrators.size(); ++i) md += (i ? ", " : "") + in.integrators[i];
     md += "; denoisers: ";
     for (size_t i = 0; i < in.denoisers.size(); ++i) md += (i ? ", " : "") + in.denoisers[i];
     md += ".\n";
     md += "- Renderer: " + in.glRenderer + "; CPU: " + in.cpu.model + ".\n";
-    md += format(
+    md += formatText(
         "- Times: wall-clock seconds of the render from scratch (median of %d run%s) and process CPU "
         "seconds (all threads). %s Wall times change with the load; CPU seconds much less, so the "
         "efficiency below uses CPU seconds.\n\n",
@@ -106,7 +97,7 @@ std::string reportMarkdown(const ReportInput& in) {
 
     md += "## Metrics\n\n";
     md += "- **RMSE**: root of the mean over pixels and channels of (x - y)^2, linear radiance.\n";
-    md += format(
+    md += formatText(
         "- **relMSE**: mean over pixels and channels of (x - y)^2 / (y^2 + eps), eps = %.2g (Rousselle, "
         "Knaus and Zwicker 2011, the relative MSE of pbrt and of the denoising literature); y is the "
         "reference.\n",
@@ -118,7 +109,7 @@ std::string reportMarkdown(const ReportInput& in) {
         "exposure 0, sRGB encoding): dynamic range L = 1 for these HDR images.\n\n";
 
     md += "## When is an image no longer noisy?\n\n" + std::string(kThresholdRationale) + "\n\n";
-    md += format("Threshold used: **relMSE <= %.3g**.\n\n", in.relMseThreshold);
+    md += formatText("Threshold used: **relMSE <= %.3g**.\n\n", in.relMseThreshold);
     md +=
         "Samples per pixel needed to get under it (interpolated in log-log between the two levels around the "
         "crossing; a raw estimate that never crosses is extrapolated from its last level by MSE ~ 1/N, the "
@@ -129,9 +120,9 @@ std::string reportMarkdown(const ReportInput& in) {
         for (const std::string& denoiser : in.denoisers) {
             std::vector<StudyRow> series = seriesOf(in.rows, integrator, denoiser);
             if (series.empty()) continue;
-            md += format("| %s | %s | %s | %.3g | %.4f |\n", integrator.c_str(), denoiser.c_str(),
-                         describe(sppNeeded(series, in.relMseThreshold)).c_str(), series.back().relMse,
-                         series.back().ssim);
+            md += formatText("| %s | %s | %s | %.3g | %.4f |\n", integrator.c_str(), denoiser.c_str(),
+                             describe(sppNeeded(series, in.relMseThreshold)).c_str(), series.back().relMse,
+                             series.back().ssim);
         }
 
     md += "\n## Plots\n\n";
@@ -143,14 +134,14 @@ std::string reportMarkdown(const ReportInput& in) {
     }
     md += "## Image strip\n\n![strip](strip.png)\n\nThe same crop at ";
     for (size_t i = 0; i < in.strip.columns.size(); ++i)
-        md += format("%s%d", i ? ", " : "", in.strip.columns[i]);
+        md += formatText("%s%d", i ? ", " : "", in.strip.columns[i]);
     md += " spp, then the reference; rows from the top: ";
     for (size_t i = 0; i < in.strip.rows.size(); ++i)
         md += (i ? ", " : "") + in.strip.rows[i].first + " + " + in.strip.rows[i].second;
     md += ". Clamp tone map, sRGB.\n\n";
 
     md += "## Real-time feasibility\n\n";
-    md += format(
+    md += formatText(
         "A counting mode (`--view cost`: glsl/passes/debug_views.glsl) runs each integrator's whole "
         "path and records, summed over all of its rays (camera, bounce and shadow), the BVH nodes "
         "visited, the triangles tested and the surfaces shaded; averaged over %dx%d x %d paths:\n\n",
@@ -162,9 +153,9 @@ std::string reportMarkdown(const ReportInput& in) {
         auto it = in.counts.find(integrator);
         if (it == in.counts.end()) continue;
         const PathCounts& c = it->second;
-        md +=
-            format("| %s | %.2f | %.1f | %.1f | %.2f | %.0f |\n", integrator.c_str(), c.rays, c.nodesVisited,
-                   c.trianglesTested, c.surfacesShaded, flopsPerPath(c, parseIntegrator(integrator)));
+        md += formatText("| %s | %.2f | %.1f | %.1f | %.2f | %.0f |\n", integrator.c_str(), c.rays,
+                         c.nodesVisited, c.trianglesTested, c.surfacesShaded,
+                         flopsPerPath(c, parseIntegrator(integrator)));
     }
     md +=
         "\nFLOPs per operation, counted from the GLSL (an add, multiply, divide, min, max, compare, sqrt, "
@@ -172,8 +163,8 @@ std::string reportMarkdown(const ReportInput& in) {
         "src/study/flop_model.h has the line-by-line breakdown):\n\n| operation | FLOPs | from "
         "|\n|---|---|---|\n";
     for (const FlopCount& f : operationTable())
-        md += format("| %s | %.0f | %s |\n", f.operation, f.flops, f.breakdown);
-    md += format(
+        md += formatText("| %s | %.0f | %s |\n", f.operation, f.flops, f.breakdown);
+    md += formatText(
         "\nFLOPs per path = %.0f x nodes + %.0f x triangle tests + %.0f x rays + %.0f (camera ray) + "
         "surfaces x (the integrator's surface interaction).\n\n",
         kFlopsPerNode, kFlopsPerTriangleTest, kFlopsPerRay, kFlopsPerCameraRay);
@@ -193,15 +184,16 @@ std::string reportMarkdown(const ReportInput& in) {
         std::string year =
             f.sppNeeded > 0 ? yearText(yearReached(f.requiredTflops * 1e12, f.efficiency)) : "-";
         std::string atPeak = f.sppNeeded > 0 ? yearText(yearReached(f.requiredTflops * 1e12, 1.0)) : "-";
-        md += format("| %s | %s | %s | %.0f | %.3g | %.2f%% | %s | %s | %s | %s |\n", f.integrator.c_str(),
-                     f.denoiser.c_str(), f.sppText.c_str(), f.flopsPerPath, f.pathsPerCpuSecond,
-                     100 * f.efficiency, f.sppNeeded > 0 ? format("%.3g", f.requiredTflops).c_str() : "-",
-                     f.sppNeeded > 0 ? format("%.3g", f.requiredPeakTflops).c_str() : "-", year.c_str(),
-                     atPeak.c_str());
+        md += formatText("| %s | %s | %s | %.0f | %.3g | %.2f%% | %s | %s | %s | %s |\n",
+                         f.integrator.c_str(), f.denoiser.c_str(), f.sppText.c_str(), f.flopsPerPath,
+                         f.pathsPerCpuSecond, 100 * f.efficiency,
+                         f.sppNeeded > 0 ? formatText("%.3g", f.requiredTflops).c_str() : "-",
+                         f.sppNeeded > 0 ? formatText("%.3g", f.requiredPeakTflops).c_str() : "-",
+                         year.c_str(), atPeak.c_str());
     }
     md += "\nGPU peaks (FP32, vendor boost-clock figures): ";
-    for (const Gpu& g : consumerGpus()) md += format("%s (%d) %.1f, ", g.name, g.year, g.peakTflops);
-    md += format(
+    for (const Gpu& g : consumerGpus()) md += formatText("%s (%d) %.1f, ", g.name, g.year, g.peakTflops);
+    md += formatText(
         "TFLOPS; a least-squares fit of log2(peak) against the year doubles every %.2f years (the "
         "\"trend\" years above extrapolate it).\n\n",
         doublingYears());
@@ -228,7 +220,7 @@ std::string reportMarkdown(const ReportInput& in) {
         YearAnswer a = yearReached(f.requiredTflops * 1e12, f.efficiency);
         double year = a.firstGpuYear ? double(*a.firstGpuYear) : a.extrapolatedYear;
         YearAnswer full = yearReached(f.requiredTflops * 1e12, 1.0);
-        return format(
+        return formatText(
             "%s%s needs %s spp, %.3g TFLOPS sustained, so %.3g TFLOPS of peak at the %.2f%% efficiency "
             "measured here; first GPU: %s. \"Real-time path tracing within 4 years\" of 2016 (by 2020) "
             "**%s**. Even at 100%% of peak the first GPU would be %s. If RT cores did the traversal and "
@@ -249,8 +241,9 @@ std::string reportMarkdown(const ReportInput& in) {
         if (bestRaw) {
             YearAnswer a = yearReached(bestRaw->requiredTflops * 1e12, bestRaw->efficiency);
             YearAnswer b = yearReached(bestDenoised->requiredTflops * 1e12, bestDenoised->efficiency);
-            md += format("- The denoiser moves the year by %.1f years on the trend line (%.0f -> %.0f).\n",
-                         b.extrapolatedYear - a.extrapolatedYear, a.extrapolatedYear, b.extrapolatedYear);
+            md +=
+                formatText("- The denoiser moves the year by %.1f years on the trend line (%.0f -> %.0f).\n",
+                           b.extrapolatedYear - a.extrapolatedYear, a.extrapolatedYear, b.extrapolatedYear);
         }
     } else {
         md += "- No denoised series reaches the threshold within the measured sample counts" +

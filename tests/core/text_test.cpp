@@ -1,4 +1,4 @@
-// core/text.h: lower-casing, file extensions and comma-separated name lists.
+// core/text.h: lower-casing, file extensions, comma-separated name lists and printf into a string.
 #include <gtest/gtest.h>
 
 #include <string>
@@ -49,6 +49,14 @@ TEST(Text, SplitNameListRefusesEmptyAndRepeatedNames) {
     } catch (const Error& e) {
         EXPECT_EQ(std::string(e.what()), "--denoisers: 'a' is listed twice");
     }
+}
+
+// The whole text however long (the study report's own copy cut it at 4095 bytes), and an empty one.
+TEST(Text, FormatTextHasNoLengthLimit) {
+    EXPECT_EQ(formatText("%d spp, %.2f s, %s", 16, 1.5, "nee"), "16 spp, 1.50 s, nee");
+    EXPECT_EQ(formatText("%s", ""), "");
+    const std::string longText(10000, 'x');
+    EXPECT_EQ(formatText("<%s>", longText.c_str()), "<" + longText + ">");
 }
 
 }  // namespace

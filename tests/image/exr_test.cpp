@@ -26,6 +26,26 @@ void expectBitIdentical(const Image& loaded, const Image& original) {
     }
 }
 
+// The channels of an EXR's header as (name, pixel type), in file order, as tinyexr's own parser reads
+// them.
+std::vector<std::pair<std::string, int>> headerChannels(const std::string& path) {
+    std::vector<std::pair<std::string, int>> channels;
+    EXRVersion version;
+    EXRHeader header;
+    InitEXRHeader(&header);
+    const char* err = nullptr;
+    if (ParseEXRVersionFromFile(&version, path.c_str()) != TINYEXR_SUCCESS ||
+        ParseEXRHeaderFromFile(&header, &version, path.c_str(), &err) != TINYEXR_SUCCESS) {
+        ADD_FAILURE() << "cannot parse the header of " << path << ": " << (err ? err : "");
+        if (err) FreeEXRErrorMessage(err);
+        return channels;
+    }
+    for (int c = 0; c < header.num_channels; ++c)
+        channels.emplace_back(header.channels[c].name, header.pixel_types[c]);
+    FreeEXRHeader(&header);
+    return channels;
+}
+
 TEST(Exr, RoundTripOfAwkwardValuesIsBitExact) {
     TempDir dir;
     const Image original = test::awkwardImage();
@@ -52,19 +72,10 @@ TEST(Exr, StoresFloatChannelsBGR) {
     TempDir dir;
     const std::string path = dir.file("types.exr");
     writeExr(path, Image(2, 2));
-    EXRVersion version;
-    ASSERT_EQ(ParseEXRVersionFromFile(&version, path.c_str()), TINYEXR_SUCCESS);
-    EXRHeader header;
-    InitEXRHeader(&header);
-    const char* err = nullptr;
-    ASSERT_EQ(ParseEXRHeaderFromFile(&header, &version, path.c_str(), &err), TINYEXR_SUCCESS);
-    ASSERT_EQ(header.num_channels, 3);
-    const char* expected[] = {"B", "G", "R"};
-    for (int c = 0; c < 3; ++c) {
-        EXPECT_STREQ(header.channels[c].name, expected[c]);
-        EXPECT_EQ(header.pixel_types[c], TINYEXR_PIXELTYPE_FLOAT);
-    }
-    FreeEXRHeader(&header);
+    EXPECT_EQ(
+        headerChannels(path),
+        (std::vector<std::pair<std::string, int>>{
+            {"B", TINYEXR_PIXELTYPE_FLOAT}, {"G", TINYEXR_PIXELTYPE_FLOAT}, {"R", TINYEXR_PIXELTYPE_FLOAT}}));
 }
 
 TEST(Exr, CustomStringAttributesRoundTrip) {
@@ -110,6 +121,78 @@ TEST(Exr, InvalidAttributesAreRejectedAndLeaveNoFile) {
     ExrAttributes tooMany;
     for (int i = 0; i < 129; ++i) tooMany.emplace_back("k" + std::to_string(i), "v");
     EXPECT_THROW(writeExr(path, Image(1, 1), tooMany), Error);
+    EXPECT_TRUE(dir.entries().empty());
+}
+
+// Extra layers (render --aovs) go next to R, G, B as "<layer>.<channel>", all channels in name order
+// as OpenEXR requires; they read back bit-exactly, each with its channels in R, G, B or X, Y, Z order,
+// and a reader that asks only for the beauty still gets it.
+TEST(Exr, LayersRoundTripBitExactlyInNameOrder) {
+    std::mt19937 random(7);
+    auto randomImage = [&](int channels) {
+        Image image(5, 3);
+        for (glm::vec3& p : image.pixels)
+            for (int c = 0; c < channels; ++c) p[c] = test::floatFromBits(random());
+        return image;
+    };
+    const Image beauty = randomImage(3);
+    const std::vector<ExrLayer> layers = {{"normal", {"X", "Y", "Z"}, randomImage(3)},
+                                          {"albedo", {"R", "G", "B"}, randomImage(3)},
+                                          {"depth", {"Z"}, randomImage(1)},
+                                          {"diffuse", {"red", "green", "blue"}, randomImage(3)}};
+    TempDir dir;
+    const std::string path = dir.file("layers.exr");
+    writeExr(path, beauty, {{"fragpath.samples", "4"}}, layers);
+
+    std::vector<std::string> names;
+    for (const auto& [name, type] : headerChannels(path)) names.push_back(name);
+    EXPECT_EQ(names, (std::vector<std::string>{"B", "G", "R", "albedo.B", "albedo.G", "albedo.R", "depth.Z",
+                                               "diffuse.blue", "diffuse.green", "diffuse.red", "normal.X",
+                                               "normal.Y", "normal.Z"}));
+
+    ExrAttributes attributes;
+    std::vector<ExrLayer> read;
+    expectBitIdentical(readExr(path, &attributes, &read), beauty);
+    EXPECT_EQ(attributes, (ExrAttributes{{"fragpath.samples", "4"}}));
+    expectBitIdentical(readImage(path), beauty);
+    ASSERT_EQ(read.size(), 4u);
+    // In the order of their names; channels in the conventional order, else the file's (sorted) order.
+    const std::vector<std::pair<const ExrLayer*, std::vector<int>>> expected = {
+        {&layers[1], {0, 1, 2}}, {&layers[2], {0}}, {&layers[3], {2, 1, 0}}, {&layers[0], {0, 1, 2}}};
+    for (size_t l = 0; l < read.size(); ++l) {
+        const ExrLayer& original = *expected[l].first;
+        const std::vector<int>& order = expected[l].second;
+        EXPECT_EQ(read[l].name, original.name);
+        ASSERT_EQ(read[l].channels.size(), order.size()) << original.name;
+        for (size_t c = 0; c < order.size(); ++c) {
+            EXPECT_EQ(read[l].channels[c], original.channels[size_t(order[c])]);
+            for (size_t i = 0; i < original.image.pixels.size(); ++i)
+                ASSERT_EQ(bitsOf(read[l].image.pixels[i][int(c)]), bitsOf(original.image.pixels[i][order[c]]))
+                    << original.name << "." << original.channels[size_t(order[c])] << " pixel " << i;
+        }
+    }
+}
+
+TEST(Exr, InvalidLayersAreRejectedAndLeaveNoFile) {
+    TempDir dir;
+    const std::string path = dir.file("bad.exr");
+    const Image one(1, 1);
+    const std::vector<std::vector<ExrLayer>> invalid = {
+        {{"", {"R"}, one}},
+        {{"a.b", {"R"}, one}},
+        {{"albedo", {}, one}},
+        {{"albedo", {"R", "G", "B", "A"}, one}},
+        {{"albedo", {"R", ""}, one}},
+        {{"albedo", {"R.x"}, one}},
+        {{"albedo", {"R", "R"}, one}},
+        {{"albedo", {"R"}, one}, {"albedo", {"R"}, one}},
+        {{"albedo", {"R"}, Image(2, 1)}},
+        {{std::string(250, 'n'), {"channel"}, one}},
+    };
+    for (const std::vector<ExrLayer>& layers : invalid) {
+        const std::string message = errorMessage([&] { writeExr(path, one, {}, layers); });
+        EXPECT_NE(message.find(path), std::string::npos) << message;
+    }
     EXPECT_TRUE(dir.entries().empty());
 }
 

@@ -1,0 +1,145 @@
+#include "app/render_stats.h"
+
+#include <unistd.h>
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+
+#include "core/error.h"
+#include "core/text.h"
+#include "image/file_io.h"
+
+namespace fp {
+
+namespace {
+
+// a / b, or 0 when b is not positive (a render too short for the clock, a scene without triangles).
+double per(double a, double b) {
+    return b > 0.0 ? a / b : 0.0;
+}
+
+}  // namespace
+
+RenderStats collectRenderStats(const Renderer& renderer, const Accumulation& acc,
+                               const std::string& glRenderer, const std::string& scene,
+                               const std::string& output, const RenderTimes& times) {
+    RenderStats s;
+    s.renderer = glRenderer;
+    s.scene = scene;
+    s.output = output;
+    s.sceneStats = renderer.stats();
+    s.settings = renderer.settings();
+    s.imageBytes = renderer.imageBytes();
+    s.spp = times.spp;
+    s.paths = uint64_t(s.settings.width) * uint64_t(s.settings.height) * uint64_t(std::max(times.spp, 0));
+    s.rays = uint64_t(std::llround(acc.raysTraced()));
+    s.droppedSamples = acc.droppedSamples();
+    s.firstFrameSeconds = times.firstFrameSeconds;
+    s.seconds = times.seconds;
+    s.cpuSeconds = times.cpuSeconds;
+    return s;
+}
+
+std::string formatRenderStats(const RenderStats& stats) {
+    const SceneStats& s = stats.sceneStats;
+    const RenderSettings& settings = stats.settings;
+    const double paths = double(stats.paths), rays = double(stats.rays);
+    std::string text;
+    text += formatText("renderer         %s\n", stats.renderer.c_str());
+    text += formatText("scene            %s\n", stats.scene.c_str());
+    text += formatText("triangles        %u (%u emissive)\n", s.triangles, s.emitters);
+    text += formatText(
+        "bvh              %u nodes, %u leaves, depth %u, leaf size %u..%u (mean %.2f), SAH cost %.2f\n",
+        s.bvh.nodeCount, s.bvh.leafCount, s.bvh.maxDepth, s.bvh.minLeafSize, s.bvh.maxLeafSize,
+        s.bvh.meanLeafSize, s.bvh.sahCost);
+    text +=
+        formatText("bvh build        %.3f s, %.3f CPU-s, threads %d (%.3g triangles/s)\n", s.bvhBuildSeconds,
+                   s.bvhBuildCpuSeconds, s.bvhBuildThreads, per(s.triangles, s.bvhBuildSeconds));
+    text += formatText(
+        "gpu memory       %zu bytes (%.1f per triangle; positions + BVH %.1f per triangle; textures %zu "
+        "bytes)\n",
+        s.gpuBytes, per(double(s.gpuBytes), s.triangles), per(double(s.gpuGeometryBytes), s.triangles),
+        s.gpuTextureBytes);
+    text += formatText("scene reads      %s\n", sceneReadsName(s.sceneReads));
+    text += formatText("image buffers    %zu bytes (%.0f per pixel: accumulation%s)\n", stats.imageBytes,
+                       per(double(stats.imageBytes), double(settings.width) * settings.height),
+                       settings.integrator == Integrator::Bdpt ? " and bdpt's light image" : "");
+    text +=
+        formatText("first frame      %.3f s after start (load, build, upload, shader compile, first pass)\n",
+                   stats.firstFrameSeconds);
+    text += formatText("samples          %d per pixel, %.0f paths, %.0f rays (%.2f rays per path)\n",
+                       stats.spp, paths, rays, per(rays, paths));
+    text += formatText("throughput       %.3g paths/s, %.3g rays/s, %.3g paths per CPU-second\n",
+                       per(paths, stats.seconds), per(rays, stats.seconds), per(paths, stats.cpuSeconds));
+    text += formatText("dropped samples  %llu (NaN or Inf, replaced by 0)\n",
+                       (unsigned long long)stats.droppedSamples);
+    return text;
+}
+
+nlohmann::json renderStatsJson(const RenderStats& stats) {
+    const SceneStats& s = stats.sceneStats;
+    const RenderSettings& settings = stats.settings;
+    const double paths = double(stats.paths), rays = double(stats.rays);
+    nlohmann::json bvh = {
+        {"nodes", s.bvh.nodeCount},
+        {"leaves", s.bvh.leafCount},
+        {"depth", s.bvh.maxDepth},
+        {"leaf_size", {{"min", s.bvh.minLeafSize}, {"max", s.bvh.maxLeafSize}, {"mean", s.bvh.meanLeafSize}}},
+        {"sah_cost", s.bvh.sahCost},
+        {"build_seconds", s.bvhBuildSeconds},
+        {"build_cpu_seconds", s.bvhBuildCpuSeconds},
+        {"build_threads", s.bvhBuildThreads},
+    };
+    nlohmann::json memory = {
+        {"gpu_bytes", s.gpuBytes},
+        {"gpu_geometry_bytes", s.gpuGeometryBytes},
+        {"gpu_texture_bytes", s.gpuTextureBytes},
+        {"image_bytes", stats.imageBytes},
+    };
+    nlohmann::json throughput = {
+        {"paths_per_second", per(paths, stats.seconds)},
+        {"rays_per_second", per(rays, stats.seconds)},
+        {"paths_per_cpu_second", per(paths, stats.cpuSeconds)},
+    };
+    nlohmann::json renderSettings = {
+        {"integrator", integratorName(settings.integrator)},
+        {"sampler", samplerName(settings.sampler)},
+        {"light_sampling", lightSamplingName(settings.lightSampling)},
+        {"max_depth", settings.maxDepth},
+        {"width", settings.width},
+        {"height", settings.height},
+        {"seed", settings.seed},
+        {"sample_offset", settings.sampleOffset},
+        {"samples_per_pass", settings.samplesPerPass},
+        {"clamp_indirect", settings.clampIndirect},
+        {"view", viewName(settings.view)},
+    };
+    return {
+        {"renderer", stats.renderer},
+        {"scene", stats.scene},
+        {"output", stats.output},
+        {"triangles", s.triangles},
+        {"emitters", s.emitters},
+        {"bvh", bvh},
+        {"memory", memory},
+        {"scene_reads", sceneReadsName(s.sceneReads)},
+        {"first_frame_seconds", stats.firstFrameSeconds},
+        {"spp", stats.spp},
+        {"paths", stats.paths},
+        {"rays", stats.rays},
+        {"rays_per_path", per(rays, paths)},
+        {"seconds", stats.seconds},
+        {"cpu_seconds", stats.cpuSeconds},
+        {"throughput", throughput},
+        {"dropped_samples", stats.droppedSamples},
+        {"settings", renderSettings},
+    };
+}
+
+void writeRenderStatsJson(const std::string& path, const RenderStats& stats) {
+    const std::string text = renderStatsJson(stats).dump(2) + "\n";
+    writeFileAtomically(path, std::vector<std::uint8_t>(text.begin(), text.end()));
+}
+
+}  // namespace fp

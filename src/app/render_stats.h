@@ -1,0 +1,54 @@
+#pragma once
+// The statistics of `fragpath render`: what --stats prints and what --json FILE writes for scripts,
+// both made from one RenderStats that the command fills after rendering.
+#include <cstdint>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "render/accumulation.h"
+#include "render/renderer.h"
+
+namespace fp {
+
+struct RenderStats {
+    std::string renderer;  // the OpenGL renderer (GlContext::description)
+    std::string scene;     // Scene::source
+    std::string output;    // the -o file
+    SceneStats sceneStats;
+    RenderSettings settings;
+    size_t imageBytes = 0;  // Renderer::imageBytes
+    // This run's samples per pixel (a resumed render: those rendered now), and its paths (one per
+    // pixel and sample) and rays (camera, bounce and shadow rays of those paths).
+    int spp = 0;
+    uint64_t paths = 0, rays = 0, droppedSamples = 0;
+    double firstFrameSeconds = 0.0;          // from the start of the command to the end of the first pass
+    double seconds = 0.0, cpuSeconds = 0.0;  // of the passes: wall clock and process CPU time
+};
+
+// What the command measured besides the renderer: times, and the samples per pixel of this run.
+struct RenderTimes {
+    int spp = 0;
+    double firstFrameSeconds = 0.0, seconds = 0.0, cpuSeconds = 0.0;
+};
+
+RenderStats collectRenderStats(const Renderer& renderer, const Accumulation& acc,
+                               const std::string& glRenderer, const std::string& scene,
+                               const std::string& output, const RenderTimes& times);
+
+// The text --stats prints: one "name   value" line per subject.
+std::string formatRenderStats(const RenderStats& stats);
+// The same figures for scripts, as a JSON object (keys in snake_case; rates are 0 when their time is 0):
+// {"renderer", "scene", "output", "triangles", "emitters", "bvh": {"nodes", "leaves", "depth",
+// "leaf_size": {"min", "max", "mean"}, "sah_cost", "build_seconds", "build_cpu_seconds",
+// "build_threads"}, "memory": {"gpu_bytes", "gpu_geometry_bytes", "gpu_texture_bytes", "image_bytes"},
+// "scene_reads", "first_frame_seconds", "spp", "paths", "rays", "rays_per_path", "seconds",
+// "cpu_seconds", "throughput": {"paths_per_second", "rays_per_second", "paths_per_cpu_second"},
+// "dropped_samples", "settings": {"integrator", "sampler", "light_sampling", "max_depth", "width",
+// "height", "seed", "sample_offset", "samples_per_pass", "clamp_indirect", "view"}}.
+nlohmann::json renderStatsJson(const RenderStats& stats);
+
+// Writes renderStatsJson (indented, one trailing newline), atomically.
+void writeRenderStatsJson(const std::string& path, const RenderStats& stats);
+
+}  // namespace fp
