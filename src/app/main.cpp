@@ -25,7 +25,8 @@ static const char* kUsage =
     "version, the git commit and the OpenGL renderer the offscreen commands would use.\n"
     "\n"
     "exit status: 0 done, 1 an error in the input or the environment (the message says which), 2 a\n"
-    "usage error (no or unknown command), 3 an internal error (a bug: please report it).\n";
+    "command line that cannot be read (no or unknown command, unknown option, missing value), 3 an\n"
+    "internal error (a bug: please report it). Ctrl-C during a render: 130, after writing what it has.\n";
 
 // The version, the commit and what an offscreen context gets here (or why it gets none).
 int printVersion() {
@@ -55,6 +56,9 @@ int main(int argc, char** argv) {
         if (command == "merge") return fp::mergeCommand(args);
         if (command == "study") return fp::studyCommand(args);
         std::fprintf(stderr, "fragpath: unknown command '%s'\n\n%s", command.c_str(), kUsage);
+        return 2;
+    } catch (const fp::UsageError& e) {
+        std::fprintf(stderr, "fragpath: error: %s\n", e.what());
         return 2;
     } catch (const fp::Error& e) {
         std::fprintf(stderr, "fragpath: error: %s\n", e.what());

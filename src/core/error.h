@@ -11,4 +11,11 @@ class Error : public std::runtime_error {
     using std::runtime_error::runtime_error;
 };
 
+// A command line that cannot be read: an unknown option, or one without the value it needs. Front ends
+// exit with status 2 for it (1 for every other Error), as command-line tools conventionally do.
+class UsageError : public Error {
+  public:
+    using Error::Error;
+};
+
 }  // namespace fp

@@ -18,7 +18,7 @@ Args::Args(const std::vector<std::string>& argv, const std::vector<OptionGroup>&
         }
     auto find = [&](const std::string& name) {
         auto it = known.find(name);
-        if (it == known.end()) throw Error("unknown option " + name + " (see --help)");
+        if (it == known.end()) throw UsageError("unknown option " + name + " (see --help)");
         return it->second;
     };
     for (size_t i = 0; i < argv.size(); ++i) {
@@ -26,8 +26,8 @@ Args::Args(const std::vector<std::string>& argv, const std::vector<OptionGroup>&
         size_t equals = a.find('=');
         if (a.rfind("--", 0) == 0 && equals != std::string::npos) {  // the GNU form, --option=value
             const Option* option = find(a.substr(0, equals));
-            if (option->value.empty()) throw Error("option " + option->flag + " takes no value");
-            if (equals + 1 == a.size()) throw Error("option " + option->flag + " needs a value");
+            if (option->value.empty()) throw UsageError("option " + option->flag + " takes no value");
+            if (equals + 1 == a.size()) throw UsageError("option " + option->flag + " needs a value");
             values_[option->flag] = a.substr(equals + 1);
         } else if (a.size() > 1 && a[0] == '-' && !std::isdigit(static_cast<unsigned char>(a[1]))) {
             const Option* option = find(a);
@@ -39,7 +39,7 @@ Args::Args(const std::vector<std::string>& argv, const std::vector<OptionGroup>&
             bool nextIsOption = i + 1 < argv.size() && argv[i + 1].size() > 1 && argv[i + 1][0] == '-' &&
                                 !std::isdigit(static_cast<unsigned char>(argv[i + 1][1])) &&
                                 argv[i + 1][1] != '.';
-            if (i + 1 >= argv.size() || nextIsOption) throw Error("option " + a + " needs a value");
+            if (i + 1 >= argv.size() || nextIsOption) throw UsageError("option " + a + " needs a value");
             values_[option->flag] = argv[++i];
         } else {
             positional_.push_back(a);

@@ -26,9 +26,10 @@ CliRun fragpath(const std::string& args, const std::string& environment = "") {
 class Cli : public test::TempDirTest {
   protected:
     // Expects failure with a message containing `fragment`, and no image written.
-    void expectError(const std::string& args, const std::string& fragment) {
+    // Exit status 2 for a command line that cannot be read, 1 for any other error (fragpath --help).
+    void expectError(const std::string& args, const std::string& fragment, int exitCode = 1) {
         CliRun r = fragpath(args + " -o " + path("out.png"));
-        EXPECT_EQ(r.exitCode, 1) << r.output;
+        EXPECT_EQ(r.exitCode, exitCode) << r.output;
         EXPECT_NE(r.output.find("fragpath: error: "), std::string::npos) << r.output;
         EXPECT_NE(r.output.find(fragment), std::string::npos)
             << "expected '" << fragment << "' in: " << r.output;
@@ -65,9 +66,9 @@ TEST_F(Cli, RendersTheBuiltInCornellBoxToEveryFormat) {
 // given a value, or '=' with nothing after it, is an error (issue 17: "--spp=16 is unknown option").
 TEST_F(Cli, OptionsTakeTheirValueAfterAnEqualsSign) {
     expectSameRender("--size 8x6 --spp 2 --seed 3", "--size=8x6 --spp=2 --seed=3");
-    expectError("render --size 8x6 --quiet=yes", "option --quiet takes no value");
-    expectError("render --size 8x6 --spp=", "option --spp needs a value");
-    expectError("render --size 8x6 --nonsense=3", "unknown option --nonsense");
+    expectError("render --size 8x6 --quiet=yes", "option --quiet takes no value", 2);
+    expectError("render --size 8x6 --spp=", "option --spp needs a value", 2);
+    expectError("render --size 8x6 --nonsense=3", "unknown option --nonsense", 2);
 }
 
 // --version names the version, the commit the binary was built from (the source tree here is a git
@@ -182,8 +183,8 @@ TEST_F(Cli, RendersAnObjWithoutCameraByFramingIt) {
 }
 
 TEST_F(Cli, BadFlagsAreErrors) {
-    expectError("render --bogus", "unknown option --bogus");
-    expectError("render --spp", "needs a value");
+    expectError("render --bogus", "unknown option --bogus", 2);
+    expectError("render --spp", "needs a value", 2);
     expectError("render --spp 0", "--spp");
     expectError("render --spp ten", "--spp");
     expectError("render --size 10", "WIDTHxHEIGHT");

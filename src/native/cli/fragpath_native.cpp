@@ -78,6 +78,9 @@ int run(const std::vector<std::string>& argv) {
 int main(int argc, char** argv) {
     try {
         return run(std::vector<std::string>(argv + 1, argv + argc));
+    } catch (const fp::UsageError& e) {
+        std::fprintf(stderr, "fragpath_native: error: %s\n", e.what());
+        return 2;
     } catch (const std::exception& e) {
         std::fprintf(stderr, "fragpath_native: error: %s\n", e.what());
         return 1;
