@@ -247,7 +247,8 @@ TEST(PackScene, MismatchedBvhIsRejected) {
 
 // Punctual lights (pack/layout.h): their cdf entries follow the emitters' with index -1 - k and area 0,
 // then kPunctualTexels each; the cdf still ends at 1, a black light gets no entry, and a scene without
-// punctual lights packs exactly as before (the same texels).
+// punctual lights packs exactly as before (the same texels). Caught: the cdf entry's index -k instead of
+// -1 - k (light 0 would read as triangle 0).
 TEST(PackScene, PunctualLightsFollowTheEmittersInTheCdf) {
     Scene s = randomScene(300, 7);
     const PackedScene before = packScene(s, buildFor(s));

@@ -67,6 +67,8 @@ TEST(PunctualLightFile, EveryTypeParsedInTheRendererUnits) {
     EXPECT_TRUE(LightsFile("[]").load().punctualLights.empty());
 }
 
+// Caught: the scene file's inner < outer check dropped (validatePunctualLight still refuses, but with
+// another message, not naming the key).
 TEST(PunctualLightFile, ErrorsNameTheLightAndTheKey) {
     LightsFile("{}").reject("lights must be an array");
     LightsFile("[3]").reject("lights[0] must be a JSON object");
@@ -182,6 +184,7 @@ TEST(PunctualLight, SpotSolidAngleIntegratesTheFalloff) {
     EXPECT_NEAR(spotSolidAngle(0.0f, 1.5707963f), 2.0 * kPi / 3.0, 1e-6);
 }
 
+// Caught: a directional light's power pi r E instead of pi r^2 E.
 TEST(PunctualLight, PowersAsPbrt) {
     PunctualLight point;
     point.intensity = glm::vec3(2.0f);
