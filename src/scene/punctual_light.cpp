@@ -5,19 +5,13 @@
 #include <cstdio>
 
 #include "core/error.h"
+#include "core/text.h"
 
 namespace fp {
 
 const char* punctualLightTypeName(PunctualLightType type) {
-    switch (type) {
-        case PunctualLightType::Point:
-            return "point";
-        case PunctualLightType::Spot:
-            return "spot";
-        case PunctualLightType::Directional:
-            return "directional";
-    }
-    return "?";
+    static constexpr const char* kNames[] = {"point", "spot", "directional"};  // in enum order
+    return nameOf(type, kNames);
 }
 
 namespace {
