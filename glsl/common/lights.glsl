@@ -275,6 +275,7 @@ LightSample sampleLight(vec3 from) {
             ls.dir = toLight / ls.dist;
             ls.point = l.position;  // on no surface: normal and offset 0, the shadow ray ends there
             ls.radiance = punctualIntensity(l, -ls.dir) / dist2;
+            if (ls.radiance == vec3(0.0)) return ls;  // outside a spot's cone: pdf 0, no shadow ray
         }
         ls.pdf = (1.0 - pEnvironment) * e.punctualPmf;
         return ls;
