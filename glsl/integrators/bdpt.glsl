@@ -64,7 +64,8 @@
 // Strategy s = 1: z_{t-1} joined to a point sampled afresh on an emitter (by power, then uniformly on the
 // triangle): the unweighted contribution beta_z f(z -> y) Le(y -> z) |cos(theta_y)| / (r^2 p_A(y)).
 // Or to a punctual light picked by power (pmf): beta_z f(z -> y) I(y -> z) / (r^2 pmf), or for a
-// directional light beta_z f(z -> -w) E / pmf (pbrt-v3 16.3.2, "s = 1", with a delta light's Sample_Li).
+// directional light beta_z f(z -> -w) E / pmf (pbrt-v3 16.3, "Subpath Connections", s = 1, with a delta
+// light's Sample_Li).
 vec3 connectToLight(int t) {
     PathVertex c = gCamera[t - 1];
     EmitterPoint e = sampleEmitterPoint();

@@ -142,10 +142,11 @@ bool unoccluded(PathVertex a, PathVertex b) { return !segmentOccluded(a.p, a.ng,
 // zRevLast, zRevPrev for z_{t-1}, z_{t-2}; yRevLast, yRevPrev for y_{s-1}, y_{s-2}; yFwdFresh is the
 // area density of the emitter point of an s = 1 join (sampled afresh, not taken from gLight).
 // deltaLight: the path's light vertex y0 is a punctual light, which strategy s = 0 cannot sample (pbrt-v3
-// 16.3.4, Vertex::IsDeltaLight in MISWeight; pbrt-v4's BDPTIntegrator the same). Its delta position or
-// direction is common to every other strategy (each samples y0 by picking the light), so it cancels from
-// their ratios: y1's densities are the ones that differ, a direction density from a point or spot light
-// converted to area at y1, or from a directional light the disk's area density projected onto y1.
+// 16.3, "Multiple Importance Sampling": Vertex::IsDeltaLight in MISWeight; pbrt-v4's BDPTIntegrator the
+// same). Its delta position or direction is common to every other strategy (each samples y0 by picking
+// the light), so it cancels from their ratios: y1's densities are the ones that differ, a direction
+// density from a point or spot light converted to area at y1, or from a directional light the disk's
+// area density projected onto y1.
 float misWeight(int s, int t, float zRevLast, float zRevPrev, float yRevLast, float yRevPrev, float yFwdFresh,
                 bool deltaLight) {
 #ifdef BDPT_LIGHT_TRACING_ONLY
@@ -207,12 +208,12 @@ int traceLightSubpath(int maxDepth) {
     // density is pdfDir converted to area, as from any other y0).
     float diskPdf = 0.0;
     if (e.punctual >= 0) {
-        // Emission from a punctual light (pbrt-v4 sections 12.2 and 12.3, SampleLe; pbrt-v3 16.3.1):
-        // y0 has the probability of the pick for its density (a delta position: pdfPos 1), and
-        // beta of y1 is I(w) / (pmf p(w)) for a point or spot light, w drawn by samplePunctualDirection;
-        // a directional light's rays start uniformly on the disk of radius r facing it, one radius behind
-        // the centre of the sphere that bounds the scene, so beta is E / (pmf / (pi r^2)) (its direction is
-        // a delta: pdfDir 1).
+        // Emission from a punctual light (pbrt-v4 sections 12.2 and 12.3, SampleLe; pbrt-v3 16.3,
+        // "Generating the Light Subpath"): y0 has the probability of the pick for its density (a delta
+        // position: pdfPos 1), and beta of y1 is I(w) / (pmf p(w)) for a point or spot light, w drawn by
+        // samplePunctualDirection; a directional light's rays start uniformly on the disk of radius r
+        // facing it, one radius behind the centre of the sphere that bounds the scene, so beta is
+        // E / (pmf / (pi r^2)) (its direction is a delta: pdfDir 1).
         gLightPunctual = true;
         PunctualLight l = fetchPunctualLight(e.punctual);
         vec3 origin = l.position;

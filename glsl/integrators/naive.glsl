@@ -3,7 +3,6 @@
 // pdf is 1 / (2 pi), so each bounce weighs f cos(theta) / pdf = 2 * albedo * cos(theta).
 // Uniform directions cannot find a mirror's or a glass's single direction, so those surfaces (and the
 // other non-Lambertian ones) are sampled by their BSDF instead.
-// Like bsdf.glsl it finds light only by hitting it, so punctual lights do not light its image.
 vec3 radiance(Ray ray) {
     vec3 L = vec3(0.0), beta = vec3(1.0);
     for (int depth = 0;; ++depth) {
@@ -33,5 +32,7 @@ vec3 radiance(Ray ray) {
         if (!survivesRoulette(beta, depth)) break;
         ray = spawnRay(s, dir);
     }
+    // Light is found only where a path hits it, so point, spot and directional lights, which nothing can
+    // hit, do not light this image (as in bsdf.glsl; the renderer warns).
     return L + takeIndirect();
 }

@@ -2,10 +2,7 @@
 // light sample and a BSDF sample each estimate direct lighting, and the power heuristic weighs the
 // two so that each covers the paths the other samples badly. Light found by a BSDF-sampled ray is
 // weighted against the density light sampling would have had for it; after a delta lobe (mirror,
-// glass), which light sampling cannot reach, it counts in full. Punctual lights (point, spot,
-// directional) are delta lights that only light sampling can find: their samples count in full (weight
-// 1, as pbrt-v4's PathIntegrator::SampleLd, section 13.4), and light they send through a mirror or smooth
-// glass onto a diffuse surface (a caustic) is not found at all here (bdpt finds it).
+// glass), which light sampling cannot reach, it counts in full.
 vec3 radiance(Ray ray) {
     vec3 L = vec3(0.0), beta = vec3(1.0);
     float lastPdf = 0.0;      // solid-angle density of the direction that led here
@@ -31,9 +28,14 @@ vec3 radiance(Ray ray) {
             vec3 wi = toLocal(s, ls.dir);
             if (ls.pdf > 0.0 && sameSide(s, wi, ls.dir)) {
                 vec3 f = bsdfEval(s.material, wo, wi, s.eta);
-                if (f != vec3(0.0) && lightVisible(s, ls))
-                    addLight(L, beta * f * ls.radiance * (ls.delta ? 1.0 : powerHeuristic(ls.pdf, bsdfPdf(s.material, wo, wi, s.eta))) / ls.pdf,
-                             depth + 1);
+                if (f != vec3(0.0) && lightVisible(s, ls)) {
+                    float w = ls.delta ? 1.0 : powerHeuristic(ls.pdf, bsdfPdf(s.material, wo, wi, s.eta));
+                    // A punctual light (point, spot, directional) is a delta light that only light
+                    // sampling can find: weight 1, as in pbrt-v4's PathIntegrator::SampleLd (section
+                    // 13.4). The light such a light sends through a mirror or smooth glass onto a diffuse
+                    // surface (a caustic) is not found here at all (bdpt finds it).
+                    addLight(L, beta * f * ls.radiance * w / ls.pdf, depth + 1);
+                }
             }
         }
 
