@@ -33,8 +33,8 @@ namespace fp {
 namespace {
 
 // Not the scene file's size: that is meant for one final render, the study renders hundreds.
-constexpr unsigned kStudyOptions =
-    kSizeOption | kPathOptions | kSamplingOptions | kCameraOptions | kShaderOptions | kBackendOption;
+constexpr unsigned kStudyOptions = kSizeOption | kPathOptions | kSamplingOptions | kCameraOptions |
+                                   kShaderOptions | kBackendOption | kSceneOptions;
 FrontEndDefaults studyDefaults() {
     FrontEndDefaults d;
     d.size = {128, 128};
