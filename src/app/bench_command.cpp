@@ -108,7 +108,7 @@ int benchOneScene(const Args& args, const bench::BenchSettings& settings, std::o
         Scene scene = settings.request->loadScene();
         // Checked as soon as the scene is read (a loop over its materials, nothing timed notices), so
         // that a scene the reference cannot render stops the command before any measuring.
-        if (withNative) refuseWhatNativeLacks(scene);
+        if (withNative) refuseWhatNativeLacks(scene, settings);
         return scene;
     };
     SceneMeasurement m = measureScene(load, settings);

@@ -35,15 +35,7 @@ namespace {
 // Not the scene file's size: that is meant for one final render, the study renders hundreds.
 constexpr unsigned kStudyOptions = kSizeOption | kPathOptions | kSamplingOptions | kCameraOptions |
                                    kShaderOptions | kBackendOption | kSceneOptions;
-FrontEndDefaults studyDefaults() {
-    FrontEndDefaults d;
-    d.size = {128, 128};
-    d.sceneSize = false;
-    d.spp = 0;
-    d.sceneSpp = false;
-    return d;
-}
-const FrontEndDefaults kStudyDefaults = studyDefaults();
+const FrontEndDefaults kStudyDefaults = FrontEndDefaults::ownImage({128, 128}, 0);
 
 std::vector<OptionGroup> studyOptions() {
     return commandOptions(
