@@ -59,7 +59,7 @@ const char* kBenchNotes =
 // A benchmark run is not one final image: its spp is a measuring choice (the scene file's is ignored),
 // and the suite renders every scene at one size.
 constexpr unsigned kBenchOptions = kSizeOption | kSppOption | kIntegratorOption | kPathOptions |
-                                   kSamplingOptions | kCameraOptions | kShaderOptions;
+                                   kSamplingOptions | kCameraOptions | kShaderOptions | kSceneOptions;
 FrontEndDefaults benchDefaults(bool suite) {
     FrontEndDefaults d = FrontEndDefaults::ownImage(glm::ivec2(suite ? 256 : 512), suite ? 2 : 8);
     d.sceneSize = !suite;
@@ -169,6 +169,8 @@ int benchCommand(const std::vector<std::string>& argv) {
         for (const char* flag : {"--max-triangles", "--scenes", "--with-bunny"})
             if (args.has(flag)) throw Error(std::string(flag) + " only goes with --suite");
     if (suite && !args.positional().empty()) throw Error("bench --suite takes no scene file");
+    if (suite && args.has("--environment"))
+        throw Error("--environment goes with a scene file, not --suite (the suite's scenes are lit)");
     const RenderRequest request(args, benchDefaults(suite));
 
     bench::BenchSettings settings;

@@ -33,8 +33,8 @@ namespace fp {
 namespace {
 
 // Not the scene file's size: that is meant for one final render, the study renders hundreds.
-constexpr unsigned kStudyOptions =
-    kSizeOption | kPathOptions | kSamplingOptions | kCameraOptions | kShaderOptions | kBackendOption;
+constexpr unsigned kStudyOptions = kSizeOption | kPathOptions | kSamplingOptions | kCameraOptions |
+                                   kShaderOptions | kBackendOption | kSceneOptions;
 const FrontEndDefaults kStudyDefaults = FrontEndDefaults::ownImage({128, 128}, 0);
 
 std::vector<OptionGroup> studyOptions() {
