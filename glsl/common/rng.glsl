@@ -49,6 +49,23 @@ void rngInitSecondStream(uint seed, uvec2 pixel, uint sampleIndex) {
     rngKey.w = kSecondStream;
 }
 
+// Pairs taken out of the order of the calls, by number (randAt): the lens point of a thin-lens camera
+// has a pair of its own (in each stream), so that a pinhole, which draws none, and a lens that does both
+// leave every other dimension where it was: with aperture 0 the image is bit for bit the pinhole's.
+const uint kLensPair = 0x40000000u;  // far beyond the few hundred pairs a path draws, below kSecondStream
+
+vec2 rand2();
+
+// The 2D point of pair `pair` of the current stream (the camera's or bdpt's light stream), without moving
+// the stream on.
+vec2 randAt(uint pair) {
+    uint counter = rngKey.w;
+    rngKey.w = (counter & kSecondStream) + pair;
+    vec2 u = rand2();
+    rngKey.w = counter;
+    return u;
+}
+
 #if SAMPLER == 1
 // ---- Owen-scrambled Sobol points, their error spread as blue noise (the default, `--sampler sobol`) ----
 // Burley 2020, "Practical Hash-based Owen Scrambling", JCGT 9(4). Every call of rand2() takes the next
@@ -81,7 +98,9 @@ void rngInitSecondStream(uint seed, uvec2 pixel, uint sampleIndex) {
 // Dimension layout (the order of the calls): pair 0 the pixel jitter; then per bounce, nee: light
 // choice, emitter pick, point on the emitter (2D), BSDF direction (2D), BSDF lobe, roulette; bsdf and
 // naive: BSDF direction, lobe, roulette; bdpt's light subpath starts at pair 2^31 (its second stream,
-// scrambled per pixel: see rand2).
+// scrambled per pixel: see rand2). Out of that order (randAt, below): the lens of a thin-lens camera,
+// pair 2^30 of the camera stream, and in the light stream pairs 2^31 + 2^30 + 2s for light tracing's
+// lens point toward light vertex s (camera.glsl; 2s: independent numbers take one counter per number).
 
 // Laine & Karras 2011 style permutation, with Burley's constants: flips each bit of x depending on
 // the bits below it only.

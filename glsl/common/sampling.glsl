@@ -38,6 +38,24 @@ vec3 sampleCosineLocal(vec2 u) {
     return vec3(r * cos(phi), r * sin(phi), sqrt(max(0.0, 1.0 - u.x)));
 }
 
+// Uniform on the unit disc by Shirley & Chiu's concentric map (1997, "A Low Distortion Map Between Disk
+// and Square"; pbrt-v4 A.5.1): concentric squares of [-1, 1]^2 go to concentric circles, area-preserving
+// and continuous, so stratified u stay stratified on the disc (the lens of camera.glsl); pdf = 1 / pi.
+// The same map as concentricDisk in src/scene/camera.cpp.
+vec2 sampleConcentricDisk(vec2 u) {
+    vec2 s = 2.0 * u - 1.0;
+    if (s.x == 0.0 && s.y == 0.0) return vec2(0.0);
+    float r, phi;
+    if (abs(s.x) > abs(s.y)) {
+        r = s.x;
+        phi = 0.25 * PI * (s.y / s.x);
+    } else {
+        r = s.y;
+        phi = 0.5 * PI - 0.25 * PI * (s.x / s.y);
+    }
+    return r * vec2(cos(phi), sin(phi));
+}
+
 // Uniform barycentrics (b1, b2) on a triangle, pdf = 1 / area (the square-root map, pbrt-v3 13.6.5).
 vec2 sampleTriangle(vec2 u) {
     float su = sqrt(u.x);

@@ -3,22 +3,24 @@
 //
 // Each sample traces a light subpath y0 y1 ... (y0 uniformly on an emissive triangle picked by power, as
 // lights.glsl picks it; the first direction cosine-weighted from the emitting front face) and a camera
-// subpath z0 z1 ... (z0 the pinhole), and joins every prefix pair: strategy (s, t) uses s light and t
-// camera vertices, a path of s + t vertices and s + t - 1 edges (bounces = s + t - 2, so --max-depth D
-// allows s + t <= D + 2, exactly the paths nee and bsdf sum).
+// subpath z0 z1 ... (z0 the pinhole, or a point of a thin lens), and joins every prefix pair: strategy
+// (s, t) uses s light and t camera vertices, a path of s + t vertices and s + t - 1 edges (bounces =
+// s + t - 2, so --max-depth D allows s + t <= D + 2, exactly the paths nee and bsdf sum).
 //
-// Strategies included (all of them for a pinhole camera, up to the light-subpath limit below):
+// Strategies included (all of them for a pinhole camera, up to the light-subpath limit below; a thin lens
+// is not part of the scene, so t = 0, a light subpath that reaches it, is left out as in pbrt):
 //   s = 0, t >= 2  the camera subpath hits the front face of an emitter (or escapes to the environment)
 //   s = 1, t >= 2  next-event style: z_{t-1} joined to a point sampled afresh on an emitter
 //   s >= 2, t >= 2 z_{t-1} joined to y_{s-1} by one shadow ray
-//   s >= 1, t = 1  light tracing: y_{s-1} (y0 too, an emitter facing the camera) joined to the pinhole by
-//                  one shadow ray. Its contribution lands on the pixel y_{s-1} projects to, not on the
+//   s >= 1, t = 1  light tracing: y_{s-1} (y0 too, an emitter facing the camera) joined to the pinhole (or
+//                  to a point sampled on the lens) by one shadow ray. Its contribution lands on the pixel y_{s-1} projects to, not on the
 //                  pixel whose sample traced the light subpath, so this file does not compute it: the
 //                  light-tracing pass (passes/light_trace.frag.glsl, src/render/light_splat.h) traces the
 //                  same light subpath of each sample (traceLightSubpathFor) and adds those contributions
 //                  into a light image; the estimate is camera image mean + light image / N, N the light
 //                  paths per pixel so far (pbrt-v3 16.3: splats are scaled by 1 / spp).
-//   t = 0 cannot happen with a pinhole camera (its position is a point nothing can hit).
+//   t = 0 cannot happen with a pinhole camera (its position is a point nothing can hit), and is not used
+//        with a lens.
 // The weights (misWeight) are the power heuristic over exactly these strategies, with
 // s <= BDPT_MAX_LIGHT_VERTICES. A caustic seen directly on a diffuse floor through smooth glass
 // (light -> glass -> glass -> floor -> camera) has two joinable edges, at its two ends: s = 0 (the camera

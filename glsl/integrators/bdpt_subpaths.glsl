@@ -154,7 +154,8 @@ float misWeight(int s, int t, float zRevLast, float zRevPrev, float yRevLast, fl
 #endif
     float sum = 0.0;
     // Fewer camera vertices: strategy (s + t - i, i) makes z_i a light vertex; i = 1 is light tracing
-    // (z_1 joined to the pinhole z_0, which is never delta: its direction is sampled over the film).
+    // (z_1 joined to z_0, the pinhole or a lens point, which is never delta: its direction is sampled over
+    // the film; a lens point's own density is the same in every strategy and cancels).
     float r = 1.0;
     for (int i = t - 1; i >= 1; --i) {
         if (s + t - i > BDPT_MAX_LIGHT_VERTICES) break;

@@ -1,7 +1,7 @@
 // Light tracing, bdpt's strategies t = 1 (see integrators/bdpt.glsl): each fragment traces the light
 // subpath of sample uLightSample of its pixel (the same subpath the camera pass joins to), joins each of
-// its vertices y_{s-1} to the pinhole by a shadow ray, and writes one record per vertex: the weighted
-// contribution and the pixel it lands on. The splat pass (light_splat.*.glsl) then adds the records
+// its vertices y_{s-1} to the pinhole (or to a point of a thin lens) by a shadow ray, and writes one record
+// per vertex: the weighted contribution and the pixel it lands on. The splat pass (light_splat.*.glsl) then adds the records
 // into the light image.
 #include "common/rng.glsl"
 #include "common/sampling.glsl"
@@ -29,10 +29,15 @@ layout(location = BDPT_MAX_LIGHT_VERTICES) out vec4 outStats;
 // 16.3.2, "t = 1"), the pinhole's alpha^E_1 being 1 (a delta position sampled with density 1): with
 // G = |cos theta_y| cos theta_camera / r^2 and the cosine at y inside f (vertexBsdf). At y0 on an emitter,
 // "f" is the emitter's directional distribution: 1 in front, 0 behind, Le being in alpha^L_1 = Le / p_A.
+// With a thin lens z0 is a point of the lens picked uniformly by area (pbrt-v4
+// PerspectiveCamera::SampleWi), from a pair of the light stream of its own for each s (rng.glsl), so
+// alpha^E_1 = L (the lens area) and L We is cameraImportance (camera.glsl); the contribution lands on the
+// pixel whose rays through that lens point include the one toward y.
 vec3 lightToCamera(int s, out vec2 pixel) {
     PathVertex y = gLight[s - 1];
-    if (!projectToPixel(y.p, pixel)) return vec3(0.0);
-    vec3 d = uCameraEye - y.p;  // toward the camera
+    vec3 lens = uLensRadius > 0.0 ? lensPoint(randAt(kLensPair + 2u * uint(s))) : uCameraEye;
+    if (!projectThroughLens(lens, y.p, pixel)) return vec3(0.0);
+    vec3 d = lens - y.p;  // toward the camera
     float dist2 = dot(d, d);
     if (dist2 == 0.0) return vec3(0.0);
     d *= inversesqrt(dist2);
@@ -50,10 +55,11 @@ vec3 lightToCamera(int s, out vec2 pixel) {
         if (f == vec3(0.0)) return vec3(0.0);
         yRevPrev = toArea(vertexPdf(y, m, d, y.wo), y.p, gLight[s - 2]);
     }
-    // The density with which the camera would have sampled y (through its pixel), for the weights.
-    float yRevLast = toArea(cameraDirectionPdf(-d), uCameraEye, y);
+    // The density with which the camera would have sampled y (through its pixel, from this lens point),
+    // for the weights.
+    float yRevLast = toArea(cameraDirectionPdf(-d), lens, y);
     float w = misWeight(s, 1, 0.0, 0.0, yRevLast, yRevPrev, s == 1 ? y.pdfFwd : 0.0, gLightPunctual);
-    PathVertex eye = PathVertex(uCameraEye, uCameraForward, uCameraForward, uCameraForward, vec3(1.0), 0, 1.0,
+    PathVertex eye = PathVertex(lens, uCameraForward, uCameraForward, uCameraForward, vec3(1.0), 0, 1.0,
                                 1.0, 0.0, false, false, 0.0);
     if (!unoccluded(y, eye)) return vec3(0.0);
     float cosCamera = dot(-d, uCameraForward);
@@ -66,6 +72,7 @@ void main() {
     gWavelength = 0.0;
     gSpectralWeight = vec3(1.0);
     int n = traceLightSubpathFor(uvec2(pixel), uLightSample, min(uMaxDepth, BDPT_MAX_DEPTH));
+    rngInitSecondStream(uSeed, uvec2(pixel), uLightSample);  // for the lens points (randAt)
     float dropped = 0.0;
     for (int s = 1; s <= BDPT_MAX_LIGHT_VERTICES; ++s) {
         vec4 record = vec4(0.0, 0.0, 0.0, -1.0);

@@ -47,8 +47,8 @@ void main() {
         rngInit(uSeed, uvec2(pixel), firstSample + uint(i));
         gWavelength = 0.0;
 #if DEBUG_VIEW == 0 || DEBUG_VIEW == VIEW_BOUNCES || DEBUG_VIEW == VIEW_COST
-        // Box filter: a uniformly jittered position inside the pixel.
-        Ray ray = cameraRay(vec2(pixel) + rand2());
+        // Box filter: a uniformly jittered position inside the pixel (and with a lens, a point on it).
+        Ray ray = primaryRay(vec2(pixel) + rand2());
 #else
         Ray ray = cameraRay(vec2(pixel) + 0.5);
 #endif

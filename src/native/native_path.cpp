@@ -16,6 +16,9 @@ constexpr float kPi = 3.14159265358979324f;
 // glsl/common/rng.glsl: counter-based. Number i of sample k at pixel p hashes the key
 // (p.x | p.y << 16, k, seed, i) with pcg4d, a bijection of four 32-bit words (Jarzynski & Olano 2020,
 // "Hash Functions for GPU Rendering", JCGT 9(3)), so distinct keys never share a number.
+// glsl/common/rng.glsl: the lens's numbers come from their own place in the stream.
+constexpr uint32_t kLensPair = 0x40000000u;
+
 struct Rng {
     // pcg4d's first step, v * 1664525 + 1013904223, done once for the three words that stay fixed.
     uint32_t x, y, z, counter = 0;
@@ -341,13 +344,8 @@ Result render(const Scene& scene, const Camera& camera, const Settings& settings
     out.squares = out.sum;
 
     // glsl/common/camera.glsl with the basis Renderer::draw computes.
-    glm::vec3 forward = glm::normalize(camera.target - camera.eye);
-    glm::vec3 rightUnit = glm::normalize(glm::cross(forward, camera.up));
-    glm::vec3 up = glm::cross(rightUnit, forward);
-    float tanHalf = std::tan(0.5f * glm::radians(camera.fovY));
-    float aspect = float(settings.width) / float(settings.height);
-    glm::vec3 right = rightUnit * tanHalf * aspect;
-    up *= tanHalf;
+    const CameraFrame frame = cameraFrame(camera, float(settings.width) / float(settings.height));
+    const glm::vec3 rightUnit = glm::normalize(frame.right), upUnit = glm::normalize(frame.up);
     glm::vec2 resolution(settings.width, settings.height);
 
     PathTracer tracer(scene, settings.maxDepth);
@@ -359,7 +357,20 @@ Result render(const Scene& scene, const Camera& camera, const Settings& settings
                 Rng rng(settings.seed, uint32_t(x), uint32_t(y), settings.sampleOffset + uint32_t(i));
                 float jx = rng.next(), jy = rng.next();
                 glm::vec2 ndc = 2.0f * (glm::vec2(x, y) + glm::vec2(jx, jy)) / resolution - 1.0f;
-                Ray ray{camera.eye, glm::normalize(forward + ndc.x * right + ndc.y * up)};
+                glm::vec3 pinhole = frame.forward + ndc.x * frame.right + ndc.y * frame.up;
+                Ray ray{frame.eye, glm::normalize(pinhole)};
+                if (frame.lensRadius > 0.0f) {
+                    // The thin lens of camera.glsl (pbrt-v4 5.2.3): from a point of the lens toward where
+                    // the pinhole ray meets the plane of focus. Its numbers are the shader's: counters
+                    // kLensPair and the next (rng.glsl, randAt), out of the stream's order.
+                    uint32_t counter = rng.counter;
+                    rng.counter = kLensPair;
+                    float lx = rng.next(), ly = rng.next();
+                    rng.counter = counter;
+                    glm::vec2 d = frame.lensRadius * concentricDisk(glm::vec2(lx, ly));
+                    glm::vec3 origin = frame.eye + d.x * rightUnit + d.y * upUnit;
+                    ray = Ray{origin, glm::normalize(frame.eye + frame.focusDistance * pinhole - origin)};
+                }
                 glm::vec3 c = tracer.radiance(ray, rng);
                 if (!std::isfinite(c.x) || !std::isfinite(c.y) || !std::isfinite(c.z)) c = glm::vec3(0.0f);
                 out.sum[index] += glm::vec4(c, 1.0f);

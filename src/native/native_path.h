@@ -1,7 +1,7 @@
 #pragma once
 // The native reference's path tracer: next-event estimation with MIS on Lambertian surfaces, the
 // algorithm of glsl/integrators/nee.glsl step for step (same random stream per pixel and sample, same
-// camera, light selection, power heuristic and Russian roulette), on one thread.
+// camera, a thin lens included, light selection, power heuristic and Russian roulette), on one thread.
 #include <cstdint>
 #include <vector>
 

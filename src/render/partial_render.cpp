@@ -95,6 +95,12 @@ std::string renderFingerprint(const Scene& scene, const RenderSettings& settings
     f.value(camera.target);
     f.value(camera.up);
     f.value(camera.fovY);
+    // The lens only when there is one, so that a pinhole's fingerprint is what it was before lenses
+    // existed (its saved renders still resume and merge); then the focus distance it renders with.
+    if (camera.aperture > 0.0f) {
+        f.value(camera.aperture);
+        f.value(resolvedFocusDistance(camera));
+    }
     f.value(settings.width);
     f.value(settings.height);
     f.value(settings.maxDepth);

@@ -180,6 +180,13 @@ void Renderer::configure(const RenderSettings& settings, const Camera& camera) {
     if (settings.clampIndirect > 0.0f && (settings.integrator == Integrator::Bdpt ||
                                           (settings.split && settings.split->integrator == Integrator::Bdpt)))
         throw Error("the indirect clamp is implemented for nee, bsdf and naive, not for bdpt");
+    // The request and the scene file check the camera (validateCamera); the viewer's panel too, but a
+    // focus distance left to the eye-target distance can still overflow.
+    if (!(camera.aperture >= 0.0f) || !std::isfinite(camera.aperture))
+        throw Error("the aperture must be a finite number, 0 (a pinhole) or more");
+    float focus = resolvedFocusDistance(camera);
+    if (camera.aperture > 0.0f && !(focus > 0.0f && std::isfinite(focus)))
+        throw Error("the focus distance must be a finite number above 0");
     bool splitChanged = settings.split.has_value() != settings_.split.has_value() ||
                         (settings.split && settings.split->integrator != settings_.split->integrator);
     bool recompile = !program_ || settings.integrator != settings_.integrator ||
@@ -250,15 +257,13 @@ void Renderer::setTraceUniforms(Program& p, int maxDepth) {
     p.set("uClampIndirect", settings_.clampIndirect);
 
     // Camera basis: right and up are scaled so that normalised device coordinates map onto the image plane.
-    glm::vec3 forward = glm::normalize(camera_.target - camera_.eye);
-    glm::vec3 right = glm::normalize(glm::cross(forward, camera_.up));
-    glm::vec3 up = glm::cross(right, forward);
-    float tanHalf = std::tan(0.5f * glm::radians(camera_.fovY));
-    float aspect = float(settings_.width) / float(settings_.height);
-    p.set("uCameraEye", camera_.eye);
-    p.set("uCameraForward", forward);
-    p.set("uCameraRight", right * tanHalf * aspect);
-    p.set("uCameraUp", up * tanHalf);
+    CameraFrame frame = cameraFrame(camera_, float(settings_.width) / float(settings_.height));
+    p.set("uCameraEye", frame.eye);
+    p.set("uCameraForward", frame.forward);
+    p.set("uCameraRight", frame.right);
+    p.set("uCameraUp", frame.up);
+    p.set("uLensRadius", frame.lensRadius);
+    p.set("uFocusDistance", frame.focusDistance);
     p.set("uResolution", glm::vec2(settings_.width, settings_.height));
     textures_->bind(stats_.sceneReads);
 }

@@ -87,6 +87,12 @@ std::vector<OptionGroup> requestOptionGroups(unsigned options, const FrontEndDef
         camera.options.push_back({"--fov", "", "DEG",
                                   "vertical field of view in degrees\n(each default: the scene file's "
                                   "camera, else one that frames the scene)"});
+        camera.options.push_back({"--aperture", "", "A",
+                                  "thin-lens depth of field: the lens diameter in scene units\n(default: "
+                                  "the scene file's, else 0, a pinhole: everything sharp)"});
+        camera.options.push_back({"--focus-distance", "", "F",
+                                  "distance from the eye to the plane in focus, along the view\n(default: "
+                                  "the scene file's, else the distance from eye to target)"});
     }
     if (options & kViewOption)
         display.options.push_back(
@@ -151,6 +157,12 @@ RenderRequest::RenderRequest(const Args& args, const FrontEndDefaults& defaults)
     target_ = args.vec3("--target");
     up_ = args.vec3("--up");
     fov_ = args.number("--fov");
+    aperture_ = args.number("--aperture");
+    if (aperture_ && !(*aperture_ >= 0.0f))
+        throw Error("option --aperture: must be 0 (a pinhole) or more (the lens diameter in scene units)");
+    focusDistance_ = args.number("--focus-distance");
+    if (focusDistance_ && !(*focusDistance_ > 0.0f))
+        throw Error("option --focus-distance: must be above 0 (the distance to the plane in focus)");
     display_.exposure = args.number("--exposure").value_or(0.0f);
     if (auto t = args.text("--tonemap")) display_.toneMap = parseToneMap(*t);
     shaderDir_ = args.text("--shader-dir").value_or("");
@@ -223,6 +235,8 @@ Camera RenderRequest::camera(const Scene& scene) const {
     if (target_) camera.target = *target_;
     if (up_) camera.up = *up_;
     if (fov_) camera.fovY = *fov_;
+    if (aperture_) camera.aperture = *aperture_;
+    if (focusDistance_) camera.focusDistance = *focusDistance_;
     validateCamera(camera, "camera");  // flags can break a valid scene camera
     return camera;
 }

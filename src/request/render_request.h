@@ -26,7 +26,7 @@ enum RequestOption : unsigned {
     kIntegratorOption = 1u << 2,  // --integrator NAME
     kPathOptions = 1u << 3,       // --max-depth D, --seed S
     kSamplingOptions = 1u << 4,   // --sampler, --light-sampling, --clamp-indirect, --samples-per-pass
-    kCameraOptions = 1u << 5,     // --eye, --target, --up, --fov
+    kCameraOptions = 1u << 5,     // --eye, --target, --up, --fov, --aperture, --focus-distance
     kViewOption = 1u << 6,        // --view NAME
     kDisplayOptions = 1u << 7,    // --exposure, --tonemap
     kShaderOptions = 1u << 8,     // --shader-dir, --bvh-threads
@@ -101,7 +101,7 @@ class RenderRequest {
     std::optional<float> clampIndirect_;
     std::optional<View> view_;
     std::optional<glm::vec3> eye_, target_, up_;
-    std::optional<float> fov_;
+    std::optional<float> fov_, aperture_, focusDistance_;
     DisplaySettings display_;
     std::string shaderDir_, backend_ = "auto";
     int bvhThreads_ = 0;

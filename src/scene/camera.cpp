@@ -20,6 +20,44 @@ Camera frameBounds(const Aabb& bounds, float fovY) {
     return camera;
 }
 
+float resolvedFocusDistance(const Camera& camera) {
+    return camera.focusDistance.value_or(glm::length(camera.target - camera.eye));
+}
+
+// The same operations, in the same order, as the renderer has always used for its uniforms, so that a
+// pinhole's rays stay bit for bit what they were.
+CameraFrame cameraFrame(const Camera& camera, float aspect) {
+    CameraFrame f;
+    f.eye = camera.eye;
+    f.forward = glm::normalize(camera.target - camera.eye);
+    glm::vec3 right = glm::normalize(glm::cross(f.forward, camera.up));
+    glm::vec3 up = glm::cross(right, f.forward);
+    float tanHalf = std::tan(0.5f * glm::radians(camera.fovY));
+    f.right = right * tanHalf * aspect;
+    f.up = up * tanHalf;
+    f.lensRadius = 0.5f * camera.aperture;
+    f.focusDistance = resolvedFocusDistance(camera);
+    return f;
+}
+
+glm::vec2 concentricDisk(glm::vec2 u) {
+    // The square [-1, 1]^2 in concentric squares onto concentric circles: in the wedges |x| > |y| the
+    // radius is x and the angle grows linearly with y / x over [-pi/4, pi/4]; elsewhere the same with
+    // the axes exchanged.
+    glm::vec2 s = 2.0f * u - 1.0f;
+    if (s.x == 0.0f && s.y == 0.0f) return glm::vec2(0.0f);
+    constexpr float kQuarterPi = 0.785398163397448f;
+    float r, phi;
+    if (std::abs(s.x) > std::abs(s.y)) {
+        r = s.x;
+        phi = kQuarterPi * (s.y / s.x);
+    } else {
+        r = s.y;
+        phi = 2.0f * kQuarterPi - kQuarterPi * (s.x / s.y);
+    }
+    return r * glm::vec2(std::cos(phi), std::sin(phi));
+}
+
 }  // namespace fp
 
 namespace fp {
@@ -39,6 +77,15 @@ void validateCamera(const Camera& c, const std::string& where) {
     if (!(c.fovY > 0.0f && c.fovY < 180.0f))
         throw Error(where + ".fov must be in (0, 180) degrees (the vertical field of view), got " +
                     std::to_string(c.fovY));
+    if (!(c.aperture >= 0.0f) || !std::isfinite(c.aperture))
+        throw Error(where +
+                    ".aperture must be a finite number, 0 (a pinhole) or more (the lens diameter), got " +
+                    std::to_string(c.aperture));
+    if (c.focusDistance && (!(*c.focusDistance > 0.0f) || !std::isfinite(*c.focusDistance)))
+        throw Error(
+            where +
+            ".focus_distance must be a finite number above 0 (the distance to the plane in focus), got " +
+            std::to_string(*c.focusDistance));
 }
 
 }  // namespace fp

@@ -61,12 +61,41 @@ struct Triangle {
     }
 };
 
+// A perspective camera: a pinhole, or a thin lens (pbrt-v4 section 5.2.3; Kolb et al. 1995) when
+// aperture > 0. The lens is a disc of diameter `aperture` centred on the eye, perpendicular to the view
+// direction; the plane in focus is perpendicular to the view direction at focusDistance from the eye
+// (measured along the view direction, as pbrt's focaldistance). A point at that depth is imaged sharp;
+// one at depth d spreads over a disc of diameter aperture * |d - f| / d on the plane of focus (the
+// circle of confusion).
 struct Camera {
     glm::vec3 eye{0.0f, 0.0f, 1.0f};
     glm::vec3 target{0.0f};
     glm::vec3 up{0.0f, 1.0f, 0.0f};
     float fovY = 40.0f;  // vertical field of view in degrees, in (0, 180)
+    // The lens's diameter in scene units (pbrt's lensradius is half of it); 0: a pinhole, nothing blurs.
+    float aperture = 0.0f;
+    // Distance from the eye to the plane in focus, > 0; unset: |target - eye|, the target in focus.
+    std::optional<float> focusDistance = std::nullopt;
 };
+
+// The distance to the plane in focus: camera.focusDistance, else the distance from eye to target.
+float resolvedFocusDistance(const Camera& camera);
+
+// The camera's frame as every renderer uses it (glsl/common/camera.glsl): `right` and `up` are the unit
+// basis vectors scaled by tan(fovY / 2) (and `right` by the aspect ratio width / height as well), so the
+// point of the image plane at normalised device coordinates (x, y) in [-1, 1]^2 lies at
+// eye + forward + x * right + y * up, one unit in front of the eye.
+struct CameraFrame {
+    glm::vec3 eye{0.0f}, forward{0.0f, 0.0f, 1.0f}, right{1.0f, 0.0f, 0.0f}, up{0.0f, 1.0f, 0.0f};
+    float lensRadius = 0.0f;     // aperture / 2; 0: a pinhole
+    float focusDistance = 1.0f;  // along forward
+};
+CameraFrame cameraFrame(const Camera& camera, float aspect);
+
+// Shirley & Chiu 1997, "A Low Distortion Map Between Disk and Square" (the concentric map; pbrt-v4
+// A.5.1): [0, 1)^2 onto the unit disc, area-preserving, so a uniform (or stratified) u gives uniform
+// (stratified) points on the disc. glsl/common/sampling.glsl has the same map.
+glm::vec2 concentricDisk(glm::vec2 u);
 
 // Optional render settings a scene file may carry; command-line flags override them.
 struct RenderDefaults {

@@ -125,7 +125,7 @@ std::string withoutId(const json::exception& e) {
 
 Camera parseCamera(const json& camera, Fields& fields) {
     fields.object(camera, "camera");
-    fields.checkKeys(camera, "camera.", {"eye", "target", "up", "fov"});
+    fields.checkKeys(camera, "camera.", {"eye", "target", "up", "fov", "aperture", "focus_distance"});
     bool hasEye = camera.contains("eye"), hasTarget = camera.contains("target");
     // Defaulting one of the two would put the camera somewhere the author did not choose.
     if (!hasEye || !hasTarget)
@@ -136,6 +136,9 @@ Camera parseCamera(const json& camera, Fields& fields) {
     c.target = fields.vec3(camera["target"], "camera.target");
     if (camera.contains("up")) c.up = fields.vec3(camera["up"], "camera.up");
     if (camera.contains("fov")) c.fovY = fields.real(camera["fov"], "camera.fov");
+    if (camera.contains("aperture")) c.aperture = fields.real(camera["aperture"], "camera.aperture");
+    if (camera.contains("focus_distance"))
+        c.focusDistance = fields.real(camera["focus_distance"], "camera.focus_distance");
 
     try {
         validateCamera(c, "camera");

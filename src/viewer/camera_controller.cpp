@@ -41,6 +41,8 @@ double clampToward(double current, double proposed, double lo, double hi) {
 bool usable(const Camera& c) {
     if (!finite(c.eye) || !finite(c.target) || !finite(c.up) || !std::isfinite(c.fovY)) return false;
     if (!(c.fovY > 0.0f && c.fovY < 180.0f)) return false;
+    if (!(c.aperture >= 0.0f && std::isfinite(c.aperture))) return false;
+    if (c.focusDistance && !(*c.focusDistance > 0.0f && std::isfinite(*c.focusDistance))) return false;
     if (!(maxAbs(c.eye) <= kMaxCoordinate && maxAbs(c.target) <= kMaxCoordinate)) return false;
     glm::vec3 view = c.target - c.eye;
     float viewLength = glm::length(view);
@@ -55,7 +57,8 @@ bool usable(const Camera& c) {
 }
 
 bool sameCamera(const Camera& a, const Camera& b) {
-    return a.eye == b.eye && a.target == b.target && a.up == b.up && a.fovY == b.fovY;
+    return a.eye == b.eye && a.target == b.target && a.up == b.up && a.fovY == b.fovY &&
+           a.aperture == b.aperture && a.focusDistance == b.focusDistance;
 }
 
 // A unit vector perpendicular to the unit vector `up`: +z for up = +y, as Camera{} looks.
@@ -71,6 +74,9 @@ glm::dvec3 perpendicular(const glm::dvec3& up) {
 // that reset() reproduces it bit for bit.
 Camera repairHome(Camera c) {
     const Camera defaults;
+    if (!(c.aperture >= 0.0f && std::isfinite(c.aperture))) c.aperture = defaults.aperture;
+    if (c.focusDistance && !(*c.focusDistance > 0.0f && std::isfinite(*c.focusDistance)))
+        c.focusDistance = defaults.focusDistance;
     if (!std::isfinite(c.fovY))
         c.fovY = defaults.fovY;
     else if (!(c.fovY > 0.0f && c.fovY < 180.0f))
@@ -140,6 +146,8 @@ CameraController::CameraController(const Camera& home) : home_(repairHome(home))
     homeState_.eye = glm::dvec3(home_.eye);
     homeState_.target = glm::dvec3(home_.target);
     homeState_.fovY = home_.fovY;
+    homeState_.aperture = home_.aperture;
+    homeState_.focusDistance = home_.focusDistance;
     homeDistance_ = glm::length(homeState_.eye - homeState_.target);
     state_ = homeState_;
     camera_ = home_;
@@ -154,7 +162,12 @@ double CameraController::distance() const {
 }
 
 bool CameraController::commit(const State& next) {
-    Camera c{glm::vec3(next.eye), glm::vec3(next.target), home_.up, next.fovY};
+    Camera c = home_;
+    c.eye = glm::vec3(next.eye);
+    c.target = glm::vec3(next.target);
+    c.fovY = next.fovY;
+    c.aperture = next.aperture;
+    c.focusDistance = next.focusDistance;
     if (!usable(c)) return false;
     // The double state moves even when the rounded camera does not, so that many tiny steps add up.
     state_ = next;
@@ -234,6 +247,20 @@ void CameraController::setFov(float degrees) {
     if (!std::isfinite(degrees)) return;
     State next = state_;
     next.fovY = std::clamp(degrees, kMinFovDegrees, kMaxFovDegrees);
+    commit(next);
+}
+
+void CameraController::setAperture(float aperture) {
+    if (!std::isfinite(aperture)) return;
+    State next = state_;
+    next.aperture = std::max(aperture, 0.0f);
+    commit(next);
+}
+
+void CameraController::setFocusDistance(std::optional<float> distance) {
+    if (distance && !(*distance > 0.0f && std::isfinite(*distance))) return;
+    State next = state_;
+    next.focusDistance = distance;
     commit(next);
 }
 

@@ -29,6 +29,7 @@
 // distance, field of view) only ever stop a motion: they never push the camera back, so a home camera
 // that lies outside them is reproduced exactly and can still move back inside.
 #include <cstdint>
+#include <optional>
 
 #include <glm/glm.hpp>
 
@@ -79,6 +80,11 @@ class CameraController {
     void look(float yaw, float pitch);
     // Vertical field of view in degrees, clamped to [kMinFovDegrees, kMaxFovDegrees].
     void setFov(float degrees);
+    // The thin lens (Camera::aperture, Camera::focusDistance): the lens diameter in scene units (negative
+    // values become 0, a pinhole), and the distance to the plane in focus (unset: the target's distance,
+    // which then follows orbit and dolly); a focus distance that is not a finite number above 0 is ignored.
+    void setAperture(float aperture);
+    void setFocusDistance(std::optional<float> distance);
 
     // Increases by one each time camera() changes and only then: a call that leaves camera() exactly as it
     // was (zero motions, an ignored call, a motion stopped at a limit) keeps it.
@@ -91,6 +97,8 @@ class CameraController {
         glm::dvec3 eye{0.0};
         glm::dvec3 target{0.0};
         float fovY = 40.0f;
+        float aperture = 0.0f;
+        std::optional<float> focusDistance;
     };
 
     // Adopts `next` if the renderer can use it; bumps the version if camera() changes. False if ignored.

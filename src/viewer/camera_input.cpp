@@ -14,6 +14,7 @@ void CameraInput::update(const InputFrame& input, CameraController& camera) {
     glm::dvec2 delta = haveCursor_ ? input.cursor - lastCursor_ : glm::dvec2(0.0);
     lastCursor_ = input.cursor;
     haveCursor_ = true;
+    focusClick_.reset();
     double height = std::max(input.windowSize.y, 1);
     double lookPerPixel = glm::radians(double(camera.camera().fovY)) / height;
 
@@ -26,7 +27,9 @@ void CameraInput::update(const InputFrame& input, CameraController& camera) {
         // A drag starts only with a press outside the panel, and then owns the mouse until released,
         // even over the panel.
         if (drag_ == Drag::None && !input.uiWantsMouse) {
-            if (input.left && !wasLeft_)
+            if (input.left && !wasLeft_ && input.ctrl)
+                focusClick_ = input.cursor;  // a click, not a drag
+            else if (input.left && !wasLeft_)
                 drag_ = input.shift ? Drag::Pan : Drag::Orbit;
             else if (input.middle && !wasMiddle_)
                 drag_ = Drag::Pan;

@@ -7,7 +7,10 @@
 //   middle / shift+left  pan; the scene follows the mouse
 //   right drag           mouse look
 //   wheel                dolly toward / away from the target
+//   ctrl + left click    focus: reported as focusClick() for the viewer to measure the depth there
 //   fly mode             WASD move, Q/E down/up, the mouse looks (the window captures the cursor)
+#include <optional>
+
 #include <glm/glm.hpp>
 
 #include "viewer/camera_controller.h"
@@ -16,7 +19,7 @@ namespace fp {
 
 struct InputFrame {
     glm::dvec2 cursor{0.0};  // window coordinates, y down
-    bool left = false, middle = false, right = false, shift = false;
+    bool left = false, middle = false, right = false, shift = false, ctrl = false;
     // Fly keys held: W, S, A, D, Q (down), E (up).
     bool forward = false, back = false, strafeLeft = false, strafeRight = false, down = false, up = false;
     double scroll = 0.0;           // wheel notches since the last frame, > 0 away from the user
@@ -38,6 +41,10 @@ class CameraInput {
 
     void update(const InputFrame& input, CameraController& camera);
 
+    // Where a ctrl + left press outside the panel happened this update (window coordinates, y down): a
+    // click to focus there, which starts no drag. Empty in every other update.
+    const std::optional<glm::dvec2>& focusClick() const { return focusClick_; }
+
     bool flying() const { return flying_; }
     void setFlying(bool flying);
     Drag drag() const { return drag_; }
@@ -48,6 +55,7 @@ class CameraInput {
     bool haveCursor_ = false;
     glm::dvec2 lastCursor_{0.0};
     bool wasLeft_ = false, wasMiddle_ = false, wasRight_ = false;  // buttons last frame, to see presses
+    std::optional<glm::dvec2> focusClick_;
 };
 
 }  // namespace fp

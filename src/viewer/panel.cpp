@@ -21,6 +21,8 @@ const char* const kViewerControlsHelp =
     "middle drag      pan (or shift + left drag)\n"
     "right drag       look around\n"
     "wheel            dolly toward / away from the target\n"
+    "ctrl + click     focus on the surface under the cursor\n"
+    "                 (depth of field: set an aperture under camera)\n"
     "F                fly mode: W/A/S/D move, Q/E down/up,\n"
     "                 the mouse looks; F or Esc leaves\n"
     "R                reset to the scene's camera\n"
@@ -224,6 +226,27 @@ void cameraSettings(const PanelInfo& info, PanelActions& actions) {
     ImGui::SameLine();
     actions.resetCamera = ImGui::Button("reset (R)");
     const Camera& cam = info.camera;
+    // The thin lens. Scene units differ from scene to scene: the drags move by a small part of the focus
+    // distance per pixel.
+    const Camera& lens = info.camera;
+    float focus = resolvedFocusDistance(lens);
+    float aperture = lens.aperture;
+    float step = std::max(1e-6f, 0.002f * focus);
+    if (ImGui::DragFloat("aperture", &aperture, step, 0.0f, 1e30f, "%.4g"))
+        actions.aperture = std::max(aperture, 0.0f);
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("the lens diameter in scene units (depth of field); 0: a pinhole, all sharp");
+    if (ImGui::DragFloat("focus", &focus, 4.0f * step, 0.0f, 1e30f, "%.4g") && focus > 0.0f)
+        actions.focusDistance = focus;
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip(
+            "the distance to the plane in focus, along the view; ctrl + click on the image\n"
+            "focuses on the surface under the cursor");
+    if (lens.focusDistance) {
+        actions.focusOnTarget = ImGui::Button("focus on the target");
+    } else {
+        ImGui::TextDisabled("focus follows the target");
+    }
     ImGui::TextDisabled("eye    %.3g, %.3g, %.3g", double(cam.eye.x), double(cam.eye.y), double(cam.eye.z));
     ImGui::TextDisabled("target %.3g, %.3g, %.3g", double(cam.target.x), double(cam.target.y),
                         double(cam.target.z));

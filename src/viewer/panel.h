@@ -37,7 +37,9 @@ struct PanelActions {
     bool toggleFly = false;
     bool screenshot = false;
     bool fitHeatMap = false;
-    std::optional<float> fov;  // degrees
+    std::optional<float> fov;                      // degrees
+    std::optional<float> aperture, focusDistance;  // the thin lens (Camera)
+    bool focusOnTarget = false;                    // back to the target's distance
 };
 
 // The panel's window. Its height follows its contents, which it measures as it draws them.

@@ -23,6 +23,7 @@
 #include "viewer/accumulation_policy.h"
 #include "viewer/camera_controller.h"
 #include "viewer/camera_input.h"
+#include "viewer/focus_picker.h"
 #include "viewer/frame_stats.h"
 #include "viewer/imgui_layer.h"
 #include "viewer/panel.h"
@@ -55,6 +56,7 @@ class Session {
     void handleKeys();
     void handleCamera(double dt);
     void setFlying(bool flying);
+    void focusAt(glm::dvec2 cursor, glm::ivec2 windowSize);
     void applyActions(const PanelActions& actions);
     PanelInfo panelInfo() const;
     void reloadShadersIfChanged(double t);
@@ -94,6 +96,7 @@ class Session {
     ViewerControls controls_;
     CameraController camera_;
     CameraInput input_;
+    FocusPicker picker_;
     AccumulationPolicy policy_;
     TilePlanner planner_;
     FrameStats stats_;
@@ -123,7 +126,8 @@ Session::Session(const Scene& scene, const ViewerOptions& options)
       display_(ShaderLibrary(options.shaderDir)),
       denoiser_(ShaderLibrary(options.shaderDir)),
       controls_(options.controls),
-      camera_(options.camera) {
+      camera_(options.camera),
+      picker_(scene, options.bvhThreads) {
     if (options.ui) ui_ = std::make_unique<ImGuiLayer>(window_.handle());
     if (!options.shaderDir.empty()) watcher_.emplace(options.shaderDir);
     for (const PunctualLight& light : scene.punctualLights) lights_.push_back(describePunctualLight(light));
@@ -180,6 +184,7 @@ void Session::handleCamera(double dt) {
     in.middle = button(GLFW_MOUSE_BUTTON_MIDDLE);
     in.right = button(GLFW_MOUSE_BUTTON_RIGHT);
     in.shift = key(GLFW_KEY_LEFT_SHIFT) || key(GLFW_KEY_RIGHT_SHIFT);
+    in.ctrl = key(GLFW_KEY_LEFT_CONTROL) || key(GLFW_KEY_RIGHT_CONTROL);
     in.forward = key(GLFW_KEY_W);
     in.back = key(GLFW_KEY_S);
     in.strafeLeft = key(GLFW_KEY_A);
@@ -192,12 +197,35 @@ void Session::handleCamera(double dt) {
     in.dt = std::min(dt, 0.1);  // a stalled frame (a shader compile) must not fling the camera
     in.windowSize = window_.windowSize();
     input_.update(in, camera_);
+    if (input_.focusClick()) focusAt(*input_.focusClick(), in.windowSize);
+}
+
+// Click to focus: the plane of focus through the surface under the cursor (the accumulation has the
+// window's aspect ratio, whatever its resolution).
+void Session::focusAt(glm::dvec2 cursor, glm::ivec2 windowSize) {
+    const RenderSettings& s = renderer_.settings();
+    std::optional<float> depth = picker_.focusDistanceAt(camera_.camera(), float(s.width) / float(s.height),
+                                                         cursorToNdc(cursor, windowSize));
+    char text[160];
+    if (!depth) {
+        std::snprintf(text, sizeof text, "focus: nothing under the cursor");
+    } else {
+        camera_.setFocusDistance(*depth);
+        std::snprintf(text, sizeof text, "focus distance %.4g%s", double(*depth),
+                      camera_.camera().aperture > 0.0f ? "" : " (aperture 0: everything is sharp)");
+    }
+    message_ = text;
+    std::printf("%s\n", text);
+    std::fflush(stdout);
 }
 
 void Session::applyActions(const PanelActions& actions) {
     if (actions.resetCamera) camera_.reset();
     if (actions.toggleFly) setFlying(!input_.flying());
     if (actions.fov) camera_.setFov(*actions.fov);
+    if (actions.aperture) camera_.setAperture(*actions.aperture);
+    if (actions.focusDistance) camera_.setFocusDistance(*actions.focusDistance);
+    if (actions.focusOnTarget) camera_.setFocusDistance(std::nullopt);
     if (actions.fitHeatMap) heatFitRequested_ = true;
     if (actions.screenshot) screenshotKey();
 }

@@ -117,6 +117,50 @@ TEST_F(FrontEndRequest, StudyTakesTheSceneFilesDefaultsAndFlagsOverrideThem) {
     EXPECT_FALSE(close(fromFile, flagged));
 }
 
+// The thin lens of the scene file's camera arrives in the renderer and the flags override it, each
+// value on its own: every render equals the bare OBJ rendered with that camera given by flags (the same
+// lens points, so bit for bit), and the lens does change the image.
+TEST_F(FrontEndRequest, TheLensComesFromTheSceneFileAndFlagsOverrideIt) {
+    std::string lens = write("lens.json", R"({"mesh": ")" + kObj + R"(", "camera": {"eye": [278, 273, -800],
+        "target": [278, 273, 0], "fov": 39.3, "aperture": 60, "focus_distance": 1000},
+        "render": {"width": 24, "height": 20, "spp": 2}})");
+    auto render = [&](const std::string& args) {
+        std::string out = path("lens.pfm");
+        CliRun r = runFragpath("render " + args + " --quiet -o " + out);
+        EXPECT_EQ(r.exitCode, 0) << r.output;
+        return readImage(out).pixels;
+    };
+    const std::string obj = kObj + " --size 24x20 --spp 2 --eye 278,273,-800 --target 278,273,0 --fov 39.3";
+    auto fromFile = render(lens);
+    EXPECT_EQ(fromFile, render(obj + " --aperture 60 --focus-distance 1000"));
+    auto pinhole = render(obj);
+    EXPECT_NE(fromFile, pinhole);
+    EXPECT_EQ(render(lens + " --aperture 0"), pinhole);
+    auto refocused = render(lens + " --focus-distance 700");
+    EXPECT_EQ(refocused, render(obj + " --aperture 60 --focus-distance 700"));
+    EXPECT_NE(refocused, fromFile);
+    EXPECT_EQ(render(lens + " --aperture 30"), render(obj + " --aperture 30 --focus-distance 1000"));
+}
+
+// A bad lens is an input error (exit status 1) that says what is wrong, from a flag or the scene file.
+TEST_F(FrontEndRequest, ABadLensIsRefusedWithAClearMessage) {
+    CliRun r = runFragpath("render " + kObj + " --aperture -2 -o " + path("x.png"));
+    EXPECT_EQ(r.exitCode, 1) << r.output;
+    EXPECT_NE(r.output.find("option --aperture: must be 0 (a pinhole) or more"), std::string::npos)
+        << r.output;
+    r = runFragpath("view " + kObj + " --focus-distance 0");
+    EXPECT_EQ(r.exitCode, 1) << r.output;
+    EXPECT_NE(r.output.find("option --focus-distance: must be above 0"), std::string::npos) << r.output;
+    std::string bad = write(
+        "bad.json", R"({"mesh": ")" + kObj +
+                        R"(", "camera": {"eye": [0, 0, -5], "target": [0, 0, 0], "focus_distance": -1}})");
+    r = runFragpath("render " + bad + " -o " + path("x.png"));
+    EXPECT_EQ(r.exitCode, 1) << r.output;
+    EXPECT_NE(r.output.find("camera.focus_distance must be a finite number above 0"), std::string::npos)
+        << r.output;
+    EXPECT_NE(r.output.find("bad.json"), std::string::npos) << r.output;
+}
+
 TEST_F(FrontEndRequest, MergeTakesTheDisplayFlags) {
     // merge has no scene: its shared options are the display's, and they arrive in the PNG it writes.
     std::string part = path("part.exr");

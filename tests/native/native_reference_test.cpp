@@ -42,19 +42,24 @@ TEST_F(NativeReference, ConvergesToTheGpuMeanOnTheCornellBox) {
     for (float z : blockZScores(gpu, cpu, 8)) EXPECT_LT(std::abs(z), 4.5f);
 }
 
-TEST_F(NativeReference, FollowsTheShadersRandomStream) {
-    // Same seed: each sample draws the same numbers for the same decisions, so a pixel differs only
-    // where float rounding sends one of its paths another way (a ray grazing an edge, a roulette draw
-    // at the threshold). A different use of the stream would leave almost no pixel alike.
-    Accumulation gpu = renderScene(*renderer_, *scene_->camera, Integrator::Nee, kSize, 4, kDepth, 7);
+// Same seed: each sample draws the same numbers for the same decisions, so a pixel differs only where
+// float rounding sends one of its paths another way (a ray grazing an edge, a roulette draw at the
+// threshold). A different use of the stream would leave almost no pixel alike. Through a thin lens too:
+// the same lens point from the same numbers (drawing them after the jitter instead fails this).
+class NativeStream : public NativeReference, public ::testing::WithParamInterface<float> {};
+
+TEST_P(NativeStream, FollowsTheShadersRandomStream) {
+    Camera camera = *scene_->camera;
+    camera.aperture = GetParam();
+    camera.focusDistance = 1000.0f;
+    Accumulation gpu = renderScene(*renderer_, camera, Integrator::Nee, kSize, 4, kDepth, 7);
     native::Settings s;
     s.width = s.height = kSize;
     s.spp = 4;
     s.maxDepth = kDepth;
     s.seed = 7;
     Image cpu =
-        asAccumulation(native::render(native::buildScene(*scene_, layout::bvhOptions()), *scene_->camera, s))
-            .mean();
+        asAccumulation(native::render(native::buildScene(*scene_, layout::bvhOptions()), camera, s)).mean();
     Image mean = gpu.mean();
     int alike = 0;
     for (int y = 0; y < kSize; ++y)
@@ -66,6 +71,11 @@ TEST_F(NativeReference, FollowsTheShadersRandomStream) {
         }
     EXPECT_GE(alike, kSize * kSize * 9 / 10) << alike << " of " << kSize * kSize << " pixels alike";
 }
+
+INSTANTIATE_TEST_SUITE_P(Aperture, NativeStream, ::testing::Values(0.0f, 60.0f),
+                         [](const ::testing::TestParamInfo<float>& p) {
+                             return p.param > 0.0f ? std::string("thinLens") : std::string("pinhole");
+                         });
 
 TEST(NativeReferenceScene, RejectsWhatItDoesNotImplement) {
     Scene scene = builtinCornellBox();

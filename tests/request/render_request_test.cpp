@@ -30,6 +30,8 @@ Scene sceneWithDefaults() {
     Camera camera;
     camera.eye = {0, 0, 5};
     camera.fovY = 50.0f;
+    camera.aperture = 0.5f;
+    camera.focusDistance = 4.0f;
     scene.camera = camera;
     return scene;
 }
@@ -64,6 +66,53 @@ TEST(RenderRequest, TheSceneFileOverridesTheDefaults) {
     EXPECT_EQ(r.spp(scene), 7);
     EXPECT_EQ(r.camera(scene).eye, glm::vec3(0, 0, 5));
     EXPECT_EQ(r.camera(scene).fovY, 50.0f);
+    EXPECT_EQ(r.camera(scene).aperture, 0.5f);
+    EXPECT_EQ(r.camera(scene).focusDistance, 4.0f);
+}
+
+// --aperture and --focus-distance: a flag over the scene file over the default (a pinhole focused on the
+// target), each on its own.
+TEST(RenderRequest, TheLensTakesFlagsOverTheSceneFileOverTheDefault) {
+    Scene bare;
+    bare.triangles.push_back({});
+    Camera framed = request({}).camera(bare);
+    EXPECT_EQ(framed.aperture, 0.0f);
+    EXPECT_FALSE(framed.focusDistance.has_value());
+    EXPECT_FLOAT_EQ(resolvedFocusDistance(framed), glm::length(framed.target - framed.eye));
+    Camera flagged = request({"--aperture", "2", "--eye", "0,0,-7"}).camera(bare);
+    EXPECT_EQ(flagged.aperture, 2.0f);
+    EXPECT_EQ(resolvedFocusDistance(flagged), 7.0f) << "the default follows the eye and target as flagged";
+
+    Scene scene = sceneWithDefaults();
+    Camera c = request({"--aperture=0.125"}).camera(scene);
+    EXPECT_EQ(c.aperture, 0.125f);
+    EXPECT_EQ(c.focusDistance, 4.0f);  // the file's
+    c = request({"--focus-distance", "9.5"}).camera(scene);
+    EXPECT_EQ(c.aperture, 0.5f);  // the file's
+    EXPECT_EQ(c.focusDistance, 9.5f);
+    c = request({"--aperture", "0"}).camera(scene);
+    EXPECT_EQ(c.aperture, 0.0f) << "a flag can turn the file's lens into a pinhole";
+}
+
+TEST(RenderRequest, BadLensFlagsFailWithClearMessages) {
+    auto message = [](const std::vector<std::string>& argv) {
+        try {
+            request(argv);
+        } catch (const Error& e) {
+            return std::string(e.what());
+        }
+        return std::string("no error");
+    };
+    EXPECT_EQ(message({"--aperture", "-1"}),
+              "option --aperture: must be 0 (a pinhole) or more (the lens diameter in scene units)");
+    EXPECT_EQ(message({"--focus-distance", "0"}),
+              "option --focus-distance: must be above 0 (the distance to the plane in focus)");
+    EXPECT_EQ(message({"--focus-distance", "-3"}),
+              "option --focus-distance: must be above 0 (the distance to the plane in focus)");
+    EXPECT_EQ(message({"--aperture", "inf"}), "option --aperture: 'inf' is not a finite number");
+    EXPECT_EQ(message({"--focus-distance", "near"}),
+              "option --focus-distance: 'near' is not a finite number");
+    EXPECT_EQ(message({"--aperture", "0.5", "--focus-distance", "12"}), "no error");
 }
 
 TEST(RenderRequest, FlagsOverrideTheSceneFile) {

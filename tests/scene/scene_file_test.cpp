@@ -65,6 +65,39 @@ TEST(SceneFile, CameraDefaults) {
     ASSERT_TRUE(scene.camera.has_value());
     EXPECT_EQ(scene.camera->up, glm::vec3(0, 1, 0));
     EXPECT_EQ(scene.camera->fovY, 40.0f);
+    // A pinhole, and the plane of focus through the target were there a lens.
+    EXPECT_EQ(scene.camera->aperture, 0.0f);
+    EXPECT_FALSE(scene.camera->focusDistance.has_value());
+    EXPECT_EQ(resolvedFocusDistance(*scene.camera), 5.0f);
+}
+
+TEST(SceneFile, ThinLensParsed) {
+    Scene scene = SceneDir(sceneWith(R"("camera": {"eye": [0, 0, -5], "target": [0, 0, 0], "aperture": 0.25,
+        "focus_distance": 3.5})"))
+                      .load();
+    ASSERT_TRUE(scene.camera.has_value());
+    EXPECT_EQ(scene.camera->aperture, 0.25f);
+    EXPECT_EQ(scene.camera->focusDistance, 3.5f);
+    EXPECT_EQ(resolvedFocusDistance(*scene.camera), 3.5f);
+    // The aperture alone: the focus follows the target.
+    Scene apertureOnly =
+        SceneDir(sceneWith(R"("camera": {"eye": [0, 3, -4], "target": [0, 0, 0], "aperture": 1})")).load();
+    EXPECT_EQ(apertureOnly.camera->aperture, 1.0f);
+    EXPECT_FALSE(apertureOnly.camera->focusDistance.has_value());
+    EXPECT_EQ(resolvedFocusDistance(*apertureOnly.camera), 5.0f);
+}
+
+TEST(SceneFile, BadThinLens) {
+    std::string camera = R"("camera": {"eye": [0, 0, -5], "target": [0, 0, 0], )";
+    SceneDir(sceneWith(camera + R"("aperture": -0.5})"))
+        .reject("camera.aperture must be a finite number, 0 (a pinhole) or more");
+    SceneDir(sceneWith(camera + R"("aperture": "wide"})")).reject("camera.aperture must be a number");
+    SceneDir(sceneWith(camera + R"("aperture": 1e39})")).reject("camera.aperture must be a finite number");
+    SceneDir(sceneWith(camera + R"("focus_distance": 0})"))
+        .reject("camera.focus_distance must be a finite number above 0");
+    SceneDir(sceneWith(camera + R"("focus_distance": -2})")).reject("camera.focus_distance must be");
+    SceneDir(sceneWith(camera + R"("focus_distance": [1]})"))
+        .reject("camera.focus_distance must be a number");
 }
 
 TEST(SceneFile, CameraAndRenderOptional) {

@@ -368,6 +368,58 @@ TEST(CameraController, ResetReturnsExactlyHome) {
     }
 }
 
+// The thin lens travels with the camera: motions keep it, the panel sets it, reset brings home's back.
+// A focus distance left unset follows the target (the distance resolvedFocusDistance gives changes with
+// a dolly); one that is set stays where it was put.
+TEST(CameraController, TheLensIsKeptSetAndReset) {
+    Camera home = cornell();
+    home.aperture = 20.0f;
+    CameraController c(home);
+    EXPECT_EQ(c.camera().aperture, 20.0f);
+    EXPECT_FALSE(c.camera().focusDistance);
+    c.dolly(0.5f);
+    EXPECT_EQ(c.camera().aperture, 20.0f);
+    EXPECT_NEAR(resolvedFocusDistance(c.camera()), distanceOf(c.camera()), 1e-3);
+    EXPECT_LT(resolvedFocusDistance(c.camera()), 799.0f);
+
+    uint64_t version = c.version();
+    c.setFocusDistance(650.0f);
+    EXPECT_EQ(c.camera().focusDistance, 650.0f);
+    EXPECT_EQ(c.version(), version + 1) << "a new focus restarts accumulation";
+    c.orbit(0.3f, 0.1f);
+    c.dolly(-0.2f);
+    EXPECT_EQ(c.camera().focusDistance, 650.0f);
+    version = c.version();
+    c.setFocusDistance(650.0f);
+    EXPECT_EQ(c.version(), version) << "the same focus again changes nothing";
+    for (float bad : {0.0f, -1.0f, kNaN, kInf}) c.setFocusDistance(bad);
+    EXPECT_EQ(c.camera().focusDistance, 650.0f);
+    EXPECT_EQ(c.version(), version);
+
+    c.setAperture(35.0f);
+    EXPECT_EQ(c.camera().aperture, 35.0f);
+    EXPECT_EQ(c.version(), version + 1);
+    c.setAperture(-3.0f);  // a pinhole
+    EXPECT_EQ(c.camera().aperture, 0.0f);
+    c.setAperture(kNaN);
+    EXPECT_EQ(c.camera().aperture, 0.0f);
+    c.setFocusDistance(std::nullopt);
+    EXPECT_FALSE(c.camera().focusDistance);
+
+    c.setAperture(5.0f);
+    c.reset();
+    EXPECT_EQ(c.camera().aperture, 20.0f);
+    EXPECT_FALSE(c.camera().focusDistance);
+    EXPECT_TRUE(renderable(c.camera()));
+
+    // A home lens that cannot be rendered is repaired to a pinhole focused on the target.
+    home.aperture = -1.0f;
+    home.focusDistance = kNaN;
+    CameraController repaired(home);
+    EXPECT_EQ(repaired.camera().aperture, 0.0f);
+    EXPECT_FALSE(repaired.camera().focusDistance);
+}
+
 TEST(CameraController, SetFovClamps) {
     CameraController c(cornell());
     c.setFov(60.0f);

@@ -130,6 +130,41 @@ TEST_F(CameraInputTest, ThePanelKeepsWhatStartsOverIt) {
     EXPECT_GT(camera.version(), 0u);
 }
 
+// Ctrl + left click asks to focus where it happened, once, and starts no drag: moving with the button
+// held does not orbit. Over the panel it is the panel's; a plain left press still orbits.
+TEST_F(CameraInputTest, CtrlClickAsksToFocusAndDoesNotOrbit) {
+    InputFrame f = frame;
+    f.cursor = {120, 80};
+    input.update(f, camera);
+    EXPECT_FALSE(input.focusClick());
+    f.ctrl = true;
+    f.left = true;
+    input.update(f, camera);
+    ASSERT_TRUE(input.focusClick());
+    EXPECT_EQ(*input.focusClick(), glm::dvec2(120, 80));
+    EXPECT_EQ(input.drag(), CameraInput::Drag::None);
+    f.cursor = {220, 180};  // held and moved: neither another click nor a drag
+    input.update(f, camera);
+    EXPECT_FALSE(input.focusClick());
+    EXPECT_EQ(camera.version(), 0u);
+    f.left = false;
+    input.update(f, camera);
+
+    f.uiWantsMouse = true;
+    f.left = true;
+    input.update(f, camera);
+    EXPECT_FALSE(input.focusClick()) << "over the panel the click is the panel's";
+    f.left = false;
+    f.uiWantsMouse = false;
+    input.update(f, camera);
+
+    f.ctrl = false;
+    f.left = true;
+    input.update(f, camera);
+    EXPECT_FALSE(input.focusClick());
+    EXPECT_EQ(input.drag(), CameraInput::Drag::Orbit);
+}
+
 TEST_F(CameraInputTest, PressingIsNotMoving) {
     InputFrame f = frame;
     f.cursor = {100, 100};

@@ -89,6 +89,23 @@ TEST_F(ViewerXvfb, RendersWhatFragpathRenderRenders) {
     EXPECT_LE(largest, 1);
 }
 
+// The lens flags reach the viewer's renderer (its home camera, with the panel's aperture and focus): the
+// screenshot through a lens is fragpath render's through the same lens, bit for bit, and not the pinhole's.
+TEST_F(ViewerXvfb, RendersThroughALensAsFragpathRenderDoes) {
+    const std::string lens = " --aperture 60 --focus-distance 1000";
+    CliRun a = view("--size 32x32 --spp 2 --frames 1 --seed 3 --no-ui --screenshot " + path("A.pfm") + lens);
+    ASSERT_EQ(a.exitCode, 0) << a.output;
+    auto render = [&](const std::string& flags) {
+        CliRun b =
+            test::runFragpath("render --size 32x32 --spp 2 --seed 3 --quiet -o " + path("B.pfm") + flags);
+        EXPECT_EQ(b.exitCode, 0) << b.output;
+        return readImage(path("B.pfm")).pixels;
+    };
+    std::vector<glm::vec3> viewed = readImage(path("A.pfm")).pixels;
+    EXPECT_EQ(viewed, render(lens));
+    EXPECT_NE(viewed, render(""));
+}
+
 // The viewer's denoised screenshot is fragpath render's denoised image: same samples, same passes.
 TEST_F(ViewerXvfb, DenoisesWhatFragpathRenderDenoises) {
     CliRun a =
