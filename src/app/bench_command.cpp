@@ -60,7 +60,7 @@ const char* kBenchNotes =
 // A benchmark run is not one final image: its spp is a measuring choice (the scene file's is ignored),
 // and the suite renders every scene at one size.
 constexpr unsigned kBenchOptions = kSizeOption | kSppOption | kIntegratorOption | kPathOptions |
-                                   kSamplingOptions | kCameraOptions | kShaderOptions;
+                                   kSamplingOptions | kCameraOptions | kShaderOptions | kSceneOptions;
 FrontEndDefaults benchDefaults(bool suite) {
     FrontEndDefaults d = FrontEndDefaults::ownImage(glm::ivec2(suite ? 256 : 512), suite ? 2 : 8);
     d.sceneSize = !suite;
@@ -109,7 +109,7 @@ int benchOneScene(const Args& args, const bench::BenchSettings& settings, std::o
         Scene scene = settings.request->loadScene();
         // Checked as soon as the scene is read (a loop over its materials, nothing timed notices), so
         // that a scene the reference cannot render stops the command before any measuring.
-        if (withNative) refuseWhatNativeLacks(scene);
+        if (withNative) refuseWhatNativeLacks(scene, settings);
         return scene;
     };
     SceneMeasurement m = measureScene(load, settings);
@@ -170,6 +170,8 @@ int benchCommand(const std::vector<std::string>& argv) {
         for (const char* flag : {"--max-triangles", "--scenes", "--with-bunny"})
             if (args.has(flag)) throw Error(std::string(flag) + " only goes with --suite");
     if (suite && !args.positional().empty()) throw Error("bench --suite takes no scene file");
+    if (suite && args.has("--environment"))
+        throw Error("--environment goes with a scene file, not --suite (the suite's scenes are lit)");
     const RenderRequest request(args, benchDefaults(suite));
 
     bench::BenchSettings settings;

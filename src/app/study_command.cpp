@@ -33,17 +33,9 @@ namespace fp {
 namespace {
 
 // Not the scene file's size: that is meant for one final render, the study renders hundreds.
-constexpr unsigned kStudyOptions =
-    kSizeOption | kPathOptions | kSamplingOptions | kCameraOptions | kShaderOptions | kBackendOption;
-FrontEndDefaults studyDefaults() {
-    FrontEndDefaults d;
-    d.size = {128, 128};
-    d.sceneSize = false;
-    d.spp = 0;
-    d.sceneSpp = false;
-    return d;
-}
-const FrontEndDefaults kStudyDefaults = studyDefaults();
+constexpr unsigned kStudyOptions = kSizeOption | kPathOptions | kSamplingOptions | kCameraOptions |
+                                   kShaderOptions | kBackendOption | kSceneOptions;
+const FrontEndDefaults kStudyDefaults = FrontEndDefaults::ownImage({128, 128}, 0);
 
 std::vector<OptionGroup> studyOptions() {
     return commandOptions(

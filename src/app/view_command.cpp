@@ -15,15 +15,7 @@ namespace {
 
 // The window is not one final image: its size is the window's, and it refines until stopped.
 constexpr unsigned kViewOptions = kAllRequestOptions & ~kBackendOption;
-FrontEndDefaults viewDefaults() {
-    FrontEndDefaults d;
-    d.size = {800, 600};
-    d.sceneSize = false;
-    d.spp = 0;
-    d.sceneSpp = false;
-    return d;
-}
-const FrontEndDefaults kViewDefaults = viewDefaults();
+const FrontEndDefaults kViewDefaults = FrontEndDefaults::ownImage({800, 600}, 0);
 
 std::vector<OptionGroup> viewOptions() {
     return commandOptions(

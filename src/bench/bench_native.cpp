@@ -14,9 +14,19 @@ Spread NativeMeasurement::pathsPerCpuSecond() const {
     return values.empty() ? Spread{} : spread(values);
 }
 
-void refuseWhatNativeLacks(const Scene& scene) {
+void refuseWhatNativeLacks(const Scene& scene, const BenchSettings& settings) {
     if (auto why = native::unsupportedFeature(scene))
         throw Error("--native: " + scene.source + ": " + *why + "; nothing to compare with");
+    const RenderSettings r = settings.renderFor(scene);
+    std::string asked;
+    if (r.integrator != Integrator::Nee) asked = std::string("integrator ") + integratorName(r.integrator);
+    if (r.sampler != Sampler::Independent) asked = std::string("sampler ") + samplerName(r.sampler);
+    if (r.lightSampling != LightSampling::Auto)
+        asked = std::string("light sampling ") + lightSamplingName(r.lightSampling);
+    if (r.clampIndirect > 0.0f) asked = "a clamp of indirect light";
+    if (!asked.empty())
+        throw Error("--native: " + scene.source + " is rendered with " + asked +
+                    ", which the native reference does not implement; a ratio would compare two algorithms");
 }
 
 NativeMeasurement measureNative(const std::function<Scene()>& load, const BenchSettings& settings, int spp) {

@@ -23,8 +23,10 @@ struct NativeMeasurement {
 };
 
 // Throws fp::Error when the native reference cannot render `scene` as the renderer does (native::
-// unsupportedFeature): asked for one scene, --native refuses rather than compare two algorithms.
-void refuseWhatNativeLacks(const Scene& scene);
+// unsupportedFeature), or not with the settings it would be rendered with (settings.renderFor: a scene
+// file may ask for another integrator or sampler): asked for one scene, --native refuses rather than
+// compare two algorithms.
+void refuseWhatNativeLacks(const Scene& scene, const BenchSettings& settings = {});
 
 // One untimed warm-up run, then settings.runs timed runs (run i with seed i) of `spp` samples per pixel
 // at the settings' size and depth, on the scene `load` gives.

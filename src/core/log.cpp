@@ -2,11 +2,23 @@
 
 #include <cstdio>
 
+#include "core/error.h"
+
 namespace fp {
 
 static WarningCapture* activeCapture = nullptr;
+static bool strict = false;
+
+void setStrictWarnings(bool on) {
+    strict = on;
+}
+
+bool strictWarnings() {
+    return strict;
+}
 
 void warn(const std::string& message) {
+    if (strict) throw Error(message + " (an error with --strict)");
     if (activeCapture) {
         activeCapture->messages_.push_back(message);
         return;

@@ -1,12 +1,20 @@
 #pragma once
-// Warnings about input that was repaired rather than rejected (dropped triangles, default materials...).
-// They go to stderr; tests install a WarningCapture to assert on them.
+// Warnings about input that was repaired rather than rejected (dropped triangles, default materials, a
+// missing texture, a scene without light...). They go to stderr; tests install a WarningCapture to
+// assert on them. In strict mode (--strict, for batch pipelines that would rather stop than render a
+// repaired scene) every warning is an error instead: warn() throws fp::Error with the same message.
 #include <string>
 #include <vector>
 
 namespace fp {
 
+// Prints "warning: <message>" to stderr (or hands it to the active WarningCapture); in strict mode
+// throws fp::Error(message + " (an error with --strict)") instead, whether or not a capture is active.
 void warn(const std::string& message);
+
+// Strict mode is process-wide and off until set (the render request sets it from --strict).
+void setStrictWarnings(bool strict);
+bool strictWarnings();
 
 // While alive, warnings are collected here instead of printed (not thread-safe; one at a time).
 class WarningCapture {

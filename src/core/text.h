@@ -25,6 +25,13 @@ std::vector<std::string> splitNameList(const std::string& text, const std::strin
 // "a", "a or b", "a, b or c": the choices an error message offers.
 std::string choiceList(const std::vector<std::string>& names);
 
+// names[e] for an enumerator numbered 0, 1, ... in the order of `names`; "?" for any other value.
+template <typename Enum, std::size_t N>
+const char* nameOf(Enum e, const char* const (&names)[N]) {
+    const auto i = static_cast<std::size_t>(e);
+    return i < N ? names[i] : "?";
+}
+
 // The one of `all` that `nameOf` calls `name`: how every --flag NAME and scene-file name is read.
 // Throws fp::Error "unknown <what> '<name>' (choose a, b or c)".
 template <typename Enum, std::size_t N>

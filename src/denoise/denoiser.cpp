@@ -11,15 +11,8 @@ Denoiser parseDenoiser(const std::string& name) {
 }
 
 const char* denoiserName(Denoiser denoiser) {
-    switch (denoiser) {
-        case Denoiser::None:
-            return "none";
-        case Denoiser::Bilateral:
-            return "bilateral";
-        case Denoiser::Atrous:
-            return "atrous";
-    }
-    return "?";
+    static constexpr const char* kNames[] = {"none", "bilateral", "atrous"};  // in enum order
+    return nameOf(denoiser, kNames);
 }
 
 Image denoise(Renderer& renderer, Denoiser which) {

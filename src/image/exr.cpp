@@ -237,24 +237,26 @@ std::vector<std::uint8_t> encodeExr(const Image& image, const ExrAttributes& att
     return bytes;
 }
 
-Image decodeExr(const std::vector<std::uint8_t>& bytes, const std::string& name, ExrAttributes* attributes,
-                std::vector<ExrLayer>* layers) {
+namespace {
+
+// decodeExr, or with `radiance` decodeExrRadiance: the same reading, stricter about what it accepts.
+Image decode(const std::vector<std::uint8_t>& bytes, const std::string& name, ExrAttributes* attributes,
+             std::vector<ExrLayer>* layers, bool radiance) {
     const std::string context = "cannot read EXR '" + name + "': ";
     EXRVersion version;
     int code = ParseEXRVersionFromMemory(&version, bytes.data(), bytes.size());
     if (code != TINYEXR_SUCCESS) throw Error(context + "not an OpenEXR file");
-    if (version.multipart || version.non_image) {
-        throw Error(context + "multi-part and deep files are not supported");
-    }
+    if (version.multipart) throw Error(context + "multi-part files are not supported (one part is)");
+    if (version.non_image) throw Error(context + "deep files are not supported (a flat image is)");
 
     ParsedExr exr;
     const char* err = nullptr;
     code = ParseEXRHeaderFromMemory(&exr.header, &version, bytes.data(), bytes.size(), &err);
     if (code != TINYEXR_SUCCESS) throw Error(context + takeMessage(err, code));
     exr.headerLoaded = true;
-    if (exr.header.tiled) throw Error(context + "tiled files are not supported");
+    if (exr.header.tiled) throw Error(context + "tiled files are not supported (a scanline image is)");
 
-    int r = -1, g = -1, b = -1;
+    int r = -1, g = -1, b = -1, y = -1;
     std::string channelList;
     for (int c = 0; c < exr.header.num_channels; ++c) {
         const std::string channel = exr.header.channels[c].name;
@@ -262,15 +264,26 @@ Image decodeExr(const std::vector<std::uint8_t>& bytes, const std::string& name,
         if (channel == "R") r = c;
         if (channel == "G") g = c;
         if (channel == "B") b = c;
+        if (channel == "Y") y = c;
         if (exr.header.pixel_types[c] == TINYEXR_PIXELTYPE_HALF) {
             exr.header.requested_pixel_types[c] = TINYEXR_PIXELTYPE_FLOAT;
         }
     }
-    if (exr.header.num_channels == 1) {
+    const bool rgb = r >= 0 && g >= 0 && b >= 0;
+    if (radiance && !rgb && !(exr.header.num_channels == 1 && y == 0)) {
+        throw Error(context + "a radiance image needs R, G and B channels (or a single Y), found " +
+                    channelList);
+    }
+    if (!rgb && exr.header.num_channels == 1) {
         r = g = b = 0;  // greyscale (Y or any single channel)
-    } else if (r < 0 || g < 0 || b < 0) {
+    } else if (!rgb) {
         throw Error(context + "needs R, G and B channels or a single channel, found " + channelList);
     }
+    if (radiance)
+        for (int c : {r, g, b})
+            if (exr.header.pixel_types[c] == TINYEXR_PIXELTYPE_UINT)
+                throw Error(context + "channel " + exr.header.channels[c].name +
+                            " holds 32-bit integers (UINT), not radiance (HALF or FLOAT)");
 
     err = nullptr;
     code = LoadEXRImageFromMemory(&exr.image, &exr.header, bytes.data(), bytes.size(), &err);
@@ -305,6 +318,17 @@ Image decodeExr(const std::vector<std::uint8_t>& bytes, const std::string& name,
     return image;
 }
 
+}  // namespace
+
+Image decodeExr(const std::vector<std::uint8_t>& bytes, const std::string& name, ExrAttributes* attributes,
+                std::vector<ExrLayer>* layers) {
+    return decode(bytes, name, attributes, layers, false);
+}
+
+Image decodeExrRadiance(const std::vector<std::uint8_t>& bytes, const std::string& name) {
+    return decode(bytes, name, nullptr, nullptr, true);
+}
+
 void writeExr(const std::string& path, const Image& image, const ExrAttributes& attributes,
               const std::vector<ExrLayer>& layers) {
     checkImageShape(image, "cannot write '" + path + "'");
@@ -320,6 +344,11 @@ void writeExr(const std::string& path, const Image& image, const ExrAttributes& 
 Image readExr(const std::string& path, ExrAttributes* attributes, std::vector<ExrLayer>* layers) {
     const std::string bytes = readFileBytes(path);
     return decodeExr(std::vector<std::uint8_t>(bytes.begin(), bytes.end()), path, attributes, layers);
+}
+
+Image readExrRadiance(const std::string& path) {
+    const std::string bytes = readFileBytes(path);
+    return decodeExrRadiance(std::vector<std::uint8_t>(bytes.begin(), bytes.end()), path);
 }
 
 }  // namespace fp

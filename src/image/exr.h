@@ -39,6 +39,13 @@ std::vector<std::uint8_t> encodeExr(const Image& image, const ExrAttributes& att
 Image decodeExr(const std::vector<std::uint8_t>& bytes, const std::string& name,
                 ExrAttributes* attributes = nullptr, std::vector<ExrLayer>* layers = nullptr);
 
+// An image of linear radiance, such as an environment map: a scanline single-part file (multi-part,
+// deep and tiled files are refused) with R, G and B channels of HALF or FLOAT samples (others, such as
+// A or layers, are ignored) or a single luminance channel Y, replicated to grey. Throws fp::Error naming
+// `name` for any other layout (UINT channels, a lone channel that is not Y, no R, G, B), saying why.
+Image decodeExrRadiance(const std::vector<std::uint8_t>& bytes, const std::string& name);
+Image readExrRadiance(const std::string& path);
+
 void writeExr(const std::string& path, const Image& image, const ExrAttributes& attributes = {},
               const std::vector<ExrLayer>& layers = {});
 Image readExr(const std::string& path, ExrAttributes* attributes = nullptr,

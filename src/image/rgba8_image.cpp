@@ -31,6 +31,22 @@ Rgba8Image decodeRgba8(const std::string& bytes, const std::string& name) {
     return image;
 }
 
+Rgba8Image missingTextureChecker() {
+    Rgba8Image image;
+    image.width = image.height = kCheckerTexels;
+    image.texels.resize(size_t(kCheckerTexels) * kCheckerTexels * 4);
+    constexpr int square = kCheckerTexels / kCheckerSquares;
+    for (int y = 0; y < kCheckerTexels; ++y)
+        for (int x = 0; x < kCheckerTexels; ++x) {
+            const bool magenta = (x / square + y / square) % 2 == 0;
+            std::uint8_t* texel = &image.texels[(size_t(y) * kCheckerTexels + size_t(x)) * 4];
+            texel[0] = texel[2] = magenta ? 255 : 0;
+            texel[1] = 0;
+            texel[3] = 255;
+        }
+    return image;
+}
+
 glm::vec3 meanLinearColor(const Rgba8Image& image) {
     float decoded[256];
     for (int code = 0; code < 256; ++code) decoded[code] = srgbDecode(float(code) / 255.0f);

@@ -19,6 +19,12 @@ struct Rgba8Image {
 // image stb_image can decode; Radiance HDR files are refused too (a reflectance map is not radiance).
 Rgba8Image decodeRgba8(const std::string& bytes, const std::string& name);
 
+// What stands in for a colour texture that cannot be loaded: the magenta and black checker users
+// recognise as "texture missing". 64x64 texels, 8x8 squares of 8x8 texels each (so bilinear filtering
+// blends colours only along the squares' edges), magenta (255, 0, 255) in the top-left corner.
+Rgba8Image missingTextureChecker();
+constexpr int kCheckerTexels = 64, kCheckerSquares = 8;
+
 // The mean of the pixels' linear RGB (each channel decoded from sRGB, then averaged; alpha ignored).
 glm::vec3 meanLinearColor(const Rgba8Image& image);
 

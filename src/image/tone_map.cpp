@@ -9,15 +9,8 @@ ToneMap parseToneMap(const std::string& name) {
 }
 
 const char* toneMapName(ToneMap toneMap) {
-    switch (toneMap) {
-        case ToneMap::Reinhard:
-            return "reinhard";
-        case ToneMap::Aces:
-            return "aces";
-        case ToneMap::Clamp:
-            break;
-    }
-    return "clamp";
+    static constexpr const char* kNames[] = {"clamp", "reinhard", "aces"};  // in enum order
+    return nameOf(toneMap, kNames);
 }
 
 }  // namespace fp

@@ -13,15 +13,8 @@ const std::vector<Aov>& allAovs() {
 }
 
 const char* aovName(Aov aov) {
-    switch (aov) {
-        case Aov::Albedo:
-            return "albedo";
-        case Aov::Normal:
-            return "normal";
-        case Aov::Depth:
-            return "depth";
-    }
-    return "?";
+    static constexpr const char* kNames[] = {"albedo", "normal", "depth"};  // in enum order
+    return nameOf(aov, kNames);
 }
 
 std::vector<std::string> aovChannels(Aov aov) {

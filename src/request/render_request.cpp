@@ -1,8 +1,12 @@
 #include "request/render_request.h"
 
+#include <filesystem>
+
 #include "core/error.h"
+#include "core/log.h"
 #include "image/tone_map.h"
 #include "scene/builtin_scene.h"
+#include "scene/lighting.h"
 #include "scene/load.h"
 
 namespace fp {
@@ -18,8 +22,8 @@ std::string sizeText(glm::ivec2 size) {
 std::vector<OptionGroup> requestOptionGroups(unsigned options, const FrontEndDefaults& defaults) {
     const RenderSettings builtIn;
     const std::string sceneOr = "the scene file's, else ";
-    OptionGroup image{"Image", {}}, path{"Path tracing", {}}, camera{"Camera", {}}, display{"Display", {}},
-        gl{"OpenGL", {}};
+    OptionGroup image{"Image", {}}, scene{"Scene", {}}, path{"Path tracing", {}}, camera{"Camera", {}},
+        display{"Display", {}}, gl{"OpenGL", {}};
     if (options & kSizeOption)
         image.options.push_back({"--size", "", "WxH",
                                  "image size (default: " + (defaults.sceneSize ? sceneOr : std::string()) +
@@ -31,6 +35,17 @@ std::vector<OptionGroup> requestOptionGroups(unsigned options, const FrontEndDef
                                                         : (defaults.sceneSpp ? sceneOr : std::string()) +
                                                               std::to_string(defaults.spp)) +
                                      ")"});
+    if (options & kSceneOptions) {
+        scene.options.push_back(
+            {"--environment", "", "ENV",
+             "none | default | FILE.hdr | FILE.exr\ndefault (if not given): the scene file's; a scene with "
+             "no "
+             "light at all\ngets a uniform white sky of radiance 1, with a warning | none: black,\nno "
+             "environment | FILE: that equirectangular map instead of the scene's"});
+        scene.options.push_back({"--strict", "", "",
+                                 "every warning about repaired input (a missing texture, no light, ...)\nis "
+                                 "an error: exit status 1 instead of a repaired render"});
+    }
     if (options & kIntegratorOption)
         path.options.push_back({"--integrator", "", "NAME",
                                 "naive | bsdf | nee | bdpt (default: " + sceneOr +
@@ -94,7 +109,7 @@ std::vector<OptionGroup> requestOptionGroups(unsigned options, const FrontEndDef
             {"--backend", "", "NAME",
              "auto (default: a GPU through EGL if there is one, else OSMesa) |\negl | osmesa"});
     std::vector<OptionGroup> groups;
-    for (OptionGroup* g : {&image, &path, &camera, &display, &gl})
+    for (OptionGroup* g : {&image, &scene, &path, &camera, &display, &gl})
         if (!g->options.empty()) groups.push_back(std::move(*g));
     return groups;
 }
@@ -141,10 +156,39 @@ RenderRequest::RenderRequest(const Args& args, const FrontEndDefaults& defaults)
     shaderDir_ = args.text("--shader-dir").value_or("");
     backend_ = args.text("--backend").value_or("auto");
     bvhThreads_ = args.integer("--bvh-threads", 1, 1024).value_or(0);
+    if (auto t = args.text("--environment")) {
+        if (*t == "none") {
+            environment_ = EnvironmentChoice::None;
+        } else if (*t != "default") {
+            if (!isEnvironmentMapPath(*t))
+                throw Error("option --environment: expected none, default or an .hdr or .exr file, got '" +
+                            *t + "'");
+            std::error_code ec;
+            if (!std::filesystem::is_regular_file(*t, ec))
+                throw Error("option --environment: " + *t + ": no such file");
+            environment_ = EnvironmentChoice::Map;
+            environmentMap_ = *t;
+        }
+    }
+    strict_ = args.has("--strict");
+    setStrictWarnings(strict_);
 }
 
 Scene RenderRequest::loadScene() const {
-    return scenePath_ ? fp::loadScene(*scenePath_) : builtinCornellBox();
+    Scene scene = scenePath_ ? fp::loadScene(*scenePath_) : builtinCornellBox();
+    switch (environment_) {
+        case EnvironmentChoice::Default:
+            lightIfUnlit(scene);
+            break;
+        case EnvironmentChoice::None:
+            scene.environment = Environment();
+            break;
+        case EnvironmentChoice::Map:
+            scene.environment = Environment();
+            scene.environment.map = loadEnvironmentMap(environmentMap_, "--environment " + environmentMap_);
+            break;
+    }
+    return scene;
 }
 
 RenderSettings RenderRequest::settings(const Scene& scene) const {

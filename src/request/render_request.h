@@ -31,8 +31,16 @@ enum RequestOption : unsigned {
     kDisplayOptions = 1u << 7,    // --exposure, --tonemap
     kShaderOptions = 1u << 8,     // --shader-dir, --bvh-threads
     kBackendOption = 1u << 9,     // --backend NAME
+    kSceneOptions = 1u << 10,     // --environment none|default|FILE, --strict
 };
-constexpr unsigned kAllRequestOptions = (1u << 10) - 1;
+constexpr unsigned kAllRequestOptions = (1u << 11) - 1;
+
+// What --environment asks for.
+enum class EnvironmentChoice {
+    Default,  // the scene's environment; a scene without any light gets the default sky (scene/lighting.h)
+    None,     // no environment at all: black wherever no surface is seen, whatever the scene file says
+    Map,      // the map named on the command line, in place of the scene's environment
+};
 
 // Where a front end's defaults differ from one final render's.
 struct FrontEndDefaults {
@@ -61,7 +69,9 @@ class RenderRequest {
     // once); `args` refused the options its front end does not take (requestOptionGroups).
     explicit RenderRequest(const Args& args, const FrontEndDefaults& defaults = {});
 
-    // The scene named on the command line (its only positional argument), else the built-in Cornell box.
+    // The scene named on the command line (its only positional argument), else the built-in Cornell box,
+    // with the environment --environment asks for: by default a scene without light gets a uniform white
+    // sky, with a warning (scene/lighting.h lightIfUnlit).
     Scene loadScene() const;
     const std::optional<std::string>& scenePath() const { return scenePath_; }
 
@@ -75,6 +85,9 @@ class RenderRequest {
     const std::string& shaderDir() const { return shaderDir_; }
     const std::string& backend() const { return backend_; }
     int bvhThreads() const { return bvhThreads_; }  // 0: every CPU
+    EnvironmentChoice environment() const { return environment_; }
+    // --strict: every warning (fp::warn) is an error. The constructor sets core/log.h's strict mode to it.
+    bool strict() const { return strict_; }
 
   private:
     FrontEndDefaults defaults_;
@@ -92,6 +105,9 @@ class RenderRequest {
     DisplaySettings display_;
     std::string shaderDir_, backend_ = "auto";
     int bvhThreads_ = 0;
+    EnvironmentChoice environment_ = EnvironmentChoice::Default;
+    std::string environmentMap_;  // with EnvironmentChoice::Map
+    bool strict_ = false;
 };
 
 }  // namespace fp

@@ -125,13 +125,17 @@ std::vector<bool> usedMaterials(const Scene& scene) {
 
 // Loads the textures of the materials some triangle uses (each file once) into scene->textures and
 // points the materials at them; unused materials lose theirs, so that an unused broken map costs nothing.
-// A texture file is relative to its MTL library. Throws fp::Error naming the library, line and file if a
-// texture is missing or not an image.
+// A texture file is relative to its MTL library. A texture that is missing or not an image gets one
+// warning naming the library, line, material and file, and the magenta and black checker in its place
+// (image/rgba8_image.h); the materials showing it get Kd 1, so the checker shows as it is whatever their
+// Kd was (a missing texture's colour is lost anyway, and a tinted checker is harder to recognise).
 void loadTextures(const std::vector<TextureRef>& refs, const MtlLookup& lookup, Scene* scene) {
     std::vector<bool> used = usedMaterials(*scene);
     std::map<std::string, int32_t> loaded;  // by path relative to the OBJ
+    std::set<int32_t> checkers;             // scene->textures that stand in for a file
     for (size_t m = 0; m < scene->materials.size(); ++m) {
-        int32_t& index = scene->materials[m].diffuseTexture;
+        Material& material = scene->materials[m];
+        int32_t& index = material.diffuseTexture;
         if (index < 0) continue;
         if (!used[m]) {
             index = -1;
@@ -145,19 +149,27 @@ void loadTextures(const std::vector<TextureRef>& refs, const MtlLookup& lookup, 
         auto [it, added] = loaded.emplace(path, static_cast<int32_t>(scene->textures.size()));
         index = it->second;
         if (!added) continue;
-        std::string where = ref.libraryName + ":" + std::to_string(ref.texture.line) + ": map_Kd ";
+        std::string problem;
         std::optional<LibraryFile> bytes = lookup(path);
         if (!bytes) {
             fs::path lookedFor = file.is_absolute() ? file : fs::path(ref.libraryName).parent_path() / file;
-            throw Error(where + "texture '" + ref.texture.file + "' not found or unreadable (looked for " +
-                        lookedFor.string() + ")");
+            problem = "texture '" + ref.texture.file + "' not found or unreadable (looked for " +
+                      lookedFor.string() + ")";
+        } else {
+            try {
+                scene->textures.push_back({bytes->name, decodeRgba8(bytes->bytes, bytes->name)});
+                continue;
+            } catch (const Error& e) {
+                problem = e.what();
+            }
         }
-        try {
-            scene->textures.push_back({bytes->name, decodeRgba8(bytes->bytes, bytes->name)});
-        } catch (const Error& e) {
-            throw Error(where + e.what());
-        }
+        warn(ref.libraryName + ":" + std::to_string(ref.texture.line) + ": material '" + material.name +
+             "': map_Kd " + problem + "; showing a magenta and black checker instead");
+        checkers.insert(index);
+        scene->textures.push_back({"missing texture " + path, missingTextureChecker()});
     }
+    for (Material& material : scene->materials)
+        if (checkers.count(material.diffuseTexture)) material.diffuse = glm::vec3(1.0f);
 }
 
 // Triangles without texture coordinates cannot look a texture up: they get a copy of their material

@@ -11,6 +11,7 @@
 #include "core/log.h"
 #include "core/text.h"
 #include "image/image.h"
+#include "scene/lighting.h"
 #include "scene/load.h"
 #include "scene/text_file.h"
 
@@ -189,7 +190,8 @@ EnvironmentSpec parseEnvironment(const json& environment, Fields& fields) {
     EnvironmentSpec spec;
     bool hasColor = environment.contains("color"), hasMap = environment.contains("map");
     if (hasColor == hasMap)
-        fields.fail("environment needs either a \"color\" ([r, g, b] radiance) or a \"map\" (an .hdr file)");
+        fields.fail(
+            "environment needs either a \"color\" ([r, g, b] radiance) or a \"map\" (an .hdr or .exr file)");
     if (hasColor) {
         glm::vec3 color = fields.vec3(environment["color"], "environment.color");
         if (color.x < 0.0f || color.y < 0.0f || color.z < 0.0f)
@@ -270,9 +272,7 @@ Scene loadSceneFile(const std::string& path) {
         },
         [&](const std::string& map) {
             fs::path mapPath = fs::path(map).is_absolute() ? fs::path(map) : directory / map;
-            if (lowerCaseExtension(mapPath.string()) != ".hdr")
-                throw Error(path + ": environment map '" + map + "' must be a Radiance .hdr file");
-            return readImage(mapPath.string());
+            return loadEnvironmentMap(mapPath.string(), path + ": environment map '" + map + "'");
         });
 }
 

@@ -10,17 +10,8 @@ Integrator parseIntegrator(const std::string& name) {
 }
 
 const char* integratorName(Integrator integrator) {
-    switch (integrator) {
-        case Integrator::Naive:
-            return "naive";
-        case Integrator::Bsdf:
-            return "bsdf";
-        case Integrator::Nee:
-            return "nee";
-        case Integrator::Bdpt:
-            return "bdpt";
-    }
-    return "?";
+    static constexpr const char* kNames[] = {"naive", "bsdf", "nee", "bdpt"};  // in enum order
+    return nameOf(integrator, kNames);
 }
 
 Sampler parseSampler(const std::string& name) {
@@ -28,7 +19,8 @@ Sampler parseSampler(const std::string& name) {
 }
 
 const char* samplerName(Sampler sampler) {
-    return sampler == Sampler::Sobol ? "sobol" : "independent";
+    static constexpr const char* kNames[] = {"independent", "sobol"};  // in enum order
+    return nameOf(sampler, kNames);
 }
 
 LightSampling parseLightSampling(const std::string& name) {
@@ -36,14 +28,8 @@ LightSampling parseLightSampling(const std::string& name) {
 }
 
 const char* lightSamplingName(LightSampling sampling) {
-    switch (sampling) {
-        case LightSampling::Area:
-            return "area";
-        case LightSampling::SolidAngle:
-            return "solid-angle";
-        default:
-            return "auto";
-    }
+    static constexpr const char* kNames[] = {"auto", "area", "solid-angle"};  // in enum order
+    return nameOf(sampling, kNames);
 }
 
 View parseView(const std::string& name) {
@@ -51,25 +37,9 @@ View parseView(const std::string& name) {
 }
 
 const char* viewName(View view) {
-    switch (view) {
-        case View::Radiance:
-            return "radiance";
-        case View::Depth:
-            return "depth";
-        case View::Normal:
-            return "normal";
-        case View::Albedo:
-            return "albedo";
-        case View::Bounces:
-            return "bounces";
-        case View::Nodes:
-            return "nodes";
-        case View::Triangles:
-            return "triangles";
-        case View::Cost:
-            return "cost";
-    }
-    return "?";
+    static constexpr const char* kNames[] = {"radiance", "depth", "normal",    "albedo",
+                                             "bounces",  "nodes", "triangles", "cost"};  // in enum order
+    return nameOf(view, kNames);
 }
 
 }  // namespace fp

@@ -19,10 +19,19 @@ Run nativeRun(uint32_t seed, double cpu, double paths) {
     return r;
 }
 
+// What bench --native measures with: nee and independent numbers, and a command line without flags, so
+// that each scene's file decides the rest (request/render_request.h).
+BenchSettings nativeSettings() {
+    BenchSettings s;
+    s.request = RenderRequest(Args({}, requestOptionGroups(kAllRequestOptions)));
+    s.independentSampler = true;
+    return s;
+}
+
 // The message of the fp::Error that refuseWhatNativeLacks throws for `scene`, "" for none.
-std::string refusal(const Scene& scene) {
+std::string refusal(const Scene& scene, const BenchSettings& settings = nativeSettings()) {
     try {
-        refuseWhatNativeLacks(scene);
+        refuseWhatNativeLacks(scene, settings);
     } catch (const Error& e) {
         return e.what();
     }
@@ -48,6 +57,19 @@ TEST(BenchNative, RefusesWhatTheReferenceDoesNotImplement) {
     Scene sky = builtinCornellBox();
     sky.environment.map = Image(2, 1);
     EXPECT_NE(refusal(sky).find("an environment map"), std::string::npos);
+}
+
+// A scene file's render block arrives through the request (BenchSettings::renderFor), so it is checked
+// too: a Cornell box whose file asks for bdpt, or for Sobol points, is not what the reference renders.
+TEST(BenchNative, RefusesASceneFileAskingForAnotherAlgorithm) {
+    Scene bdpt = builtinCornellBox();
+    bdpt.defaults.integrator = Integrator::Bdpt;
+    EXPECT_NE(refusal(bdpt).find("integrator bdpt"), std::string::npos) << refusal(bdpt);
+    Scene clamped = builtinCornellBox();
+    clamped.defaults.clampIndirect = 2.0f;
+    EXPECT_NE(refusal(clamped).find("clamp"), std::string::npos) << refusal(clamped);
+    BenchSettings sobol;  // --native with --sampler sobol never gets here; a default BenchSettings does
+    EXPECT_NE(refusal(builtinCornellBox(), sobol).find("sampler sobol"), std::string::npos);
 }
 
 TEST(BenchNative, PathsPerCpuSecondIsTheSpreadOfTheRuns) {

@@ -61,3 +61,33 @@ TEST(Text, FormatTextHasNoLengthLimit) {
 
 }  // namespace
 }  // namespace fp
+
+namespace fp {
+namespace {
+
+enum class Fruit { Apple, Pear, Plum };
+constexpr Fruit kAllFruit[] = {Fruit::Apple, Fruit::Pear, Fruit::Plum};
+const char* fruitName(Fruit f) {
+    static constexpr const char* kNames[] = {"apple", "pear", "plum"};
+    return nameOf(f, kNames);
+}
+
+TEST(Names, NameOfIndexesByTheEnumeratorsValue) {
+    EXPECT_STREQ(fruitName(Fruit::Pear), "pear");
+    EXPECT_STREQ(fruitName(static_cast<Fruit>(7)), "?");
+}
+
+TEST(Names, ParseNameFindsTheChoiceOrListsThemAll) {
+    EXPECT_EQ(parseName("plum", kAllFruit, fruitName, "fruit"), Fruit::Plum);
+    try {
+        parseName("kiwi", kAllFruit, fruitName, "fruit");
+        ADD_FAILURE() << "kiwi is no fruit here";
+    } catch (const Error& e) {
+        EXPECT_STREQ(e.what(), "unknown fruit 'kiwi' (choose apple, pear or plum)");
+    }
+    EXPECT_EQ(choiceList({"a"}), "a");
+    EXPECT_EQ(choiceList({"a", "b"}), "a or b");
+}
+
+}  // namespace
+}  // namespace fp

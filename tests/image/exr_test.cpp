@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 #include <tinyexr.h>
 
+#include <cstdlib>
 #include <cstring>
 #include <random>
 #include <string>
@@ -250,6 +251,164 @@ TEST(Exr, TruncatedFileIsRejectedNamingTheFile) {
     test::writeBytes(path, bytes);
     const std::string message = errorMessage([&] { readImage(path); });
     EXPECT_NE(message.find(path), std::string::npos) << message;
+}
+
+// --- Radiance images (environment maps): decodeExrRadiance ---
+
+// One channel as a test writes it: its name, how the file stores it, and its values (one per pixel).
+struct TestChannel {
+    std::string name;
+    int stored = TINYEXR_PIXELTYPE_FLOAT;
+    std::vector<float> values;
+};
+
+// The bytes of an EXR of `channels` (given in name order, as OpenEXR wants), written by tinyexr: one
+// scanline part, or with `tiled` one tile covering the image.
+std::vector<std::uint8_t> exrBytes(int width, int height, const std::vector<TestChannel>& channels,
+                                   bool tiled = false) {
+    const size_t count = channels.size(), pixels = size_t(width) * size_t(height);
+    std::vector<std::vector<std::uint32_t>> planes(count);
+    std::vector<unsigned char*> pointers(count);
+    std::vector<EXRChannelInfo> info(count);
+    std::vector<int> given(count), stored(count);
+    for (size_t c = 0; c < count; ++c) {
+        planes[c].resize(pixels);
+        for (size_t i = 0; i < pixels; ++i) {
+            const float v = channels[c].values[i];
+            planes[c][i] = channels[c].stored == TINYEXR_PIXELTYPE_UINT ? std::uint32_t(v) : test::bitsOf(v);
+        }
+        pointers[c] = reinterpret_cast<unsigned char*>(planes[c].data());
+        std::memset(&info[c], 0, sizeof info[c]);
+        std::strcpy(info[c].name, channels[c].name.c_str());
+        stored[c] = channels[c].stored;
+        given[c] = stored[c] == TINYEXR_PIXELTYPE_UINT ? TINYEXR_PIXELTYPE_UINT : TINYEXR_PIXELTYPE_FLOAT;
+    }
+    EXRTile tile;
+    std::memset(&tile, 0, sizeof tile);
+    tile.width = width;
+    tile.height = height;
+    tile.images = pointers.data();
+    EXRImage image;
+    InitEXRImage(&image);
+    image.width = width;
+    image.height = height;
+    image.num_channels = int(count);
+    if (tiled) {
+        image.tiles = &tile;
+        image.num_tiles = 1;
+    } else {
+        image.images = pointers.data();
+    }
+    EXRHeader header;
+    InitEXRHeader(&header);
+    header.num_channels = int(count);
+    header.channels = info.data();
+    header.pixel_types = given.data();
+    header.requested_pixel_types = stored.data();
+    header.compression_type = TINYEXR_COMPRESSIONTYPE_NONE;
+    if (tiled) {
+        header.tiled = 1;
+        header.tile_size_x = width;
+        header.tile_size_y = height;
+        header.tile_level_mode = TINYEXR_TILE_ONE_LEVEL;
+        header.tile_rounding_mode = TINYEXR_TILE_ROUND_DOWN;
+    }
+    unsigned char* memory = nullptr;
+    const char* err = nullptr;
+    const size_t size = SaveEXRImageToMemory(&image, &header, &memory, &err);
+    if (size == 0 || !memory) {
+        ADD_FAILURE() << "tinyexr cannot write the test file: " << (err ? err : "");
+        if (err) FreeEXRErrorMessage(err);
+        std::free(memory);
+        return {};
+    }
+    std::vector<std::uint8_t> bytes(memory, memory + size);
+    std::free(memory);
+    return bytes;
+}
+
+// A 2x1 image's R, G, B (and A) channels.
+std::vector<TestChannel> rgbChannels(int stored = TINYEXR_PIXELTYPE_FLOAT) {
+    return {{"A", stored, {1.0f, 1.0f}},
+            {"B", stored, {0.75f, 8.0f}},
+            {"G", stored, {0.5f, 4.0f}},
+            {"R", stored, {0.25f, 2.0f}}};
+}
+
+TEST(ExrRadiance, ReadsRgbOfHalfOrFloatIgnoringOtherChannels) {
+    for (int stored : {TINYEXR_PIXELTYPE_FLOAT, TINYEXR_PIXELTYPE_HALF}) {
+        std::vector<TestChannel> channels = rgbChannels(stored);
+        channels.push_back({"diffuse.R", stored, {9.0f, 9.0f}});
+        const Image image = decodeExrRadiance(exrBytes(2, 1, channels), "sky.exr");
+        ASSERT_EQ(image.width, 2);
+        ASSERT_EQ(image.height, 1);
+        EXPECT_EQ(image.at(0, 0), glm::vec3(0.25f, 0.5f, 0.75f));
+        EXPECT_EQ(image.at(1, 0), glm::vec3(2.0f, 4.0f, 8.0f));
+    }
+}
+
+TEST(ExrRadiance, ASingleLuminanceChannelIsGrey) {
+    const Image image =
+        decodeExrRadiance(exrBytes(2, 1, {{"Y", TINYEXR_PIXELTYPE_HALF, {0.5f, 3.0f}}}), "y.exr");
+    EXPECT_EQ(image.at(0, 0), glm::vec3(0.5f));
+    EXPECT_EQ(image.at(1, 0), glm::vec3(3.0f));
+}
+
+// decodeExrRadiance's message for `bytes`, which must name the file.
+std::string radianceError(const std::vector<std::uint8_t>& bytes) {
+    std::string message = errorMessage([&] { decodeExrRadiance(bytes, "sky.exr"); });
+    EXPECT_NE(message.find("cannot read EXR 'sky.exr': "), std::string::npos) << message;
+    return message;
+}
+
+TEST(ExrRadiance, OtherChannelLayoutsAreClearErrors) {
+    // A lone channel that is not luminance: alpha, depth (the general reader shows them as grey).
+    EXPECT_NE(radianceError(exrBytes(2, 1, {{"A", TINYEXR_PIXELTYPE_FLOAT, {1, 1}}}))
+                  .find("needs R, G and B channels (or a single Y), found A"),
+              std::string::npos);
+    EXPECT_NO_THROW(decodeExr(exrBytes(2, 1, {{"A", TINYEXR_PIXELTYPE_FLOAT, {1, 1}}}), "a.exr"));
+    // Luminance and chroma (Y, RY, BY), and colour only in a layer.
+    EXPECT_NE(radianceError(exrBytes(2, 1,
+                                     {{"BY", TINYEXR_PIXELTYPE_HALF, {0, 0}},
+                                      {"RY", TINYEXR_PIXELTYPE_HALF, {0, 0}},
+                                      {"Y", TINYEXR_PIXELTYPE_HALF, {1, 1}}}))
+                  .find("found BY, RY, Y"),
+              std::string::npos);
+    EXPECT_NE(radianceError(exrBytes(2, 1,
+                                     {{"sky.B", TINYEXR_PIXELTYPE_FLOAT, {0, 0}},
+                                      {"sky.G", TINYEXR_PIXELTYPE_FLOAT, {0, 0}},
+                                      {"sky.R", TINYEXR_PIXELTYPE_FLOAT, {1, 1}}}))
+                  .find("found sky.B, sky.G, sky.R"),
+              std::string::npos);
+    // Integers are ids or counts, not radiance.
+    std::vector<TestChannel> integers = rgbChannels();
+    integers[2].stored = TINYEXR_PIXELTYPE_UINT;
+    EXPECT_NE(radianceError(exrBytes(2, 1, integers)).find("channel G holds 32-bit integers (UINT)"),
+              std::string::npos);
+}
+
+TEST(ExrRadiance, MultiPartDeepAndTiledFilesAreClearErrors) {
+    EXPECT_NE(radianceError(exrBytes(2, 1, rgbChannels(), true)).find("tiled files are not supported"),
+              std::string::npos);
+    // Debian's tinyexr writes neither multi-part nor deep files: the version field's flags say what a
+    // file is (OpenEXR file layout: bit 11 "non-image", bit 12 "multi-part"), and they are read first.
+    for (auto [bit, why] :
+         {std::pair{0x10, "multi-part files are not supported"}, {0x08, "deep files are not supported"}}) {
+        std::vector<std::uint8_t> bytes = exrBytes(2, 1, rgbChannels());
+        ASSERT_GT(bytes.size(), 8u);
+        bytes[5] |= std::uint8_t(bit);
+        EXPECT_NE(radianceError(bytes).find(why), std::string::npos);
+    }
+    // And anything else is not an EXR at all.
+    EXPECT_NE(radianceError(test::bytesOf("#?RADIANCE\n")).find("not an OpenEXR file"), std::string::npos);
+}
+
+TEST(ExrRadiance, ReadsAFileWrittenByWriteExrBitForBit) {
+    TempDir dir;
+    Image sky(3, 2);
+    for (size_t i = 0; i < sky.pixels.size(); ++i) sky.pixels[i] = glm::vec3(float(i) / 7.0f, 1e-3f, 1e4f);
+    writeExr(dir.file("sky.exr"), sky);
+    expectBitIdentical(readExrRadiance(dir.file("sky.exr")), sky);
 }
 
 }  // namespace

@@ -133,7 +133,8 @@ TEST_F(EnvironmentFiles, BadMapsAreClearErrors) {
     };
     EXPECT_NE(message(R"({"map": "fake.hdr"})").find("not a Radiance HDR image"), std::string::npos);
     EXPECT_NE(message(R"({"map": "missing.hdr"})").find("missing.hdr"), std::string::npos);
-    EXPECT_NE(message(R"({"map": "box.obj"})").find("must be a Radiance .hdr file"), std::string::npos);
+    EXPECT_NE(message(R"({"map": "box.obj"})").find("must be a Radiance .hdr or an OpenEXR .exr file"),
+              std::string::npos);
     EXPECT_NE(message(R"({"color": [1, 1, 1], "map": "fake.hdr"})").find("either"), std::string::npos);
     EXPECT_NE(message(R"({"color": [1, -1, 1]})").find("negative"), std::string::npos);
 }

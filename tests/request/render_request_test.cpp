@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "core/error.h"
+#include "core/log.h"
 #include "request/render_request.h"
 
 namespace fp {
@@ -146,6 +147,36 @@ TEST(RenderRequest, TheSceneIsThePositionalArgumentUnlessTheFrontEndSaysOtherwis
     FrontEndDefaults merge;
     merge.scene = false;
     EXPECT_FALSE(request({"a.exr", "b.exr"}, merge, kDisplayOptions).scenePath());
+}
+
+TEST(RenderRequest, EnvironmentAndStrictAreReadAndCheckedAtOnce) {
+    EXPECT_EQ(request({}).environment(), EnvironmentChoice::Default);
+    EXPECT_EQ(request({"--environment", "default"}).environment(), EnvironmentChoice::Default);
+    EXPECT_EQ(request({"--environment=none"}).environment(), EnvironmentChoice::None);
+    // A map must be an .hdr or .exr that exists, before any scene is loaded.
+    auto message = [](const std::vector<std::string>& argv) {
+        try {
+            request(argv);
+        } catch (const Error& e) {
+            return std::string(e.what());
+        }
+        return std::string("no error");
+    };
+    EXPECT_EQ(message({"--environment", "black"}),
+              "option --environment: expected none, default or an .hdr or .exr file, got 'black'");
+    EXPECT_EQ(message({"--environment", "/no/such/sky.exr"}),
+              "option --environment: /no/such/sky.exr: no such file");
+    EXPECT_THROW(request({"--environment", "none"}, {}, kAllRequestOptions & ~kSceneOptions), UsageError);
+
+    // --strict sets core/log's strict mode, and a request without it clears it.
+    EXPECT_TRUE(request({"--strict"}).strict());
+    EXPECT_TRUE(strictWarnings());
+    EXPECT_THROW(warn("a repaired thing"), Error);
+    EXPECT_FALSE(request({}).strict());
+    EXPECT_FALSE(strictWarnings());
+    WarningCapture capture;
+    warn("a repaired thing");
+    EXPECT_TRUE(capture.contains("a repaired thing"));
 }
 
 }  // namespace

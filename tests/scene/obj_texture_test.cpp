@@ -2,6 +2,7 @@
 // library, faces without vt, and every way a texture file can be wrong.
 #include <gtest/gtest.h>
 
+#include "image/rgba8_image.h"
 #include "image/tone_map.h"
 #include "scene/load.h"
 #include "scene_test_util.h"
@@ -87,33 +88,96 @@ TEST(ObjTexture, FacesWithoutTexcoordsGetTheTexturesMeanColour) {
     EXPECT_EQ(textured.diffuse, glm::vec3(0.5f));
 }
 
-TEST(ObjTexture, MissingTextureNamesTheMtlLineAndPath) {
-    test::TempDir dir;
-    dir.write("mats/a.mtl", "newmtl tex\nKd 1\nmap_Kd -s 2 2 missing.png\n");
-    std::string obj = dir.write("model.obj", kQuad + "f 1/1 2/2 3/3\n");
-    WarningCapture capture;
-    std::string message = test::errorOf([&] { loadObj(obj); });
-    EXPECT_CONTAINS_ALL(message, dir.path("mats/a.mtl") + ":3: map_Kd texture 'missing.png' not found",
-                        "looked for " + dir.path("mats/missing.png"));
+// The one warning a broken texture gets, or "" (with a test failure) when there is not exactly one.
+std::string onlyWarning(const WarningCapture& capture) {
+    EXPECT_EQ(capture.messages().size(), 1u) << test::joined(capture);
+    return capture.messages().empty() ? "" : capture.messages()[0];
 }
 
-TEST(ObjTexture, TextureThatIsNotAnImageIsAnError) {
+// The material of the first triangle shows the checker in place of its texture, with Kd 1.
+void expectChecker(const Scene& scene) {
+    ASSERT_FALSE(scene.triangles.empty());
+    const Material& m = scene.materials[scene.triangles[0].material];
+    ASSERT_GE(m.diffuseTexture, 0);
+    EXPECT_EQ(scene.textures[size_t(m.diffuseTexture)].image.texels, missingTextureChecker().texels);
+    EXPECT_EQ(m.diffuse, glm::vec3(1.0f));
+}
+
+TEST(ObjTexture, MissingTextureWarnsNamingTheMtlLineMaterialAndPathAndShowsTheChecker) {
+    test::TempDir dir;
+    dir.write("mats/a.mtl", "newmtl tex\nKd 0.2 0.9 0.2\nmap_Kd -s 2 2 missing.png\n");
+    std::string obj = dir.write("model.obj", kQuad + "f 1/1 2/2 3/3\n");
+    WarningCapture capture;
+    Scene scene = loadObj(obj);
+    std::string textureWarning;  // the ignored "-s" option gets a warning of its own
+    for (const std::string& m : capture.messages())
+        if (m.find("material 'tex'") != std::string::npos) textureWarning += m;
+    EXPECT_CONTAINS_ALL(textureWarning,
+                        dir.path("mats/a.mtl") + ":3: material 'tex': map_Kd texture 'missing.png' not found",
+                        "looked for " + dir.path("mats/missing.png"), "magenta and black checker");
+    expectChecker(scene);
+}
+
+TEST(ObjTexture, TextureThatIsNotAnImageWarnsAndShowsTheChecker) {
     test::TempDir dir;
     dir.write("mats/a.mtl", "newmtl tex\n\nmap_Kd notes.png\n");
     dir.write("mats/notes.png", "this is text, not a PNG\n");
     std::string obj = dir.write("model.obj", kQuad + "f 1/1 2/2 3/3\n");
-    std::string message = test::errorOf([&] { loadObj(obj); });
-    EXPECT_CONTAINS_ALL(message, dir.path("mats/a.mtl") + ":3: map_Kd " + dir.path("mats/notes.png"),
-                        "not an image");
+    {
+        WarningCapture capture;
+        Scene scene = loadObj(obj);
+        EXPECT_CONTAINS_ALL(
+            onlyWarning(capture),
+            dir.path("mats/a.mtl") + ":3: material 'tex': map_Kd " + dir.path("mats/notes.png"),
+            "not an image", "checker");
+        expectChecker(scene);
+    }
     // An HDR image is radiance, not a colour.
     dir.write("mats/notes.png", "#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y 1 +X 1\n\x80\x80\x80\x81");
-    message = test::errorOf([&] { loadObj(obj); });
-    EXPECT_CONTAINS_ALL(message, dir.path("mats/a.mtl") + ":3: map_Kd ", "Radiance HDR");
+    {
+        WarningCapture capture;
+        Scene scene = loadObj(obj);
+        EXPECT_CONTAINS_ALL(onlyWarning(capture), dir.path("mats/a.mtl") + ":3: material 'tex': map_Kd ",
+                            "Radiance HDR");
+        expectChecker(scene);
+    }
     // A directory is no texture either.
     dir.write("mats/dir.png/x", "");
     dir.write("mats/a.mtl", "newmtl tex\nmap_Kd dir.png\n");
-    message = test::errorOf([&] { loadObj(obj); });
-    EXPECT_CONTAINS_ALL(message, ":2: map_Kd texture 'dir.png' not found");
+    {
+        WarningCapture capture;
+        Scene scene = loadObj(obj);
+        EXPECT_CONTAINS_ALL(onlyWarning(capture), ":2: material 'tex': map_Kd texture 'dir.png' not found");
+        expectChecker(scene);
+    }
+}
+
+TEST(ObjTexture, StrictModeMakesABrokenTextureAnError) {
+    test::TempDir dir;
+    dir.write("mats/a.mtl", "newmtl tex\nmap_Kd missing.png\n");
+    std::string obj = dir.write("model.obj", kQuad + "f 1/1 2/2 3/3\n");
+    setStrictWarnings(true);
+    std::string message = test::errorOf([&] { loadObj(obj); });
+    setStrictWarnings(false);
+    EXPECT_CONTAINS_ALL(message, ":2: material 'tex': map_Kd texture 'missing.png' not found", "--strict");
+}
+
+TEST(ObjTexture, TheCheckerIsMagentaAndBlackSquaresOfEightTexels) {
+    Rgba8Image checker = missingTextureChecker();
+    ASSERT_EQ(checker.width, 64);
+    ASSERT_EQ(checker.height, 64);
+    auto texel = [&](int x, int y) {
+        const uint8_t* t = &checker.texels[(size_t(y) * 64 + size_t(x)) * 4];
+        return std::array<int, 4>{t[0], t[1], t[2], t[3]};
+    };
+    const std::array<int, 4> magenta{255, 0, 255, 255}, black{0, 0, 0, 255};
+    EXPECT_EQ(texel(0, 0), magenta);
+    EXPECT_EQ(texel(7, 7), magenta);
+    EXPECT_EQ(texel(8, 0), black);
+    EXPECT_EQ(texel(0, 8), black);
+    EXPECT_EQ(texel(8, 8), magenta);
+    EXPECT_EQ(texel(63, 0), black);
+    EXPECT_EQ(texel(63, 63), magenta);
 }
 
 TEST(ObjTexture, TexturesOfUnusedMaterialsAreNotLoaded) {

@@ -14,7 +14,8 @@
 namespace {
 
 // One final image, as `fragpath render` makes, but 1 spp unless asked: the reference is slow.
-constexpr unsigned kNativeOptions = fp::kSizeOption | fp::kSppOption | fp::kPathOptions | fp::kCameraOptions;
+constexpr unsigned kNativeOptions =
+    fp::kSizeOption | fp::kSppOption | fp::kPathOptions | fp::kCameraOptions | fp::kSceneOptions;
 
 fp::FrontEndDefaults nativeDefaults() {
     fp::FrontEndDefaults d;
