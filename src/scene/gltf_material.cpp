@@ -1,6 +1,7 @@
 // glTF metallic-roughness materials onto fragpath's four models (README, "glTF"; gltf_internal.h).
 #include <algorithm>
 #include <map>
+#include <set>
 
 #include "core/error.h"
 #include "core/log.h"
@@ -85,10 +86,18 @@ struct MaterialTable::Impl {
         int64_t untextured = -1;  // the copy for primitives without that set, once made
         size_t withoutTexcoords = 0;
     };
-    std::vector<Resolved> resolved;                           // per glTF material, then the default material
-    std::map<int, Rgba8Image> images;                         // decoded, by glTF image
-    std::map<int, int32_t> sceneTextures;                     // Scene::textures index, by glTF image
-    std::map<std::string, std::vector<std::string>> ignored;  // what was ignored -> on which materials
+    std::vector<Resolved> resolved;  // per glTF material, then the default material
+    // A glTF image as loaded: decoded, or (missing, or not an image stb_image reads) the magenta and
+    // black checker with the reason, for the user of the texture to warn about.
+    struct Loaded {
+        Rgba8Image image;
+        std::string problem;  // empty when the image loaded
+        std::string file;     // the file or the part of the glTF it came from, for Texture::name
+    };
+    std::map<int, Loaded> images;                                  // by glTF image
+    std::set<int> warned;                                          // images whose problem was warned about
+    std::map<int, int32_t> sceneTextures;                          // Scene::textures index, by glTF image
+    std::map<std::string, std::vector<std::string>> ignoredKinds;  // what was ignored -> on which materials
 
     Impl(const tinygltf::Model& m, const std::string& n, const GltfLookup& l, Scene* s)
         : model(m), name(n), lookup(l), scene(s), resolved(m.materials.size() + 1) {}
@@ -101,13 +110,14 @@ struct MaterialTable::Impl {
     }
 
     void tally(const std::string& what, int material) {
-        std::vector<std::string>& on = ignored[what];
+        std::vector<std::string>& on = ignoredKinds[what];
         std::string l = label(material);
         if (std::find(on.begin(), on.end(), l) == on.end()) on.push_back(l);
     }
 
-    // The decoded image of glTF texture `texture`, or nullptr (with a tally) if it has none we can read.
-    const Rgba8Image* image(int texture, int material) {
+    // The image of glTF texture `texture`, or nullptr (with a tally) if the texture has no source we can
+    // read. `slot` names the map ("baseColorTexture") for the warning a broken image gets, once.
+    const Loaded* image(int texture, int material, const std::string& slot, const std::string& consequence) {
         if (texture < 0 || size_t(texture) >= model.textures.size())
             throw Error(name + ": " + label(material) + " uses textures[" + std::to_string(texture) +
                         "], which does not exist");
@@ -122,32 +132,51 @@ struct MaterialTable::Impl {
             throw Error(name + ": textures[" + std::to_string(texture) + "] refers to images[" +
                         std::to_string(source) + "], which does not exist");
         auto found = images.find(source);
-        if (found != images.end()) return &found->second;
+        if (found == images.end()) found = images.emplace(source, load(source)).first;
+        const Loaded& loaded = found->second;
+        // Like a missing map_Kd: a warning (an error with --strict), once per image, and the checker.
+        if (!loaded.problem.empty() && warned.insert(source).second)
+            warn(name + ": " + label(material) + ": " + slot + ": " + loaded.problem + "; " + consequence);
+        return &loaded;
+    }
 
+    Loaded load(int source) {
         const tinygltf::Image& img = model.images[size_t(source)];
         std::string where = name + ": images[" + std::to_string(source) + "]";
-        std::string bytes, label = where;
+        Loaded loaded;
+        loaded.file = where;
+        std::string bytes;
         if (img.bufferView >= 0) {
             bytes = std::string(bufferViewBytes(model, img.bufferView, name));
         } else if (!img.image.empty()) {  // a data URI tinygltf decoded (keepEncodedImage)
             bytes.assign(img.image.begin(), img.image.end());
         } else if (img.uri.compare(0, 5, "data:") == 0) {
-            throw Error(where + ": a data URI of a type fragpath cannot decode (" + img.uri.substr(0, 30) +
-                        "...)");
+            loaded.problem = "images[" + std::to_string(source) +
+                             "] is a data URI of a type fragpath cannot decode (" + img.uri.substr(0, 30) +
+                             "...)";
         } else {
             std::string file = percentDecoded(img.uri);
+            loaded.file = img.uri;
             std::optional<LibraryFile> read = lookup(file);
-            if (!read)
-                throw Error(where + ": texture file '" + img.uri + "' not found or unreadable (looked for " +
-                            lookedFor(file) + ")");
-            bytes = std::move(read->bytes);
-            label = read->name;
+            if (read) {
+                bytes = std::move(read->bytes);
+                loaded.file = read->name;
+            } else {
+                loaded.problem = "texture file '" + img.uri + "' not found or unreadable (looked for " +
+                                 lookedFor(file) + ")";
+            }
         }
-        try {
-            return &images.emplace(source, decodeRgba8(bytes, label)).first->second;
-        } catch (const Error& e) {
-            throw Error(label == where ? std::string(e.what()) : where + ": " + e.what());
+        if (loaded.problem.empty()) {
+            try {
+                loaded.image = decodeRgba8(bytes, loaded.file);
+                return loaded;
+            } catch (const Error& e) {
+                loaded.problem = e.what();
+            }
         }
+        loaded.image = missingTextureChecker();
+        loaded.file = "missing texture " + loaded.file;
+        return loaded;
     }
 
     std::string lookedFor(const std::string& file) const {
@@ -158,13 +187,7 @@ struct MaterialTable::Impl {
     int32_t sceneTexture(int texture) {
         int source = model.textures[size_t(texture)].source;
         auto [it, added] = sceneTextures.emplace(source, int32_t(scene->textures.size()));
-        if (added) {
-            const tinygltf::Image& img = model.images[size_t(source)];
-            std::string textureName = img.uri.empty() || img.uri.compare(0, 5, "data:") == 0
-                                          ? name + ": images[" + std::to_string(source) + "]"
-                                          : img.uri;
-            scene->textures.push_back({textureName, images.at(source)});
-        }
+        if (added) scene->textures.push_back({images.at(source).file, images.at(source).image});
         return it->second;
     }
 
@@ -174,6 +197,7 @@ struct MaterialTable::Impl {
         Resolved& r = resolved[material < 0 ? resolved.size() - 1 : size_t(material)];
         if (r.done) return r;
         r.done = true;
+        const std::string kIgnoreMap = "ignoring the map";
         PbrFactors f;
         const tinygltf::Material* g = material >= 0 ? &model.materials[size_t(material)] : nullptr;
         if (g) {
@@ -211,17 +235,20 @@ struct MaterialTable::Impl {
             // Maps the models cannot use per texel yet: their mean stands in, so that a mostly
             // non-metallic or mostly dark map does not turn into a metal or a glowing surface.
             if (pbr.metallicRoughnessTexture.index >= 0) {
-                if (const Rgba8Image* map = image(pbr.metallicRoughnessTexture.index, material)) {
-                    f.roughness *= meanChannel(*map, 1);  // green
-                    f.metallic *= meanChannel(*map, 2);   // blue
+                const Loaded* map = image(pbr.metallicRoughnessTexture.index, material,
+                                          "metallicRoughnessTexture", kIgnoreMap);
+                if (map && map->problem.empty()) {
+                    f.roughness *= meanChannel(map->image, 1);  // green
+                    f.metallic *= meanChannel(map->image, 2);   // blue
                     tally(
                         "metallicRoughnessTexture not supported yet: the factors are multiplied by its mean",
                         material);
                 }
             }
             if (g->emissiveTexture.index >= 0) {
-                if (const Rgba8Image* map = image(g->emissiveTexture.index, material)) {
-                    f.emission *= meanLinearColor(*map);
+                const Loaded* map = image(g->emissiveTexture.index, material, "emissiveTexture", kIgnoreMap);
+                if (map && map->problem.empty()) {
+                    f.emission *= meanLinearColor(map->image);
                     tally(
                         "emissiveTexture not supported yet: emission is emissiveFactor times its mean colour",
                         material);
@@ -230,8 +257,9 @@ struct MaterialTable::Impl {
             int transmissionTexture =
                 extensionTexture(g->extensions, "KHR_materials_transmission", "transmissionTexture");
             if (transmissionTexture >= 0) {
-                if (const Rgba8Image* map = image(transmissionTexture, material)) {
-                    f.transmission *= meanChannel(*map, 0);  // red
+                const Loaded* map = image(transmissionTexture, material, "transmissionTexture", kIgnoreMap);
+                if (map && map->problem.empty()) {
+                    f.transmission *= meanChannel(map->image, 0);  // red
                     tally(
                         "transmissionTexture not supported yet: transmissionFactor is multiplied by its mean",
                         material);
@@ -247,26 +275,29 @@ struct MaterialTable::Impl {
         Material m = materialFromPbr(f, g ? (g->name.empty() ? label(material) : g->name) : "glTF default");
         if (g && g->pbrMetallicRoughness.baseColorTexture.index >= 0) {
             const tinygltf::TextureInfo& info = g->pbrMetallicRoughness.baseColorTexture;
-            if (const Rgba8Image* map = image(info.index, material)) {
-                if (m.type == MaterialType::Diffuse || m.type == MaterialType::Plastic) {
-                    m.diffuseTexture = sceneTexture(info.index);
-                    r.texcoordSet = info.texCoord;
-                    if (info.extensions.count("KHR_texture_transform"))
-                        tally("KHR_texture_transform not supported yet, ignored", material);
-                    int sampler = model.textures[size_t(info.index)].sampler;
-                    if (sampler >= 0 && size_t(sampler) < model.samplers.size() &&
-                        (model.samplers[size_t(sampler)].wrapS != TINYGLTF_TEXTURE_WRAP_REPEAT ||
-                         model.samplers[size_t(sampler)].wrapT != TINYGLTF_TEXTURE_WRAP_REPEAT))
-                        tally("texture wrap modes other than REPEAT drawn as REPEAT", material);
-                } else {
-                    // Metals and glass do not read textures: their colour is the texture's mean.
-                    glm::vec3 mean = meanLinearColor(*map);
-                    m.diffuse *= mean;
-                    m.specular *= mean;
-                    m.transmission *= mean;
-                    tally("baseColorTexture on metals and glass not supported yet: its mean colour used",
-                          material);
-                }
+            bool textured = m.type == MaterialType::Diffuse || m.type == MaterialType::Plastic;
+            const Loaded* map = image(info.index, material, "baseColorTexture",
+                                      textured ? "showing a magenta and black checker instead" : kIgnoreMap);
+            if (map && textured) {
+                m.diffuseTexture = sceneTexture(info.index);
+                r.texcoordSet = info.texCoord;
+                // The checker shows as it is whatever the factor was, as for a missing map_Kd.
+                if (!map->problem.empty()) m.diffuse = glm::vec3(1.0f);
+                if (info.extensions.count("KHR_texture_transform"))
+                    tally("KHR_texture_transform not supported yet, ignored", material);
+                int sampler = model.textures[size_t(info.index)].sampler;
+                if (sampler >= 0 && size_t(sampler) < model.samplers.size() &&
+                    (model.samplers[size_t(sampler)].wrapS != TINYGLTF_TEXTURE_WRAP_REPEAT ||
+                     model.samplers[size_t(sampler)].wrapT != TINYGLTF_TEXTURE_WRAP_REPEAT))
+                    tally("texture wrap modes other than REPEAT drawn as REPEAT", material);
+            } else if (map && map->problem.empty()) {
+                // Metals and glass do not read textures: their colour is the texture's mean.
+                glm::vec3 mean = meanLinearColor(map->image);
+                m.diffuse *= mean;
+                m.specular *= mean;
+                m.transmission *= mean;
+                tally("baseColorTexture on metals and glass not supported yet: its mean colour used",
+                      material);
             }
         }
         if (material >= 0) {
@@ -322,7 +353,7 @@ uint32_t MaterialTable::use(int gltfMaterial, bool hasTexcoords) {
 }
 
 void MaterialTable::reportIgnored() const {
-    for (const auto& [what, materials] : impl_->ignored) {
+    for (const auto& [what, materials] : impl_->ignoredKinds) {
         std::string list;
         for (size_t i = 0; i < materials.size() && i < 4; ++i) list += (i ? ", " : "") + materials[i];
         if (materials.size() > 4) list += " and " + std::to_string(materials.size() - 4) + " more";

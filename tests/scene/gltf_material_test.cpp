@@ -292,19 +292,56 @@ TEST(GltfMaterial, OnlyUsedMaterialsLoadTheirTextures) {
     b.push("images", {{"uri", "missing.png"}});
     b.push("textures", {{"source", 0}});
     b.material({{"name", "ghost"}, {"pbrMetallicRoughness", {{"baseColorTexture", {{"index", 0}}}}}});
+    WarningCapture capture;
     Scene scene = withMaterials(b, {{{"pbrMetallicRoughness", pbr(0, 1)}}});
     EXPECT_TRUE(scene.textures.empty());
+    EXPECT_TRUE(capture.messages().empty()) << test::joined(capture);
+}
 
-    GltfBuilder used;
-    used.push("images", {{"uri", "missing.png"}});
-    used.push("textures", {{"source", 0}});
+// As for a missing map_Kd: a warning (an error with --strict) and the magenta and black checker, with a
+// base colour of 1 so that it shows as it is; a map that only stands in by its mean is ignored.
+TEST(GltfMaterial, MissingOrBrokenImagesWarnAndShowTheChecker) {
+    auto build = [] {
+        GltfBuilder b;
+        b.push("images", {{"uri", "missing.png"}});
+        b.push("images", {{"uri", "data:image/png;base64,AAAA"}});  // three zero bytes: no PNG
+        b.push("textures", {{"source", 0}});
+        b.push("textures", {{"source", 1}});
+        return b;
+    };
+    GltfBuilder b = build();
+    WarningCapture capture;
+    Scene scene = withMaterials(
+        b, {{{"name", "ghost"},
+             {"pbrMetallicRoughness",
+              pbr(0, 1, {{"baseColorFactor", {0.5, 0.5, 0.5, 1}}, {"baseColorTexture", {{"index", 0}}}})}},
+            {{"name", "garbled"},
+             {"pbrMetallicRoughness", pbr(1, 0.5, {{"metallicRoughnessTexture", {{"index", 1}}}})}}});
+    ASSERT_EQ(scene.textures.size(), 1u);
+    EXPECT_EQ(scene.textures[0].image.texels, missingTextureChecker().texels);
+    const Material& ghost = materialOfQuad(scene, 0);
+    EXPECT_EQ(ghost.diffuseTexture, 0);
+    EXPECT_EQ(ghost.diffuse, glm::vec3(1.0f));
+    const Material& garbled = materialOfQuad(scene, 1);
+    EXPECT_EQ(garbled.type, MaterialType::Conductor);  // the factors alone
+    EXPECT_EQ(garbled.roughness, 0.5f);
+    ASSERT_EQ(capture.messages().size(), 2u) << test::joined(capture);
+    EXPECT_CONTAINS_ALL(
+        capture.messages()[0],
+        "m.gltf: 'ghost' (materials[0]): baseColorTexture: texture file 'missing.png' not found or "
+        "unreadable (looked for ",
+        "/missing.png); showing a magenta and black checker instead");
+    EXPECT_CONTAINS_ALL(capture.messages()[1], "m.gltf: 'garbled' (materials[1]): metallicRoughnessTexture: ",
+                        "images[1]: not an image stb_image can read", "; ignoring the map");
+
+    GltfBuilder strict = build();
+    setStrictWarnings(true);
     std::string message = test::errorOf([&] {
-        withMaterials(
-            used, {{{"name", "ghost"}, {"pbrMetallicRoughness", {{"baseColorTexture", {{"index", 0}}}}}}});
+        withMaterials(strict,
+                      {{{"pbrMetallicRoughness", pbr(0, 1, {{"baseColorTexture", {{"index", 0}}}})}}});
     });
-    EXPECT_CONTAINS_ALL(message,
-                        "m.gltf: images[0]: texture file 'missing.png' not found or unreadable (looked for ",
-                        "/missing.png)");
+    setStrictWarnings(false);
+    EXPECT_CONTAINS_ALL(message, "texture file 'missing.png' not found", "(an error with --strict)");
 }
 
 }  // namespace
