@@ -50,8 +50,7 @@ bool readWholeFile(std::vector<unsigned char>* out, std::string* err, const std:
         if (err) *err += "cannot read " + path + "\n";
         return false;
     }
-    out->assign(file->bytes.begin(), file->bytes.end());
-    file->bytes = std::string();  // each buffer file is read once
+    out->assign(file->bytes.begin(), file->bytes.end());  // kept: two buffers may name the same file
     return true;
 }
 

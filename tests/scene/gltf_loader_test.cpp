@@ -129,6 +129,14 @@ TEST(GltfLoader, ExternalBufferAndImageFilesAreRelativeToTheGltf) {
     EXPECT_EQ(scene.triangles.size(), 12u);
     ASSERT_EQ(scene.textures.size(), 1u);
     EXPECT_EQ(scene.textures[0].image.texels, kTexels);
+
+    // Two buffers may name the same file: the indices read from the second.
+    json doc = json::parse(b.gltf("data.bin"));
+    doc["buffers"].push_back(doc["buffers"][0]);
+    doc["bufferViews"][3]["buffer"] = 1;
+    Scene twice = loadScene(dir.write("model/twice.gltf", doc.dump()));
+    ASSERT_EQ(twice.triangles.size(), 12u);
+    EXPECT_EQ(twice.triangles[11].p, scene.triangles[11].p);
 }
 
 // One triangle in z = 0 with +z normals.
