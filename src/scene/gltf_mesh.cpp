@@ -108,7 +108,8 @@ void appendPrimitive(const tinygltf::Model& model, const MeshInstance& instance,
             if (!finite(n))
                 throw Error(name + ": " + data.label() + " holds a non-finite value (element " +
                             std::to_string(i) + ")");
-            if (!unitVector(normalMatrix * n, &normals[i])) normals[i] = glm::vec3(0.0f);  // replaced per triangle
+            if (!unitVector(normalMatrix * n, &normals[i]))
+                normals[i] = glm::vec3(0.0f);  // replaced per triangle
         }
     }
 
