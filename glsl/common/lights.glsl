@@ -1,18 +1,70 @@
-// Light sampling for next-event estimation: the environment, or an emissive triangle picked with
-// probability proportional to its power (a CDF in the lights buffer) and a point uniformly on its area.
-// Area densities become solid-angle densities at the receiving point through
-// d(omega) = cos(theta_light) dA / distance^2, so pdf = pmf / area * distance^2 / cos(theta_light).
+// Light sampling for next-event estimation: the environment, or an emissive triangle or punctual light
+// picked with probability proportional to its power (a CDF in the lights buffer, src/pack/layout.h) and,
+// on a triangle, a point uniformly on its area. Area densities become solid-angle densities at the
+// receiving point through d(omega) = cos(theta_light) dA / distance^2, so pdf = pmf / area * distance^2 /
+// cos(theta_light). A punctual light (point, spot, directional: src/scene/scene.h) is a delta
+// distribution: it has one direction toward the receiving point, which only light sampling finds.
 uniform vec3 uEnvironment;  // constant radiance arriving from every direction no surface blocks
 
 struct LightSample {
     vec3 dir;       // unit, from the receiving point to the light
-    float dist;     // INF for the environment
-    vec3 radiance;  // Le arriving along -dir (0 when the back of the emitter faces the point)
-    float pdf;      // solid-angle density of choosing dir
+    float dist;     // INF for the environment and a directional light
+    vec3 radiance;  // Le arriving along -dir (0 when the back of the emitter faces the point); for a
+                    // delta light the irradiance it gives a surface facing it: I / r^2, or E
+    float pdf;      // solid-angle density of choosing dir; for a delta light the probability of the pick
     vec3 point;     // on an emitter: the point sampled, its emitting side's unit normal and its offset
-    vec3 normal;
+    vec3 normal;    // (a point or spot light: its position, a zero normal and offset)
     float offset;
+    bool delta;     // a punctual light: no BSDF sample can find it, so no MIS (weight 1)
 };
+
+// Punctual lights, compiled in only for scenes that have some (the renderer sets PUNCTUAL_LIGHTS). Their
+// cdf entries follow the emitter triangles' (index -1 - k for light k), and their data follows the cdf
+// (src/pack/layout.h).
+#ifndef PUNCTUAL_LIGHTS
+#define PUNCTUAL_LIGHTS 0
+#endif
+#if PUNCTUAL_LIGHTS
+const int PUNCTUAL_POINT = 0, PUNCTUAL_SPOT = 1, PUNCTUAL_DIRECTIONAL = 2;  // fp::PunctualLightType
+
+struct PunctualLight {
+    int type;
+    vec3 position;   // point, spot; directional: the centre of the sphere its light subpaths start from
+    vec3 direction;  // unit, the way the light travels (spot: the cone's axis)
+    vec3 intensity;  // W/sr; directional: the irradiance in W/m^2 on a surface facing it
+    float cosOuter, cosInner;  // spot
+    float radius;              // directional: the sphere's radius
+};
+
+PunctualLight fetchPunctualLight(int k) {
+    int i = uLightCount + k * PUNCTUAL_TEXELS;
+    vec4 a = lightTexel(i), b = lightTexel(i + 1), c = lightTexel(i + 2);
+    return PunctualLight(int(a.w), a.xyz, b.xyz, c.rgb, b.w, c.w, b.w);
+}
+
+// Radiant intensity of a point or spot light along unit direction w (away from the light): a spot
+// scales it by glTF's falloff t^2, t the cosine's linear ramp from the outer cone (0) to the inner one
+// (1) (src/scene/punctual_light.h spotFalloff).
+vec3 punctualIntensity(PunctualLight l, vec3 w) {
+    if (l.type != PUNCTUAL_SPOT) return l.intensity;
+    float t = clamp((dot(l.direction, w) - l.cosOuter) / (l.cosInner - l.cosOuter), 0.0, 1.0);
+    return l.intensity * (t * t);
+}
+
+// The directions bdpt's light subpaths leave a point or spot light in (pbrt-v4 PointLight::SampleLe,
+// SpotLight::SampleLe): uniform over the sphere, or uniform inside a spot's outer cone; and their
+// solid-angle density.
+vec3 samplePunctualDirection(PunctualLight l, vec2 u) {
+    if (l.type == PUNCTUAL_POINT) return sampleUniformSphere(u);
+    float z = 1.0 - u.x * (1.0 - l.cosOuter), r = sqrt(max(0.0, 1.0 - z * z)), phi = 2.0 * PI * u.y;
+    return toWorld(vec3(r * cos(phi), r * sin(phi), z), l.direction);
+}
+
+float punctualDirectionPdf(PunctualLight l, vec3 w) {
+    if (l.type == PUNCTUAL_POINT) return 1.0 / (4.0 * PI);
+    return dot(l.direction, w) >= l.cosOuter ? 1.0 / (2.0 * PI * (1.0 - l.cosOuter)) : 0.0;
+}
+#endif
 
 // The share of light samples that go to the environment: half when there are also emitters.
 float environmentSelection() {
@@ -129,18 +181,26 @@ int pickLight(float u) {
 // the cdf lies on rand()'s 2^-24 grid and the picked entry's bounds differ by its pmf exactly. The
 // rescaled x keeps pmf * 2^24 levels; below 2^-12 of the power (fewer than 4096 levels across the
 // triangle) the point takes a pair of its own.
+// A punctual light's entry (scenes with PUNCTUAL_LIGHTS) is picked the same way and takes no point.
 struct EmitterPoint {
     TriangleData tri;
     vec2 unitSquare;  // for the point on it: sampleTriangle (uniform by area) or sampleSphericalTriangle
+    int punctual;     // -1: the emitter triangle `tri`; else the punctual light of that number (no tri)
+    float punctualPmf;  // its selection probability
 };
 
 EmitterPoint sampleEmitterPoint() {
     vec2 u = rand2();
     int entry = pickLight(u.x);
-    TriangleData tri = fetchTriangle(int(lightTexel(entry).x));
+    vec4 texel = lightTexel(entry);
+#if PUNCTUAL_LIGHTS
+    if (texel.x < 0.0)
+        return EmitterPoint(TriangleData(vec3(0.0), vec3(0.0), vec3(0.0), 0, 0.0), u, int(-texel.x) - 1, texel.z);
+#endif
+    TriangleData tri = fetchTriangle(int(texel.x));
     float below = entry > 0 ? lightTexel(entry - 1).y : 0.0;
     vec2 v = tri.lightPmf >= 1.0 / 4096.0 ? vec2((u.x - below) / tri.lightPmf, u.y) : rand2();
-    return EmitterPoint(tri, v);
+    return EmitterPoint(tri, v, -1, 0.0);
 }
 
 // The area density of sampleLight's emitter points on triangle tri: its pmf (the probability that
@@ -185,7 +245,7 @@ float sphericalSamplingArea(TriangleData tri, vec3 from) {
 }
 
 LightSample sampleLight(vec3 from) {
-    LightSample ls = LightSample(vec3(0.0, 0.0, 1.0), 0.0, vec3(0.0), 0.0, vec3(0.0), vec3(0.0), 0.0);
+    LightSample ls = LightSample(vec3(0.0, 0.0, 1.0), 0.0, vec3(0.0), 0.0, vec3(0.0), vec3(0.0), 0.0, false);
     float pEnvironment = environmentSelection();
     if (rand() < pEnvironment) {
         ls.dir = sampleEnvironmentDirection();
@@ -196,6 +256,31 @@ LightSample sampleLight(vec3 from) {
     }
     if (uLightCount == 0) return ls;
     EmitterPoint e = sampleEmitterPoint();
+#if PUNCTUAL_LIGHTS
+    // A delta light: the one direction toward it, the irradiance it gives a surface facing it, and the
+    // probability of the pick for a "density" (pbrt-v4 section 12.2, PointLight::SampleLi: a delta
+    // distribution's pdf is 1; the light sampler's pmf divides, section 13.4).
+    if (e.punctual >= 0) {
+        PunctualLight l = fetchPunctualLight(e.punctual);
+        ls.delta = true;
+        if (l.type == PUNCTUAL_DIRECTIONAL) {
+            ls.dir = -l.direction;
+            ls.dist = INF;
+            ls.radiance = l.intensity;
+        } else {
+            vec3 toLight = l.position - from;
+            float dist2 = dot(toLight, toLight);
+            if (dist2 == 0.0) return ls;
+            ls.dist = sqrt(dist2);
+            ls.dir = toLight / ls.dist;
+            ls.point = l.position;  // on no surface: normal and offset 0, the shadow ray ends there
+            ls.radiance = punctualIntensity(l, -ls.dir) / dist2;
+            if (ls.radiance == vec3(0.0)) return ls;  // outside a spot's cone: pdf 0, no shadow ray
+        }
+        ls.pdf = (1.0 - pEnvironment) * e.punctualPmf;
+        return ls;
+    }
+#endif
     TriangleData tri = e.tri;
     ls.normal = normalize(cross(tri.e1, tri.e2));
     ls.offset = surfaceOffset(tri);

@@ -27,9 +27,21 @@
 // light. Caustic light bounced once more off a diffuse surface is found by the s >= 2 joins (light ->
 // glass -> glass -> floor -> wall -> camera: s = 4 joins the wall to the floor point).
 //
-// Environment light: light subpaths start on emissive triangles only, so light arriving from the
-// environment is found by s = 0 alone (a camera subpath that escapes), with weight 1, as in the bsdf
-// integrator. That is unbiased but noisy for scenes lit mostly by the environment: use nee there.
+// Punctual lights (point, spot, directional: lights.glsl) are picked with the emitter triangles, by
+// power, for s = 1 and as light-subpath origins. They are delta lights, which pbrt-v3 16.3 (and pbrt-v4's
+// BDPTIntegrator) handle this way, and so does this file: y0 is a delta position (point, spot: density
+// pdfPos = 1 times the pick's pmf) or a delta direction (directional: a point on a disk of the scene's
+// bounding radius facing the light, density 1 / (pi r^2)); the first direction is uniform over the
+// sphere or inside the spot's outer cone, or the light's own. No camera subpath can hit such a light, so
+// strategy s = 0 does not exist for their paths (misWeight leaves it out), and (s, t) = (1, 1), the light
+// itself seen by the camera, is not drawn, as nee and the camera do not see one either. Every other
+// strategy works as for area lights: s = 1 joins z_{t-1} to the light, light tracing (t = 1) starts from
+// it, and its delta density cancels from every ratio but the one with s = 0.
+//
+// Environment light: light subpaths start on emissive triangles and punctual lights only, so light
+// arriving from the environment is found by s = 0 alone (a camera subpath that escapes), with weight 1, as
+// in the bsdf integrator. That is unbiased but noisy for scenes lit mostly by the environment: use nee
+// there.
 //
 // Fragment-shader limits (fixed arrays, no recursion):
 //   BDPT_MAX_LIGHT_VERTICES  light subpath vertices stored (y0..y3 by default; the renderer sets it, as the
@@ -51,30 +63,71 @@
 
 // Strategy s = 1: z_{t-1} joined to a point sampled afresh on an emitter (by power, then uniformly on the
 // triangle): the unweighted contribution beta_z f(z -> y) Le(y -> z) |cos(theta_y)| / (r^2 p_A(y)).
+// Or to a punctual light picked by power (pmf): beta_z f(z -> y) I(y -> z) / (r^2 pmf), or for a
+// directional light beta_z f(z -> -w) E / pmf (pbrt-v3 16.3, "Subpath Connections", s = 1, with a delta
+// light's Sample_Li).
 vec3 connectToLight(int t) {
     PathVertex c = gCamera[t - 1];
     EmitterPoint e = sampleEmitterPoint();
-    TriangleData tri = e.tri;
-    vec2 b = sampleTriangle(e.unitSquare);  // by area: bdpt's vertices carry area densities
-    vec3 normal = normalize(cross(tri.e1, tri.e2));
-    PathVertex y = PathVertex(tri.v0 + b.x * tri.e1 + b.y * tri.e2, normal, normal, normal, vec3(0.0),
-                              tri.material, 1.0, emitterAreaPdf(tri), 0.0, false, false, surfaceOffset(tri));
-    vec3 d = y.p - c.p;
-    float dist2 = dot(d, d);
-    if (dist2 == 0.0) return vec3(0.0);
-    d *= inversesqrt(dist2);
-    float cosLight = -dot(normal, d);
-    if (cosLight <= 0.0) return vec3(0.0);  // one-sided emitter seen from behind
+    PathVertex y;
+    vec3 d, Le;
+    float scale, zRevLast, pdfFresh;
+    bool delta = false;
+#if PUNCTUAL_LIGHTS
+    if (e.punctual >= 0) {
+        PunctualLight l = fetchPunctualLight(e.punctual);
+        delta = true;
+        pdfFresh = e.punctualPmf;
+        if (l.type == PUNCTUAL_DIRECTIONAL) {
+            d = -l.direction;
+            Le = l.intensity;
+            scale = 1.0 / e.punctualPmf;
+            // The light subpath would reach c from the disk with its area density projected onto c.
+            zRevLast = abs(dot(c.ng, d)) / (PI * l.radius * l.radius);
+            // A point beyond the scene's bounding sphere (c lies inside it) ends the shadow ray, as pbrt-v3's
+            // DistantLight::Sample_Li does: one traversal serves every kind of light.
+            vec3 far = c.p + d * (2.0 * l.radius);
+            y = PathVertex(far, -d, -d, -d, vec3(0.0), 0, 1.0, pdfFresh, 0.0, false, false, 0.0);
+        } else {
+            d = l.position - c.p;
+            float dist2 = dot(d, d);
+            if (dist2 == 0.0) return vec3(0.0);
+            d *= inversesqrt(dist2);
+            Le = punctualIntensity(l, -d);
+            if (Le == vec3(0.0)) return vec3(0.0);  // outside a spot's cone
+            scale = 1.0 / (dist2 * e.punctualPmf);
+            zRevLast = toArea(punctualDirectionPdf(l, -d), l.position, c);
+            // On no surface: a zero normal and offset, so the shadow ray ends at the light itself.
+            y = PathVertex(l.position, vec3(0.0), vec3(0.0), -d, vec3(0.0), 0, 1.0, pdfFresh, 0.0, false, false, 0.0);
+        }
+    } else
+#endif
+    {
+        TriangleData tri = e.tri;
+        vec2 b = sampleTriangle(e.unitSquare);  // by area: bdpt's vertices carry area densities
+        vec3 normal = normalize(cross(tri.e1, tri.e2));
+        y = PathVertex(tri.v0 + b.x * tri.e1 + b.y * tri.e2, normal, normal, normal, vec3(0.0), tri.material, 1.0,
+                       emitterAreaPdf(tri), 0.0, false, false, surfaceOffset(tri));
+        d = y.p - c.p;
+        float dist2 = dot(d, d);
+        if (dist2 == 0.0) return vec3(0.0);
+        d *= inversesqrt(dist2);
+        float cosLight = -dot(normal, d);
+        if (cosLight <= 0.0) return vec3(0.0);  // one-sided emitter seen from behind
+        zRevLast = toArea(cosLight / PI, y.p, c);
+        Le = materialEmission(tri.material);
+        scale = cosLight / (dist2 * y.pdfFwd);
+        pdfFresh = y.pdfFwd;
+    }
     MaterialData mc = vertexMaterial(true, t - 1);
     vec3 f = vertexBsdf(c, mc, c.wo, d, false);
     if (f == vec3(0.0)) return vec3(0.0);
-    float zRevLast = toArea(cosLight / PI, y.p, c);
     float zRevPrev = t >= 3 ? toArea(vertexPdf(c, mc, d, c.wo), c.p, gCamera[t - 2]) : 0.0;
-    float yRevLast = toArea(vertexPdf(c, mc, c.wo, d), c.p, y);
-    float w = misWeight(1, t, zRevLast, zRevPrev, yRevLast, 0.0, y.pdfFwd);
+    // (the density of y sampled from c: strategy s = 0, which cannot find a delta light)
+    float yRevLast = delta ? 0.0 : toArea(vertexPdf(c, mc, c.wo, d), c.p, y);
+    float w = misWeight(1, t, zRevLast, zRevPrev, yRevLast, 0.0, pdfFresh, delta);
     if (!unoccluded(c, y)) return vec3(0.0);
-    vec3 Le = materialEmission(tri.material);
-    return c.beta * f * Le * (cosLight / (dist2 * y.pdfFwd)) * w * spectralFactor(c.dispersive);
+    return c.beta * f * Le * scale * w * spectralFactor(c.dispersive);
 }
 
 // Strategy s >= 2: z_{t-1} joined to y_{s-1}: the unweighted contribution
@@ -97,7 +150,7 @@ vec3 connectSubpaths(int s, int t) {
     float zRevPrev = t >= 3 ? toArea(vertexPdf(c, mc, d, c.wo), c.p, gCamera[t - 2]) : 0.0;
     float yRevLast = toArea(vertexPdf(c, mc, c.wo, d), c.p, l);
     float yRevPrev = toArea(vertexPdf(l, ml, -d, l.wo), l.p, gLight[s - 2]);
-    float w = misWeight(s, t, zRevLast, zRevPrev, yRevLast, yRevPrev, 0.0);
+    float w = misWeight(s, t, zRevLast, zRevPrev, yRevLast, yRevPrev, 0.0, gLightPunctual);
     if (!unoccluded(c, l)) return vec3(0.0);
     return c.beta * fc * fl * l.beta / dist2 * w * spectralFactor(c.dispersive || l.dispersive);
 }
@@ -138,7 +191,7 @@ vec3 radiance(Ray ray) {
             // s = 0 is the only strategy that finds it, with full weight (misWeight would read the 0 as
             // a delta density).
             float emitterPdf = emitterAreaPdf(fetchTriangle(hit.triangle));
-            float w = emitterPdf > 0.0 ? misWeight(0, t, emitterPdf, zRevPrev, 0.0, 0.0, 0.0) : 1.0;
+            float w = emitterPdf > 0.0 ? misWeight(0, t, emitterPdf, zRevPrev, 0.0, 0.0, 0.0, false) : 1.0;
             L += beta * Le * w * spectralFactor(dispersive);
         }
         if (depth >= maxDepth) break;

@@ -61,6 +61,15 @@ MaterialData vertexMaterial(bool camera, int i) {
 // light-tracing pass), which made the weights count impossible strategies through smooth glass.
 bool gLightDelta[BDPT_MAX_LIGHT_VERTICES];
 
+// Whether y0 of the light subpath is a punctual light (a delta position or direction, lights.glsl): then
+// no camera subpath can reach it (strategy s = 0 has density 0 for its paths, and misWeight leaves it
+// out), and y0 itself is never joined to the camera (a light of no size is not seen directly).
+#if PUNCTUAL_LIGHTS
+bool gLightPunctual = false;
+#else
+const bool gLightPunctual = false;
+#endif
+
 vec3 spectralFactor(bool dispersive) { return dispersive ? gSpectralWeight : vec3(1.0); }
 
 // The convention for delta densities in the weight ratios (pbrt-v3 16.3.4): a delta density is
@@ -132,7 +141,14 @@ bool unoccluded(PathVertex a, PathVertex b) { return !segmentOccluded(a.p, a.ng,
 // The densities at the joined vertices and their neighbours depend on the join, so they are passed in:
 // zRevLast, zRevPrev for z_{t-1}, z_{t-2}; yRevLast, yRevPrev for y_{s-1}, y_{s-2}; yFwdFresh is the
 // area density of the emitter point of an s = 1 join (sampled afresh, not taken from gLight).
-float misWeight(int s, int t, float zRevLast, float zRevPrev, float yRevLast, float yRevPrev, float yFwdFresh) {
+// deltaLight: the path's light vertex y0 is a punctual light, which strategy s = 0 cannot sample (pbrt-v3
+// 16.3, "Multiple Importance Sampling": Vertex::IsDeltaLight in MISWeight; pbrt-v4's BDPTIntegrator the
+// same). Its delta position or direction is common to every other strategy (each samples y0 by picking
+// the light), so it cancels from their ratios: y1's densities are the ones that differ, a direction
+// density from a point or spot light converted to area at y1, or from a directional light the disk's
+// area density projected onto y1.
+float misWeight(int s, int t, float zRevLast, float zRevPrev, float yRevLast, float yRevPrev, float yFwdFresh,
+                bool deltaLight) {
 #ifdef BDPT_LIGHT_TRACING_ONLY
     return t == 1 ? 1.0 : 0.0;  // a test isolates strategy t = 1 (tests/render/bdpt_test.cpp)
 #endif
@@ -155,7 +171,7 @@ float misWeight(int s, int t, float zRevLast, float zRevPrev, float yRevLast, fl
         float fwd = s == 1 ? yFwdFresh : gLight[i].pdfFwd;
         r *= remap0(rev) / remap0(fwd);
         bool deltaHere = i == s - 1 ? false : gLightDelta[i];
-        bool deltaBefore = i > 0 && gLightDelta[i - 1];  // area emitters are never delta
+        bool deltaBefore = i > 0 ? gLightDelta[i - 1] : deltaLight;  // i = 0: strategy s = 0
         if (!deltaHere && !deltaBefore) sum += r * r;
     }
     return 1.0 / (1.0 + sum);
@@ -179,24 +195,68 @@ bool meetDispersion(inout Surface s) {
 int traceLightSubpath(int maxDepth) {
     int n = min(BDPT_MAX_LIGHT_VERTICES, maxDepth + 1);
     for (int i = 0; i < BDPT_MAX_LIGHT_VERTICES; ++i) gLightDelta[i] = false;
+#if PUNCTUAL_LIGHTS
+    gLightPunctual = false;
+#endif
     if (n == 0 || uLightCount == 0) return 0;
     EmitterPoint e = sampleEmitterPoint();
-    TriangleData tri = e.tri;
-    vec2 b = sampleTriangle(e.unitSquare);  // by area: bdpt's vertices carry area densities
-    vec3 normal = normalize(cross(tri.e1, tri.e2));
-    float pdfPosition = emitterAreaPdf(tri);
-    vec3 Le = materialEmission(tri.material);
-    PathVertex y0 = PathVertex(tri.v0 + b.x * tri.e1 + b.y * tri.e2, normal, normal, normal, Le / pdfPosition,
-                               tri.material, 1.0, pdfPosition, 0.0, false, false, surfaceOffset(tri));
-    storeLightVertex(0, y0);
-    if (n == 1) return 1;
+    vec3 dir, beta;
+    float pdfDir;
+    Ray ray;
+#if PUNCTUAL_LIGHTS
+    // y1's area density from a directional light: the disk's area density times |cos| at y1 (0: y1's
+    // density is pdfDir converted to area, as from any other y0).
+    float diskPdf = 0.0;
+    if (e.punctual >= 0) {
+        // Emission from a punctual light (pbrt-v4 sections 12.2 and 12.3, SampleLe; pbrt-v3 16.3,
+        // "Generating the Light Subpath"): y0 has the probability of the pick for its density (a delta
+        // position: pdfPos 1), and beta of y1 is I(w) / (pmf p(w)) for a point or spot light, w drawn by
+        // samplePunctualDirection; a directional light's rays start uniformly on the disk of radius r
+        // facing it, one radius behind the centre of the sphere that bounds the scene, so beta is
+        // E / (pmf / (pi r^2)) (its direction is a delta: pdfDir 1).
+        gLightPunctual = true;
+        PunctualLight l = fetchPunctualLight(e.punctual);
+        vec3 origin = l.position;
+        if (l.type == PUNCTUAL_DIRECTIONAL) {
+            dir = l.direction;
+            vec3 t, b;
+            orthonormalBasis(dir, t, b);
+            vec2 u = rand2();
+            float r = l.radius * sqrt(u.x), phi = 2.0 * PI * u.y;  // uniform on the disk
+            origin += l.radius * -dir + r * cos(phi) * t + r * sin(phi) * b;
+            diskPdf = 1.0 / (PI * l.radius * l.radius);
+            pdfDir = 1.0;
+            beta = l.intensity / (e.punctualPmf * diskPdf);
+        } else {
+            dir = samplePunctualDirection(l, rand2());
+            // (not punctualDirectionPdf, whose cone test rounding could fail at the cone's edge)
+            pdfDir = l.type == PUNCTUAL_POINT ? 1.0 / (4.0 * PI) : 1.0 / (2.0 * PI * (1.0 - l.cosOuter));
+            beta = punctualIntensity(l, dir) / (e.punctualPmf * pdfDir);
+        }
+        storeLightVertex(0, PathVertex(origin, dir, dir, dir, l.intensity / e.punctualPmf, 0, 1.0, e.punctualPmf,
+                                       0.0, false, false, 0.0));
+        if (n == 1 || pdfDir <= 0.0 || beta == vec3(0.0)) return 1;
+        ray = Ray(origin, dir);
+    } else
+#endif
+    {
+        TriangleData tri = e.tri;
+        vec2 b = sampleTriangle(e.unitSquare);  // by area: bdpt's vertices carry area densities
+        vec3 normal = normalize(cross(tri.e1, tri.e2));
+        float pdfPosition = emitterAreaPdf(tri);
+        vec3 Le = materialEmission(tri.material);
+        PathVertex y0 = PathVertex(tri.v0 + b.x * tri.e1 + b.y * tri.e2, normal, normal, normal, Le / pdfPosition,
+                                   tri.material, 1.0, pdfPosition, 0.0, false, false, surfaceOffset(tri));
+        storeLightVertex(0, y0);
+        if (n == 1) return 1;
 
-    // Cosine-weighted emission: Le cos / (p_A * cos / pi) = Le pi / p_A.
-    vec3 dir = toWorld(sampleCosineLocal(rand2()), normal);
-    float pdfDir = dot(normal, dir) / PI;
-    if (pdfDir <= 0.0) return 1;
-    vec3 beta = Le * PI / pdfPosition;
-    Ray ray = Ray(offsetToward(y0.p, normal, y0.offset, dir), dir);
+        // Cosine-weighted emission: Le cos / (p_A * cos / pi) = Le pi / p_A.
+        dir = toWorld(sampleCosineLocal(rand2()), normal);
+        pdfDir = dot(normal, dir) / PI;
+        if (pdfDir <= 0.0) return 1;
+        beta = Le * PI / pdfPosition;
+        ray = Ray(offsetToward(y0.p, normal, y0.offset, dir), dir);
+    }
     bool dispersive = false;
     int count = 1;
     while (count < n) {
@@ -207,6 +267,9 @@ int traceLightSubpath(int maxDepth) {
         PathVertex y = PathVertex(s.position, s.geometricNormal, s.shadingNormal, -ray.dir, beta,
                                   s.materialIndex, s.eta, 0.0, 0.0, false, dispersive, s.offset);
         y.pdfFwd = toArea(pdfDir, gLight[count - 1].p, y);
+#if PUNCTUAL_LIGHTS
+        if (count == 1 && diskPdf > 0.0) y.pdfFwd = diskPdf * abs(dot(ray.dir, y.ng));
+#endif
         storeLightVertex(count, y);
         keepDiffuse(false, count, s);
         ++count;

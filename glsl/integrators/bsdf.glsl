@@ -1,6 +1,8 @@
 // BSDF importance sampling: directions drawn with a density shaped like the surface's scattering
 // (cos(theta) / pi for a Lambertian surface, so each bounce weighs f cos / pdf = albedo and the cosine
 // noise is gone; visible GGX normals for glossy ones; Fresnel-chosen reflection or refraction for glass).
+// Light is found only where a path hits it, so punctual lights (point, spot, directional: no size, no
+// ray can hit one) do not light this integrator's image; the renderer warns (src/render/renderer.cpp).
 vec3 radiance(Ray ray) {
     vec3 L = vec3(0.0), beta = vec3(1.0);
     for (int depth = 0;; ++depth) {

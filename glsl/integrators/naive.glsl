@@ -32,5 +32,7 @@ vec3 radiance(Ray ray) {
         if (!survivesRoulette(beta, depth)) break;
         ray = spawnRay(s, dir);
     }
+    // Light is found only where a path hits it, so point, spot and directional lights, which nothing can
+    // hit, do not light this image (as in bsdf.glsl; the renderer warns).
     return L + takeIndirect();
 }

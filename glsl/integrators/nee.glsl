@@ -28,9 +28,14 @@ vec3 radiance(Ray ray) {
             vec3 wi = toLocal(s, ls.dir);
             if (ls.pdf > 0.0 && sameSide(s, wi, ls.dir)) {
                 vec3 f = bsdfEval(s.material, wo, wi, s.eta);
-                if (f != vec3(0.0) && lightVisible(s, ls))
-                    addLight(L, beta * f * ls.radiance * powerHeuristic(ls.pdf, bsdfPdf(s.material, wo, wi, s.eta)) / ls.pdf,
-                             depth + 1);
+                if (f != vec3(0.0) && lightVisible(s, ls)) {
+                    float w = ls.delta ? 1.0 : powerHeuristic(ls.pdf, bsdfPdf(s.material, wo, wi, s.eta));
+                    // A punctual light (point, spot, directional) is a delta light that only light
+                    // sampling can find: weight 1, as in pbrt-v4's PathIntegrator::SampleLd (section
+                    // 13.4). The light such a light sends through a mirror or smooth glass onto a diffuse
+                    // surface (a caustic) is not found here at all (bdpt finds it).
+                    addLight(L, beta * f * ls.radiance * w / ls.pdf, depth + 1);
+                }
             }
         }
 

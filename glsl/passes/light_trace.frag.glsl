@@ -40,6 +40,7 @@ vec3 lightToCamera(int s, out vec2 pixel) {
     float yRevPrev = 0.0;
     MaterialData m = vertexMaterial(false, s - 1);
     if (s == 1) {
+        if (gLightPunctual) return vec3(0.0);  // a light of no size is not seen (bdpt_subpaths.glsl)
         float cosLight = dot(y.ng, d);
         if (cosLight <= 0.0) return vec3(0.0);  // one-sided emitter seen from behind
         f = vec3(cosLight);
@@ -51,7 +52,7 @@ vec3 lightToCamera(int s, out vec2 pixel) {
     }
     // The density with which the camera would have sampled y (through its pixel), for the weights.
     float yRevLast = toArea(cameraDirectionPdf(-d), uCameraEye, y);
-    float w = misWeight(s, 1, 0.0, 0.0, yRevLast, yRevPrev, s == 1 ? y.pdfFwd : 0.0);
+    float w = misWeight(s, 1, 0.0, 0.0, yRevLast, yRevPrev, s == 1 ? y.pdfFwd : 0.0, gLightPunctual);
     PathVertex eye = PathVertex(uCameraEye, uCameraForward, uCameraForward, uCameraForward, vec3(1.0), 0, 1.0,
                                 1.0, 0.0, false, false, 0.0);
     if (!unoccluded(y, eye)) return vec3(0.0);

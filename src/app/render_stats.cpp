@@ -49,6 +49,7 @@ std::string formatRenderStats(const RenderStats& stats) {
     text += formatText("renderer         %s\n", stats.renderer.c_str());
     text += formatText("scene            %s\n", stats.scene.c_str());
     text += formatText("triangles        %u (%u emissive)\n", s.triangles, s.emitters);
+    if (s.punctualLights > 0) text += formatText("punctual lights  %u\n", s.punctualLights);
     text += formatText(
         "bvh              %u nodes, %u leaves, depth %u, leaf size %u..%u (mean %.2f), SAH cost %.2f\n",
         s.bvh.nodeCount, s.bvh.leafCount, s.bvh.maxDepth, s.bvh.minLeafSize, s.bvh.maxLeafSize,
@@ -121,6 +122,7 @@ nlohmann::json renderStatsJson(const RenderStats& stats) {
         {"output", stats.output},
         {"triangles", s.triangles},
         {"emitters", s.emitters},
+        {"punctual_lights", s.punctualLights},
         {"bvh", bvh},
         {"memory", memory},
         {"scene_reads", sceneReadsName(s.sceneReads)},

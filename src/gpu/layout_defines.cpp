@@ -16,6 +16,7 @@ ShaderDefines layoutDefines(bool images) {
         {"MATERIALS_UNIT", s(kMaterialsUnit)},    {"LIGHTS_UNIT", s(kLightsUnit)},
         {"TEXCOORD_TEXELS", s(kTexcoordTexels)},  {"LEAF_BIT", std::to_string(kLeafBit) + "u"},
         {"LEAF_COUNT_SHIFT", s(kLeafCountShift)}, {"LEAF_FIRST_MASK", std::to_string(kMaxLeafFirst) + "u"}};
+    defines.emplace_back("PUNCTUAL_TEXELS", s(kPunctualTexels));
     if (images) {
         // A GL_ name becomes an #extension line (gl/shader_source.h): the shaders are #version 410.
         defines.emplace_back("GL_ARB_shader_image_load_store", "require");

@@ -16,6 +16,8 @@ namespace fp::native {
 std::optional<std::string> unsupportedFeature(const fp::Scene& scene) {
     if (scene.environment.hasMap())
         return "an environment map (the native reference has a constant colour only)";
+    if (!scene.punctualLights.empty())
+        return "point, spot or directional lights (the native reference samples emissive triangles only)";
     for (const Material& m : scene.materials) {
         if (m.type != MaterialType::Diffuse)
             return "material '" + m.name +

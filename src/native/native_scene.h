@@ -67,7 +67,7 @@ struct Scene {
 Scene buildScene(const fp::Scene& scene, const BvhBuildOptions& options);
 
 // Why the reference cannot render `scene` as the renderer would (materials other than Lambertian with
-// optional emission, textures, environment maps), or nothing if it can.
+// optional emission, textures, environment maps, punctual lights), or nothing if it can.
 std::optional<std::string> unsupportedFeature(const fp::Scene& scene);
 
 }  // namespace fp::native

@@ -49,7 +49,24 @@
 //                                            type: fp::MaterialType as an exact float
 //                                            diffuse texture: index into textureTable, -1 for none; read
 //                                            only when the shader is compiled with SURFACE_TEXTURES
-//  lights        RGBA32F    1 per emitter    (triangle index, cdf up to and including it, pmf, area)
+//  lights        RGBA32F    1 per light,     the light-selection cdf, one entry per emitter triangle (in
+//                           then 3 per       leaf order) and then one per punctual light (in the scene's
+//                           punctual light   order), each (index, cdf up to and including it, pmf, area):
+//                                            index >= 0: the emitter triangle of that packed index, area
+//                                            its area; index < 0: punctual light k = -1 - index, area 0.
+//                                            The shader gets the number of entries as uLightCount.
+//                                            Then, from texel uLightCount on, kPunctualTexels per punctual
+//                                            light k (scene/scene.h PunctualLight; only in scenes that
+//                                            have some, whose shaders the renderer compiles with
+//                                            PUNCTUAL_LIGHTS):
+//                                            (position.xyz, type) (direction.xyz, a) (intensity.rgb, b)
+//                                            type: fp::PunctualLightType as an exact float; direction:
+//                                            unit, the way the light travels; intensity: W/sr, or for a
+//                                            directional light the irradiance in W/m^2;
+//                                            spot: a = cos(outer cone angle), b = cos(inner cone angle);
+//                                            directional: position = the centre of the sphere its light
+//                                            subpaths start from (scene/punctual_light.h), a = its radius;
+//                                            otherwise 0.
 //
 // Only when some material has a texture (the renderer then defines SURFACE_TEXTURES; without it the
 // shader has no texture code at all and the three buffers are not allocated):
@@ -92,6 +109,7 @@ uint32_t encodeChild(const ChildLink& child);
 ChildLink decodeChild(uint32_t link);
 constexpr int kMaterialTexels = 5;
 constexpr int kLightTexels = 1;
+constexpr int kPunctualTexels = 3;  // per punctual light, after the cdf entries in the lights buffer
 constexpr int kTexcoordTexels = 3;
 constexpr uint32_t kMaxFloatIndex = 1u << 24;
 

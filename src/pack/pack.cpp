@@ -1,12 +1,14 @@
 #include "pack/pack.h"
 
 #include <algorithm>
+#include <cmath>
 #include <string>
 
 #include "bvh/wide_bvh.h"
 #include "core/error.h"
 #include "pack/layout.h"
 #include "scene/light_selection.h"
+#include "scene/punctual_light.h"
 #include "scene/spectrum.h"
 
 namespace fp {
@@ -80,7 +82,37 @@ PackedScene packScene(const Scene& scene, const Bvh& bvh) {
             out.lights.emplace_back(float(i), cdf, pmf[i], t.area());
         }
     }
+    // Punctual lights: their cdf entries after the triangles', then their data (pack/layout.h). One with
+    // no power (black) has no entry and is never sampled, as a black emitter triangle has none.
+    std::vector<uint32_t> punctual;
+    for (size_t k = 0; k < scene.punctualLights.size(); ++k) {
+        validatePunctualLight(scene.punctualLights[k], scene.source + ": light " + std::to_string(k));
+        float p = emitters.punctualPmf[k];
+        if (!(p > 0.0f)) continue;
+        cdf += p;
+        out.lights.emplace_back(-1.0f - float(punctual.size()), cdf, p, 0.0f);
+        punctual.push_back(uint32_t(k));
+    }
     out.lightCount = uint32_t(out.lights.size());
+    out.punctualCount = uint32_t(punctual.size());
+    if (!punctual.empty()) {
+        BoundingSphere sphere = directionalLightSphere(scene);
+        for (uint32_t k : punctual) {
+            const PunctualLight& l = scene.punctualLights[k];
+            glm::vec3 position = l.position;
+            float a = 0.0f, b = 0.0f;
+            if (l.type == PunctualLightType::Spot) {
+                a = std::cos(l.outerConeAngle);
+                b = std::cos(l.innerConeAngle);
+            } else if (l.type == PunctualLightType::Directional) {
+                position = sphere.centre;
+                a = sphere.radius;
+            }
+            out.lights.emplace_back(position, float(l.type));
+            out.lights.emplace_back(glm::normalize(l.direction), a);
+            out.lights.emplace_back(l.intensity, b);
+        }
+    }
 
     bool textured = false;
     for (const Material& m : scene.materials) {

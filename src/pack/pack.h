@@ -21,9 +21,11 @@ struct PackedScene {
     HugePageVector<glm::vec2> texcoords;
     HugePageVector<uint8_t> textureTexels;  // 4 bytes per texel
     std::vector<glm::ivec4> textureTable;
-    uint32_t triangleCount = 0, nodeCount = 0, lightCount = 0;
+    // lightCount: entries of the light-selection cdf (emitter triangles, then punctual lights: layout.h);
+    // punctualCount of them are punctual lights.
+    uint32_t triangleCount = 0, nodeCount = 0, lightCount = 0, punctualCount = 0;
     uint32_t bvhDepth = 0;         // deepest (wide) node, root = 0: the traversal stack grows with it
-    float totalLightPower = 0.0f;  // sum over emitters of luminance(Ke) * area
+    float totalLightPower = 0.0f;  // sum over lights of their power / pi (scene/light_selection.h)
 
     bool hasTextures() const { return !textureTable.empty(); }
     size_t bytes() const;
@@ -32,7 +34,8 @@ struct PackedScene {
 };
 
 // Throws fp::Error if the scene cannot be addressed by the layout (over 2^24 triangles or materials,
-// 2^31 texture texels, or a BVH node over 2^40 across: pack/quantised_node.h).
+// 2^31 texture texels, or a BVH node over 2^40 across: pack/quantised_node.h), or has a punctual light
+// that validatePunctualLight refuses.
 PackedScene packScene(const Scene& scene, const Bvh& bvh);
 
 }  // namespace fp

@@ -82,6 +82,15 @@ std::string renderFingerprint(const Scene& scene, const RenderSettings& settings
     f.value(e.intensity);
     f.value(e.rotationDegrees);
     f.bytes(e.map.pixels.data(), e.map.pixels.size() * sizeof(glm::vec3));
+    // Only scenes that have them, so that every other scene keeps the fingerprint it had.
+    for (const PunctualLight& l : scene.punctualLights) {
+        f.value(l.type);
+        f.value(l.position);
+        f.value(l.direction);
+        f.value(l.intensity);
+        f.value(l.innerConeAngle);
+        f.value(l.outerConeAngle);
+    }
     f.value(camera.eye);
     f.value(camera.target);
     f.value(camera.up);

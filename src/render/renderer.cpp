@@ -6,6 +6,7 @@
 
 #include "core/clock.h"
 #include "core/error.h"
+#include "core/log.h"
 #include "gpu/layout_defines.h"
 #include "pack/layout.h"
 #include "pack/light_strategy.h"
@@ -41,7 +42,8 @@ Renderer::Renderer(const Scene& scene, ShaderLibrary shaders, const BvhBuildOpti
     closeEmitters_ = emittersFaceCloseSurfaces(scene, bvh);
     PackedScene packed = packScene(scene, bvh);
     stats_.triangles = packed.triangleCount;
-    stats_.emitters = packed.lightCount;
+    stats_.emitters = packed.lightCount - packed.punctualCount;
+    stats_.punctualLights = packed.punctualCount;
     stats_.gpuBytes = packed.bytes();
     stats_.gpuGeometryBytes = packed.geometryBytes();
     stats_.gpuTextureBytes = packed.textureBytes();
@@ -50,6 +52,7 @@ Renderer::Renderer(const Scene& scene, ShaderLibrary shaders, const BvhBuildOpti
     // for each node on the way down from the root.
     stats_.stackSize = std::max<uint32_t>(32, 3 * packed.bvhDepth + 1);
     lightCount_ = packed.lightCount;
+    punctualCount_ = packed.punctualCount;
     textures_ = std::make_unique<SceneTextures>(std::move(packed));
     stats_.uploadSeconds = secondsSince(start);
     stats_.gpuPinnedBytes = textures_->pinnedBytes();
@@ -91,6 +94,8 @@ std::unique_ptr<Program> Renderer::compile(Integrator integrator, const char* fr
     }
     // Only textured scenes pay for texture lookups (glsl/common/textures.glsl).
     if (surfaceTextures_) defines.emplace_back("SURFACE_TEXTURES", "1");
+    // Only scenes with point, spot or directional lights compile their sampling (glsl/common/lights.glsl).
+    defines.emplace_back("PUNCTUAL_LIGHTS", punctualCount_ > 0 ? "1" : "0");
     auto vec3Literal = [](const glm::vec3& v) {
         char text[96];
         std::snprintf(text, sizeof text, "vec3(%.9g, %.9g, %.9g)", v.x, v.y, v.z);
@@ -192,6 +197,17 @@ void Renderer::configure(const RenderSettings& settings, const Camera& camera) {
             settings_ = previous;
             throw;
         }
+        // Delta lights cannot be hit, and these two find light only by hitting it (glsl/integrators/).
+        for (Integrator i :
+             {settings.integrator, settings.split ? settings.split->integrator : settings.integrator})
+            if (punctualCount_ > 0 && settings.view == View::Radiance &&
+                (i == Integrator::Naive || i == Integrator::Bsdf)) {
+                warn(std::string("the ") + integratorName(i) + " integrator cannot see the scene's " +
+                     std::to_string(punctualCount_) +
+                     " point, spot or directional light(s): no ray can hit a light of no size; they light "
+                     "the image only with nee or bdpt");
+                break;
+            }
     }
     if (!targets_ || targets_->width() != settings.width || targets_->height() != settings.height) {
         glActiveTexture(GLenum(GL_TEXTURE0 + kSpareUnit));  // never rebind a scene texture's unit

@@ -20,6 +20,7 @@ namespace fp {
 
 struct SceneStats {
     uint32_t triangles = 0, emitters = 0;
+    uint32_t punctualLights = 0;  // point, spot and directional lights that can be sampled (not black)
     BvhStats bvh;
     double bvhBuildSeconds = 0.0, uploadSeconds = 0.0;
     double bvhBuildCpuSeconds = 0.0;  // process CPU time of the build, all its threads together
@@ -40,7 +41,8 @@ class Renderer {
     ~Renderer();
 
     // Sets what to render; restarts accumulation, recompiling shaders only when the integrator, view, guides
-    // or split changed. Throws fp::Error for settings that cannot be rendered.
+    // or split changed. Throws fp::Error for settings that cannot be rendered. Warns when the scene has
+    // punctual lights and an integrator that cannot see them (naive, bsdf) is chosen.
     void configure(const RenderSettings& settings, const Camera& camera);
     // Adds `samples` samples per pixel over the whole image; `progress(done)` is called after every
     // pass and may return false to stop early (an interrupted render keeps what it has). With bdpt each
@@ -89,8 +91,9 @@ class Renderer {
     SceneStats stats_;
     glm::vec3 environmentColor_{0.0f};
     float environmentRotation_ = 0.0f;
-    uint32_t materialTypes_ = 0;  // bit mask of the MaterialTypes in the scene
-    uint32_t lightCount_ = 0;
+    uint32_t materialTypes_ = 0;    // bit mask of the MaterialTypes in the scene
+    uint32_t lightCount_ = 0;       // entries of the light-selection cdf (pack/layout.h)
+    uint32_t punctualCount_ = 0;    // of them punctual lights: compile them in (PUNCTUAL_LIGHTS)
     bool closeEmitters_ = false;    // LightSampling::Auto samples by solid angle (pack/light_strategy.h)
     bool surfaceTextures_ = false;  // some material has a texture: compile the lookups in
     std::unique_ptr<SceneTextures> textures_;

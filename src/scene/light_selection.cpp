@@ -2,6 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
+
+#include "scene/punctual_light.h"
 
 namespace fp {
 
@@ -9,8 +12,23 @@ float luminance(const glm::vec3& rgb) {
     return glm::dot(rgb, glm::vec3(0.2126f, 0.7152f, 0.0722f));
 }
 
+double punctualLightPower(const PunctualLight& light, float sceneRadius) {
+    const double pi = 3.14159265358979324;
+    double y = double(luminance(light.intensity));
+    switch (light.type) {
+        case PunctualLightType::Point:
+            return 4.0 * pi * y;
+        case PunctualLightType::Spot:
+            return spotSolidAngle(light.innerConeAngle, light.outerConeAngle) * y;
+        case PunctualLightType::Directional:
+            return pi * double(sceneRadius) * double(sceneRadius) * y;
+    }
+    return 0.0;
+}
+
 EmitterPmfs emitterPmfs(const Scene& scene, const uint32_t* order, size_t count) {
-    std::vector<double> power(count, 0.0);
+    const size_t punctual = scene.punctualLights.size();
+    std::vector<double> power(count + punctual, 0.0);
     EmitterPmfs out;
     for (size_t i = 0; i < count; ++i) {
         const Triangle& t = scene.triangles[order[i]];
@@ -18,7 +36,20 @@ EmitterPmfs emitterPmfs(const Scene& scene, const uint32_t* order, size_t count)
         if (m.isEmissive()) power[i] = double(luminance(m.emission)) * double(t.area());
         out.totalPower += power[i];
     }
-    out.pmf = lightPmfs(power, out.totalPower);
+    if (punctual > 0) {
+        bool directional =
+            std::any_of(scene.punctualLights.begin(), scene.punctualLights.end(),
+                        [](const PunctualLight& l) { return l.type == PunctualLightType::Directional; });
+        float radius = directional ? directionalLightSphere(scene).radius : 0.0f;
+        for (size_t k = 0; k < punctual; ++k) {
+            power[count + k] = punctualLightPower(scene.punctualLights[k], radius) / 3.14159265358979324;
+            out.totalPower += power[count + k];
+        }
+    }
+    std::vector<float> pmf = lightPmfs(power, out.totalPower);
+    out.punctualPmf.assign(pmf.begin() + std::ptrdiff_t(count), pmf.end());
+    pmf.resize(count);
+    out.pmf = std::move(pmf);
     return out;
 }
 

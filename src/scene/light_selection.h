@@ -15,13 +15,24 @@ namespace fp {
 // Rec. 709 luminance: the weight of a colour's channels in an emitter's power.
 float luminance(const glm::vec3& rgb);
 
+// The power of a punctual light (scene/scene.h) in watts, of the luminance of its colour: 4 pi I for a
+// point light, I times spotSolidAngle for a spot (scene/punctual_light.h), pi r^2 E for a directional
+// light, r the radius of the sphere its light subpaths start from (pbrt-v4, sections 12.2, 12.2.1 and
+// 12.3, PointLight::Phi, SpotLight::Phi and DirectionalLight::Phi). `sceneRadius` matters only for the
+// last.
+double punctualLightPower(const PunctualLight& light, float sceneRadius);
+
 struct EmitterPmfs {
-    std::vector<float> pmf;   // per triangle, in the order asked for; 0 for non-emitters
-    double totalPower = 0.0;  // sum of luminance(Ke) * area over the emitters
+    std::vector<float> pmf;          // per triangle, in the order asked for; 0 for non-emitters
+    std::vector<float> punctualPmf;  // per Scene::punctualLights entry, after the triangles in the cdf
+    double totalPower = 0.0;         // sum of the powers below
 };
 
-// The selection probabilities of scene's triangles order[0 .. count) (e.g. a BVH's leaf order), each in
-// proportion to luminance(Ke) * area, as lightPmfs rounds them.
+// The selection probabilities of scene's triangles order[0 .. count) (e.g. a BVH's leaf order) and then
+// of its punctual lights, each in proportion to its power, as lightPmfs rounds them. The powers are in
+// the unit of luminance(Ke) * area, a triangle's power divided by pi (a one-sided Lambertian emitter of
+// radiance L and area A emits pi L A): so a punctual light's is punctualLightPower / pi. A scene
+// without punctual lights gets the probabilities it always had, to the bit.
 EmitterPmfs emitterPmfs(const Scene& scene, const uint32_t* order, size_t count);
 
 // Probabilities proportional to `power`, on the 2^-24 grid of the shader's random numbers and summing to

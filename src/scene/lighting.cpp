@@ -13,9 +13,12 @@ namespace fp {
 bool hasLight(const Scene& scene) {
     for (const Triangle& t : scene.triangles)
         if (t.material < scene.materials.size() && scene.materials[t.material].isEmissive()) return true;
+    auto positive = [](const glm::vec3& c) { return c.x > 0.0f || c.y > 0.0f || c.z > 0.0f; };
+    // A black punctual light is left out of light selection (pack/pack.cpp): it lights nothing.
+    for (const PunctualLight& l : scene.punctualLights)
+        if (positive(l.intensity)) return true;
     const Environment& e = scene.environment;
     // Each as the renderer sees it (render/renderer.cpp): a colour unscaled, a map times its intensity.
-    auto positive = [](const glm::vec3& c) { return c.x > 0.0f || c.y > 0.0f || c.z > 0.0f; };
     if (!e.hasMap()) return positive(e.color);
     if (!(e.intensity > 0.0f)) return false;
     for (const glm::vec3& p : e.map.pixels)

@@ -7,8 +7,9 @@
 
 namespace fp {
 
-// True when something in the scene emits light: a triangle of an emissive material, or an environment
-// that is not black (a non-zero colour, or a map with a positive texel and a positive intensity).
+// True when something in the scene emits light: a triangle of an emissive material, a point, spot or
+// directional light that is not black, or an environment that is not black (a non-zero colour, or a map
+// with a positive texel and a positive intensity).
 // Anything that adds a kind of light to Scene must be counted here too.
 bool hasLight(const Scene& scene);
 

@@ -90,6 +90,44 @@ struct Environment {
     bool isBlack() const { return !hasMap() && color == glm::vec3(0.0f); }
 };
 
+// A light of no extent: a point, a spot or a directional light, with glTF's semantics
+// (KHR_lights_punctual) so that a glTF node's light maps onto it field by field, in the renderer's
+// radiometric units. The renderer's radiance is W/(sr m^2) per RGB channel, the unit of MTL Ke, with
+// scene lengths taken as metres; so
+//   point, spot:  `intensity` is radiant intensity I in W/sr (colour x intensity): a surface at distance
+//                 r whose normal makes the angle theta with the way to the light receives the irradiance
+//                 E = I cos(theta) / r^2 (inverse-square falloff, never cut off);
+//   directional:  `intensity` is the irradiance E in W/m^2 on a surface facing the light, from the one
+//                 direction -`direction` (no falloff with distance).
+// glTF gives point and spot intensities in candela and directional ones in lux; they map onto these
+// 1:1, colour times intensity, as Ke and glTF's emissive factors are taken as radiance 1:1: the renderer
+// has no absolute photometric scale, and dividing by 683 lm/W would make a glTF lamp 683 times darker
+// than an emissive surface of the same nominal value. glTF's `range` (a cut-off hint) is not
+// represented: the falloff is the physical inverse square everywhere.
+// The lights are delta distributions (pbrt-v4, section 12.2, 12.3): no ray can hit one and the camera
+// never sees one directly; nee samples them and bdpt starts light subpaths on them, while the naive and
+// bsdf integrators, which find light only by hitting it, cannot see them at all.
+enum class PunctualLightType : uint32_t {
+    Point = 0,        // from `position` in every direction
+    Spot = 1,         // from `position` into a cone about `direction`
+    Directional = 2,  // from infinitely far away, travelling along `direction`
+};
+
+struct PunctualLight {
+    PunctualLightType type = PunctualLightType::Point;
+    std::string name;          // for messages and the viewer's panel; may be empty
+    glm::vec3 position{0.0f};  // point, spot: where the light is (a glTF node's world translation)
+    glm::vec3 direction{0.0f, 0.0f, -1.0f};  // spot, directional: unit, the way the light travels (the
+                                             // cone's axis; glTF: the node's -Z axis in world space)
+    glm::vec3 intensity{1.0f};               // W/sr (point, spot) or W/m^2 (directional), per channel, >= 0
+    // Spot only, glTF's innerConeAngle and outerConeAngle, in radians from the axis: full intensity up to
+    // the inner angle, nothing beyond the outer one, and between them glTF's reference falloff, the
+    // square of the cosine's linear ramp: t = (cos - cos outer) / (cos inner - cos outer), I t^2
+    // (scene/punctual_light.h). 0 <= inner < outer <= pi / 2, glTF's defaults 0 and pi / 4.
+    float innerConeAngle = 0.0f;
+    float outerConeAngle = 0.78539816f;
+};
+
 // A colour texture (MTL map_Kd). Texels are kept as the file stores them, 8-bit sRGB-encoded (what
 // colour maps hold); the renderer decodes them with the exact sRGB curve before filtering, so nothing is
 // lost to an early conversion and the GPU copy is a quarter of a float one.
@@ -105,7 +143,8 @@ struct Scene {
     std::optional<Camera> camera;     // from a scene file; absent for a bare OBJ
     RenderDefaults defaults;
     Environment environment;
-    std::string source;  // the file it came from, for messages
+    std::vector<PunctualLight> punctualLights;  // from a scene file's "lights" (scene/punctual_light.h)
+    std::string source;                         // the file it came from, for messages
 
     Aabb bounds() const {
         Aabb b;

@@ -13,6 +13,7 @@
 #include "image/image.h"
 #include "scene/lighting.h"
 #include "scene/load.h"
+#include "scene/punctual_light.h"
 #include "scene/text_file.h"
 
 namespace fp {
@@ -61,6 +62,11 @@ class Fields {
         if (!std::isfinite(static_cast<float>(d)))
             fail(path + " must be a finite number, got " + shown(value));
         return static_cast<float>(d);
+    }
+
+    const json& array(const json& value, const std::string& path, const std::string& what) const {
+        if (!value.is_array()) fail(path + " must be an array of " + what + ", got " + shown(value));
+        return value;
     }
 
     glm::vec3 vec3(const json& value, const std::string& path) const {
@@ -211,6 +217,107 @@ EnvironmentSpec parseEnvironment(const json& environment, Fields& fields) {
     return spec;
 }
 
+// "lights": [{"type": "point", "position": [x, y, z], "intensity": I or [r, g, b], "color": [r, g, b]},
+//            {"type": "spot", "position": ..., "direction": ..., "intensity": ..., "inner_cone": degrees,
+//             "outer_cone": degrees},
+//            {"type": "directional", "direction": [x, y, z], "irradiance": E or [r, g, b], "color": ...}]
+// Units and meaning: PunctualLight (scene/scene.h). "direction" is the way the light travels (need not be
+// of unit length); the strength is colour x intensity (or irradiance), the colour white if absent.
+std::vector<PunctualLight> parseLights(const json& lights, Fields& fields) {
+    fields.array(lights, "lights", "lights ({\"type\": \"point\", ...})");
+    std::vector<PunctualLight> out;
+    for (size_t i = 0; i < lights.size(); ++i) {
+        const std::string path = "lights[" + std::to_string(i) + "]";
+        const json& item = fields.object(lights[i], path);
+        if (!item.contains("type")) fields.fail(path + " needs a \"type\": point, spot or directional");
+        PunctualLight light;
+        const std::string typeName = fields.string(item["type"], path + ".type");
+        try {
+            light.type = parseName(typeName, kAllPunctualLightTypes, punctualLightTypeName, "light type");
+        } catch (const Error& e) {
+            fields.fail(path + ".type: " + e.what());
+        }
+        const PunctualLightType type = light.type;
+        const bool point = type == PunctualLightType::Point, spot = type == PunctualLightType::Spot,
+                   directional = type == PunctualLightType::Directional;
+        const std::string what = path + " (" + punctualLightTypeName(type) + ")";
+        // Keys of another type of light are mistakes worth stopping for, not typos to warn about.
+        if (directional && item.contains("position"))
+            fields.fail(what +
+                        ": a directional light has no \"position\" (it is infinitely far away; its "
+                        "\"direction\" is the way its light travels)");
+        if (point && item.contains("direction"))
+            fields.fail(what +
+                        ": a point light shines in every direction and takes no \"direction\" (a spot "
+                        "light does)");
+        if (!spot && (item.contains("inner_cone") || item.contains("outer_cone")))
+            fields.fail(what + ": only spot lights have \"inner_cone\" and \"outer_cone\"");
+        if (directional && item.contains("intensity"))
+            fields.fail(what +
+                        ": a directional light's strength is \"irradiance\" (W/m^2 on a surface facing "
+                        "it), not \"intensity\" (W/sr, point and spot lights)");
+        if (!directional && item.contains("irradiance"))
+            fields.fail(what + ": a " + punctualLightTypeName(type) +
+                        " light's strength is \"intensity\" (W/sr), not \"irradiance\" (W/m^2, directional "
+                        "lights)");
+        fields.checkKeys(item, path + ".",
+                         {"type", "name", "color", "position", "direction", "intensity", "irradiance",
+                          "inner_cone", "outer_cone"});
+        if (item.contains("name")) light.name = fields.string(item["name"], path + ".name");
+
+        const char* strengthKey = directional ? "irradiance" : "intensity";
+        if (!item.contains(strengthKey))
+            fields.fail(what + " needs \"" + strengthKey + "\" (" +
+                        (directional ? "W/m^2 on a surface facing the light" : "W/sr") +
+                        "): a number, or [r, g, b]");
+        const std::string strengthPath = path + "." + strengthKey;
+        const json& strength = item[strengthKey];
+        glm::vec3 value = strength.is_number() ? glm::vec3(fields.real(strength, strengthPath))
+                                               : fields.vec3(strength, strengthPath);
+        glm::vec3 color(1.0f);
+        if (item.contains("color")) color = fields.vec3(item["color"], path + ".color");
+        if (glm::any(glm::lessThan(value, glm::vec3(0.0f))))
+            fields.fail(strengthPath + " must not be negative");
+        if (glm::any(glm::lessThan(color, glm::vec3(0.0f))))
+            fields.fail(path + ".color must not be negative");
+        light.intensity = color * value;
+
+        if (!directional) {
+            if (!item.contains("position")) fields.fail(what + " needs a \"position\": [x, y, z]");
+            light.position = fields.vec3(item["position"], path + ".position");
+        }
+        if (!point) {
+            if (!item.contains("direction"))
+                fields.fail(what + " needs a \"direction\": [x, y, z], the way its light travels");
+            glm::dvec3 d(fields.vec3(item["direction"], path + ".direction"));
+            if (!(glm::length(d) > 0.0)) fields.fail(path + ".direction must not be the zero vector");
+            light.direction = glm::vec3(glm::normalize(d));
+        }
+        if (spot) {
+            float inner = 0.0f, outer = 45.0f;  // glTF's defaults, 0 and pi / 4
+            if (item.contains("inner_cone")) inner = fields.real(item["inner_cone"], path + ".inner_cone");
+            if (item.contains("outer_cone")) outer = fields.real(item["outer_cone"], path + ".outer_cone");
+            if (!(outer > 0.0f && outer <= 90.0f))
+                fields.fail(path +
+                            ".outer_cone must be in (0, 90] degrees (from the axis to where the light "
+                            "ends), got " +
+                            std::to_string(outer));
+            if (!(inner >= 0.0f && inner < outer))
+                fields.fail(path + ".inner_cone must be at least 0 and less than outer_cone (" +
+                            std::to_string(outer) + " degrees), got " + std::to_string(inner));
+            light.innerConeAngle = glm::radians(inner);
+            light.outerConeAngle = std::min(glm::radians(outer), 1.57079633f);
+        }
+        try {
+            validatePunctualLight(light, path);
+        } catch (const Error& e) {
+            fields.fail(e.what());
+        }
+        out.push_back(light);
+    }
+    return out;
+}
+
 }  // namespace
 
 Scene parseSceneFile(std::string_view bytes, const std::string& name, const MeshLoader& loadMesh,
@@ -231,7 +338,7 @@ Scene parseSceneFile(std::string_view bytes, const std::string& name, const Mesh
     }
     Fields fields(name);
     fields.object(root, "the top level");
-    fields.checkKeys(root, "", {"mesh", "camera", "render", "environment"});
+    fields.checkKeys(root, "", {"mesh", "camera", "render", "environment", "lights"});
     if (!root.contains("mesh")) fields.fail("missing \"mesh\" (the .obj, .gltf or .glb file to render)");
     std::string mesh = fields.string(root["mesh"], "mesh");
     if (mesh.empty()) fields.fail("mesh must not be empty");
@@ -241,12 +348,15 @@ Scene parseSceneFile(std::string_view bytes, const std::string& name, const Mesh
     if (root.contains("render")) defaults = parseRender(root["render"], fields);
     EnvironmentSpec environment;
     if (root.contains("environment")) environment = parseEnvironment(root["environment"], fields);
+    std::vector<PunctualLight> lights;
+    if (root.contains("lights")) lights = parseLights(root["lights"], fields);
     // Only after the whole file checked out: a typo in it should not cost a long mesh load first.
     Scene scene = loadMesh(mesh);
     fields.warnUnknownKeys();
     if (camera) scene.camera = camera;  // else the mesh's own (a glTF camera), if it has one
     scene.defaults = defaults;
     scene.environment = environment.environment;
+    scene.punctualLights = lights;
     if (!environment.mapPath.empty())
         scene.environment.map = (loadMap ? loadMap : noMaps)(environment.mapPath);
     scene.source = name;

@@ -2,7 +2,9 @@
 // Scene files: JSON naming a mesh, with an optional camera and render settings, e.g.
 //   {"mesh": "cornell.obj",
 //    "camera": {"eye": [278, 273, -800], "target": [278, 273, 0], "up": [0, 1, 0], "fov": 39.3},
-//    "render": {"width": 512, "height": 512, "spp": 64, "max_depth": 5, "seed": 1, "integrator": "nee"}}
+//    "render": {"width": 512, "height": 512, "spp": 64, "max_depth": 5, "seed": 1, "integrator": "nee"},
+//    "lights": [{"type": "point", "position": [278, 500, 279], "intensity": 2e4, "color": [1, 0.9, 0.8]}]}
+// "lights" holds point, spot and directional lights (parseLights in scene_file.cpp; units in scene.h).
 #include <functional>
 #include <string>
 #include <string_view>

@@ -229,6 +229,21 @@ void cameraSettings(const PanelInfo& info, PanelActions& actions) {
                         double(cam.target.z));
 }
 
+// The scene's punctual lights, which only nee and bdpt see.
+void lightList(const ViewerControls& c, const PanelInfo& info) {
+    for (const std::string& line : info.lights) {
+        ImGui::Bullet();
+        ImGui::TextWrapped("%s", line.c_str());  // the panel is narrow: wrap rather than cut
+    }
+    auto blind = [](Integrator i) { return i == Integrator::Naive || i == Integrator::Bsdf; };
+    if (blind(c.render.integrator) || (c.split && blind(c.splitView.integrator))) {
+        ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
+        ImGui::TextWrapped(
+            "naive and bsdf cannot see these lights (no ray hits a light of no size): use nee or bdpt");
+        ImGui::PopStyleColor();
+    }
+}
+
 // kViewerControlsHelp as a table whose descriptions wrap to the panel's width: a line that starts with
 // spaces continues the description above it.
 void controlsHelp() {
@@ -304,6 +319,8 @@ PanelActions Panel::draw(ViewerControls& c, const PanelInfo& info) {
     if (ImGui::CollapsingHeader("sampling")) samplingSettings(c);
     if (ImGui::CollapsingHeader("split view", c.split ? ImGuiTreeNodeFlags_DefaultOpen : 0)) splitSettings(c);
     if (ImGui::CollapsingHeader("camera")) cameraSettings(info, actions);
+    if (!info.lights.empty() && ImGui::CollapsingHeader("lights", ImGuiTreeNodeFlags_DefaultOpen))
+        lightList(c, info);
     if (ImGui::CollapsingHeader("renderer")) {
         ImGui::TextWrapped("%s", info.renderer.c_str());
         ImGui::TextWrapped("shaders: %s", info.shaderSource.c_str());

@@ -4,6 +4,7 @@
 // reports one-off requests as PanelActions; it never touches the renderer.
 #include <optional>
 #include <string>
+#include <vector>
 
 #include <glm/glm.hpp>
 
@@ -26,6 +27,9 @@ struct PanelInfo {
     std::string message;       // the last screenshot written, etc.
     bool flying = false;
     Camera camera;
+    // The scene's point, spot and directional lights, one line each (describePunctualLight); the panel
+    // lists them in a "lights" section when there are any.
+    std::vector<std::string> lights;
 };
 
 struct PanelActions {

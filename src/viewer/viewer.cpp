@@ -11,12 +11,15 @@
 #include <cstdio>
 #include <memory>
 #include <optional>
+#include <string>
+#include <vector>
 
 #include "core/clock.h"
 #include "core/error.h"
 #include "denoise/denoise_passes.h"
 #include "render/display.h"
 #include "render/renderer.h"
+#include "scene/punctual_light.h"
 #include "viewer/accumulation_policy.h"
 #include "viewer/camera_controller.h"
 #include "viewer/camera_input.h"
@@ -109,6 +112,7 @@ class Session {
     double frameDenoiseSeconds_ = 0.0;  // not part of the per-frame overhead: it happens now and then
     bool heatFitDue_ = true, heatFitRequested_ = false;
     std::string shaderError_, message_;
+    std::vector<std::string> lights_;  // the scene's punctual lights, for the panel
 };
 
 Session::Session(const Scene& scene, const ViewerOptions& options)
@@ -122,6 +126,7 @@ Session::Session(const Scene& scene, const ViewerOptions& options)
       camera_(options.camera) {
     if (options.ui) ui_ = std::make_unique<ImGuiLayer>(window_.handle());
     if (!options.shaderDir.empty()) watcher_.emplace(options.shaderDir);
+    for (const PunctualLight& light : scene.punctualLights) lights_.push_back(describePunctualLight(light));
 }
 
 void Session::reportError(const std::string& message) {
@@ -214,6 +219,7 @@ PanelInfo Session::panelInfo() const {
     info.message = message_;
     info.flying = input_.flying();
     info.camera = camera_.camera();
+    info.lights = lights_;
     return info;
 }
 

@@ -6,9 +6,9 @@
 #include <cmath>
 
 #include "core/error.h"
-#include "pack/layout.h"
 #include "native/native_path.h"
 #include "native/native_test_util.h"
+#include "pack/layout.h"
 #include "render/render_test_util.h"
 
 namespace fp::test {
@@ -79,6 +79,11 @@ TEST(NativeReferenceScene, RejectsWhatItDoesNotImplement) {
     textured.materials[0].diffuseTexture = 0;
     EXPECT_THROW(native::buildScene(textured, layout::bvhOptions()), Error);
     EXPECT_TRUE(native::unsupportedFeature(textured));
+    // A point light: the reference samples emissive triangles only.
+    Scene lit = scene;
+    lit.punctualLights.push_back(PunctualLight{});
+    EXPECT_THROW(native::buildScene(lit, layout::bvhOptions()), Error);
+    EXPECT_TRUE(native::unsupportedFeature(lit));
 }
 
 }  // namespace

@@ -9,6 +9,7 @@
 #include "pack/layout.h"
 #include "pack/pack.h"
 #include "scene/light_selection.h"
+#include "scene/punctual_light.h"
 
 namespace fp {
 namespace {
@@ -242,6 +243,76 @@ TEST(PackScene, MismatchedBvhIsRejected) {
     Scene s = randomScene(10, 1);
     Scene other = randomScene(11, 1);
     EXPECT_THROW(packScene(s, buildFor(other)), Error);
+}
+
+// Punctual lights (pack/layout.h): their cdf entries follow the emitters' with index -1 - k and area 0,
+// then kPunctualTexels each; the cdf still ends at 1, a black light gets no entry, and a scene without
+// punctual lights packs exactly as before (the same texels). Caught: the cdf entry's index -k instead of
+// -1 - k (light 0 would read as triangle 0).
+TEST(PackScene, PunctualLightsFollowTheEmittersInTheCdf) {
+    Scene s = randomScene(300, 7);
+    const PackedScene before = packScene(s, buildFor(s));
+    PunctualLight point, black, spot, sun;
+    point.position = glm::vec3(1, 2, 3);
+    point.intensity = glm::vec3(50.0f);
+    black.intensity = glm::vec3(0.0f);
+    spot.type = PunctualLightType::Spot;
+    spot.position = glm::vec3(-1, 5, 0);
+    spot.direction = glm::vec3(0, -1, 0);
+    spot.intensity = glm::vec3(80, 40, 20);
+    spot.innerConeAngle = 0.2f;
+    spot.outerConeAngle = 0.6f;
+    sun.type = PunctualLightType::Directional;
+    sun.direction = glm::normalize(glm::vec3(1, -1, 0));
+    sun.intensity = glm::vec3(0.01f);
+    s.punctualLights = {point, black, spot, sun};
+    PackedScene p = packScene(s, buildFor(s));
+    ASSERT_EQ(p.lightCount, 203u) << "200 emitters and 3 lights that emit";
+    ASSERT_EQ(p.punctualCount, 3u);
+    ASSERT_EQ(p.lights.size(), 203u + 3u * layout::kPunctualTexels);
+    EXPECT_EQ(p.lights[202].y, 1.0f);
+    const PunctualLight* expected[] = {&point, &spot, &sun};
+    BoundingSphere sphere = directionalLightSphere(s);
+    for (int k = 0; k < 3; ++k) {
+        const glm::vec4 entry = p.lights[200 + size_t(k)];
+        EXPECT_EQ(entry.x, -1.0f - float(k));
+        EXPECT_EQ(entry.w, 0.0f);
+        EXPECT_EQ(entry.y, p.lights[199 + size_t(k)].y + entry.z);
+        const PunctualLight& l = *expected[k];
+        float power = float(punctualLightPower(l, sphere.radius) / 3.14159265358979324);
+        EXPECT_NEAR(entry.z, power / p.totalLightPower, 1e-5);
+        const glm::vec4* data = &p.lights[203 + size_t(k) * layout::kPunctualTexels];
+        EXPECT_EQ(data[0].w, float(l.type));
+        EXPECT_EQ(glm::vec3(data[2]), l.intensity);
+        if (l.type == PunctualLightType::Directional) {
+            EXPECT_EQ(glm::vec3(data[0]), sphere.centre);
+            EXPECT_EQ(data[1].w, sphere.radius);
+            EXPECT_GT(sphere.radius, 10.0f) << "the random scene spans about 20";
+        } else {
+            EXPECT_EQ(glm::vec3(data[0]), l.position);
+        }
+        EXPECT_NEAR(glm::length(glm::vec3(data[1]) - l.direction), 0.0f, 1e-6f);
+        if (l.type == PunctualLightType::Spot) {
+            EXPECT_FLOAT_EQ(data[1].w, std::cos(0.6f));
+            EXPECT_FLOAT_EQ(data[2].w, std::cos(0.2f));
+        }
+    }
+    // The emitters share what the lights leave, in the same proportions as before.
+    double emitterShare = double(p.lights[199].y);
+    for (size_t i = 0; i < 200; ++i) EXPECT_NEAR(p.lights[i].z, before.lights[i].z * emitterShare, 2e-6) << i;
+
+    // No punctual lights, no change: the same texels as a scene that never had the field.
+    s.punctualLights.clear();
+    PackedScene again = packScene(s, buildFor(s));
+    EXPECT_EQ(again.punctualCount, 0u);
+    ASSERT_EQ(again.lights.size(), before.lights.size());
+    for (size_t i = 0; i < again.lights.size(); ++i) EXPECT_EQ(again.lights[i], before.lights[i]) << i;
+
+    // A light the layout cannot render is refused, naming the scene.
+    s.source = "scene.json";
+    s.punctualLights = {spot};
+    s.punctualLights[0].innerConeAngle = 0.7f;
+    EXPECT_THROW(packScene(s, buildFor(s)), Error);
 }
 
 }  // namespace

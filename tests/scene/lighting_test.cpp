@@ -47,6 +47,18 @@ TEST(Lighting, AnEmitterOrAnEnvironmentThatIsNotBlackLightsTheScene) {
     EXPECT_TRUE(hasLight(scene));
     scene.environment.intensity = 0.0f;
     EXPECT_FALSE(hasLight(scene));
+
+    // A point, spot or directional light that is not black (issue 18: a scene lit only by a point light
+    // must not get the default sky on top).
+    scene = unlitTriangle();
+    PunctualLight bulb;
+    bulb.intensity = glm::vec3(0.0f);
+    scene.punctualLights.push_back(bulb);
+    EXPECT_FALSE(hasLight(scene)) << "a black light lights nothing";
+    scene.punctualLights[0].intensity.z = 3.0f;
+    EXPECT_TRUE(hasLight(scene));
+    scene.punctualLights[0].type = PunctualLightType::Directional;
+    EXPECT_TRUE(hasLight(scene));
 }
 
 TEST(Lighting, AnUnlitSceneGetsTheUniformWhiteSkyWithAWarning) {

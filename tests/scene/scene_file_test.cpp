@@ -98,11 +98,12 @@ TEST(SceneFile, ExtensionsAreCaseInsensitiveAndCommentsAllowed) {
 }
 
 TEST(SceneFile, UnknownKeysWarned) {
-    SceneDir s(sceneWith(R"("camera": {"eye": [0, 0, -5], "target": [0, 0, 0], "fov_y": 30}, "lights": [])"));
+    SceneDir s(
+        sceneWith(R"("camera": {"eye": [0, 0, -5], "target": [0, 0, 0], "fov_y": 30}, "animations": [])"));
     WarningCapture capture;
     s.load();
     ASSERT_EQ(capture.messages().size(), 1u) << test::joined(capture);
-    EXPECT_CONTAINS_ALL(capture.messages()[0], s.json, "unknown keys", "'lights'", "'camera.fov_y'");
+    EXPECT_CONTAINS_ALL(capture.messages()[0], s.json, "unknown keys", "'animations'", "'camera.fov_y'");
 }
 
 TEST(SceneFile, InvalidJson) {
