@@ -27,7 +27,7 @@ sanitize: deps
 	LP_NUM_THREADS=2 ASAN_OPTIONS=detect_leaks=1 LSAN_OPTIONS=suppressions=$(CURDIR)/tools/lsan.supp \
 		build-asan/fragpath render --size 16x16 --spp 2 --quiet -o build-asan/leak_check.exr
 
-# libFuzzer on the OBJ/MTL loader and the scene file, FUZZ_SECONDS each (default 60).
+# libFuzzer on the OBJ/MTL loader, the scene file and the glTF loader, FUZZ_SECONDS each (default 60).
 fuzz: deps
 	tools/fuzz.sh
 

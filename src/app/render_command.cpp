@@ -59,8 +59,8 @@ void printRenderUsage() {
     std::fputs(
         "usage: fragpath render [SCENE] [options]\n"
         "\n"
-        "Renders SCENE (an .obj with its .mtl, or a .json scene file; default: the built-in Cornell box)\n"
-        "offscreen and writes an image whose format follows the extension of -o.\n",
+        "Renders SCENE (an .obj with its .mtl, a glTF .gltf or .glb, or a .json scene file; default: the\n"
+        "built-in Cornell box) offscreen and writes an image whose format follows the extension of -o.\n",
         stdout);
     std::fputs(formatOptions(renderOptions()).c_str(), stdout);
     std::fputs(

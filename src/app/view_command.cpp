@@ -40,10 +40,10 @@ void printViewUsage() {
     std::fputs(
         "usage: fragpath view [SCENE] [options]\n"
         "\n"
-        "Opens a window that renders SCENE (an .obj with its .mtl, or a .json scene file; default: the\n"
-        "built-in Cornell box) progressively: the image refines while nothing changes and restarts when the\n"
-        "camera or a setting does. A panel shows statistics and every setting. Needs a display; without "
-        "one,\n"
+        "Opens a window that renders SCENE (an .obj with its .mtl, a glTF .gltf or .glb, or a .json scene\n"
+        "file; default: the built-in Cornell box) progressively: the image refines while nothing changes\n"
+        "and restarts when the camera or a setting does. A panel shows statistics and every setting. Needs\n"
+        "a display; without one,\n"
         "run it as `xvfb-run -a fragpath view ...` or render offscreen with `fragpath render`. --size is "
         "the\n"
         "window's; --shader-dir also reloads the shaders when a *.glsl file there changes.\n",

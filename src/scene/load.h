@@ -8,12 +8,16 @@
 
 namespace fp {
 
-// By extension (case-insensitive): .obj loads an OBJ with its MTL libraries (no camera); .json loads a
-// scene file naming a mesh, camera and render settings. The result always has at least one valid
+// By extension (case-insensitive): .obj loads an OBJ with its MTL libraries (no camera); .gltf and .glb
+// load a glTF 2.0 file (scene/gltf.h; its camera, if it has one); .json loads a scene file naming a mesh,
+// camera and render settings. The result always has at least one valid
 // triangle and one material.
 Scene loadScene(const std::string& path);
 
 // An OBJ file and the MTL libraries it names (looked up next to it).
 Scene loadObj(const std::string& path);
+
+// A glTF 2.0 file (.gltf or .glb) and the buffers and images it names (looked up next to it).
+Scene loadGltf(const std::string& path);
 
 }  // namespace fp

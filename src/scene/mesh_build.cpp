@@ -8,16 +8,6 @@ namespace fp {
 
 namespace {
 
-// Sets *out to the unit vector along v; false if v has no usable direction (zero, NaN, infinite).
-bool unitVector(const glm::dvec3& v, glm::vec3* out) {
-    double length = glm::length(v);
-    if (!std::isfinite(length) || !(length > 0.0)) return false;
-    glm::vec3 unit(v / length);
-    if (!std::isfinite(unit.x) || !std::isfinite(unit.y) || !std::isfinite(unit.z)) return false;
-    *out = unit;
-    return true;
-}
-
 // Whether every corner of the face gives a texture coordinate (the face's are then in *uv); a face with
 // a NaN or infinite one is counted as a repair and gets none.
 bool faceTexcoords(const ObjMesh& mesh, const ObjFace& face, MeshRepairs* repairs,

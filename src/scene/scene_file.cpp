@@ -342,7 +342,7 @@ Scene parseSceneFile(std::string_view bytes, const std::string& name, const Mesh
     Fields fields(name);
     fields.object(root, "the top level");
     fields.checkKeys(root, "", {"mesh", "camera", "render", "environment", "lights"});
-    if (!root.contains("mesh")) fields.fail("missing \"mesh\" (the OBJ file to render)");
+    if (!root.contains("mesh")) fields.fail("missing \"mesh\" (the .obj, .gltf or .glb file to render)");
     std::string mesh = fields.string(root["mesh"], "mesh");
     if (mesh.empty()) fields.fail("mesh must not be empty");
     std::optional<Camera> camera;
@@ -356,7 +356,7 @@ Scene parseSceneFile(std::string_view bytes, const std::string& name, const Mesh
     // Only after the whole file checked out: a typo in it should not cost a long mesh load first.
     Scene scene = loadMesh(mesh);
     fields.warnUnknownKeys();
-    scene.camera = camera;
+    if (camera) scene.camera = camera;  // else the mesh's own (a glTF camera), if it has one
     scene.defaults = defaults;
     scene.environment = environment.environment;
     scene.punctualLights = lights;
@@ -375,12 +375,13 @@ Scene loadSceneFile(const std::string& path) {
         bytes, path,
         [&](const std::string& mesh) {
             fs::path meshPath = fs::path(mesh).is_absolute() ? fs::path(mesh) : directory / mesh;
-            if (lowerCaseExtension(meshPath.string()) != ".obj")
-                throw Error(path + ": mesh '" + mesh + "' must be an .obj file");
+            std::string ext = lowerCaseExtension(meshPath.string());
+            if (ext != ".obj" && ext != ".gltf" && ext != ".glb")
+                throw Error(path + ": mesh '" + mesh + "' must be an .obj, .gltf or .glb file");
             std::error_code ec;
             if (!fs::exists(meshPath, ec))
                 throw Error(path + ": mesh '" + mesh + "' not found (looked for " + meshPath.string() + ")");
-            return loadObj(meshPath.string());
+            return ext == ".obj" ? loadObj(meshPath.string()) : loadGltf(meshPath.string());
         },
         [&](const std::string& map) {
             fs::path mapPath = fs::path(map).is_absolute() ? fs::path(map) : directory / map;
@@ -394,8 +395,9 @@ Scene loadScene(const std::string& path) {
     if (!fs::exists(path, ec)) throw Error(path + ": no such file");
     std::string ext = lowerCaseExtension(path);
     if (ext == ".obj") return loadObj(path);
+    if (ext == ".gltf" || ext == ".glb") return loadGltf(path);
     if (ext == ".json") return loadSceneFile(path);
-    throw Error(path + ": unknown scene file type '" + ext + "' (expected .obj or .json)");
+    throw Error(path + ": unknown scene file type '" + ext + "' (expected .obj, .gltf, .glb or .json)");
 }
 
 }  // namespace fp

@@ -16,6 +16,15 @@ bool isDegenerate(const glm::dvec3& p0, const glm::dvec3& p1, const glm::dvec3& 
     return !(std::isfinite(area2) && std::isfinite(scale)) || !(area2 > kMinRelativeArea * scale);
 }
 
+bool unitVector(const glm::dvec3& v, glm::vec3* out) {
+    double length = glm::length(v);
+    if (!std::isfinite(length) || !(length > 0.0)) return false;
+    glm::vec3 unit(v / length);
+    if (!std::isfinite(unit.x) || !std::isfinite(unit.y) || !std::isfinite(unit.z)) return false;
+    *out = unit;
+    return true;
+}
+
 namespace {
 
 using Triangles = std::vector<std::array<uint32_t, 3>>;

@@ -13,6 +13,10 @@ namespace fp {
 // triangles have no reliable normal.
 bool isDegenerate(const glm::dvec3& p0, const glm::dvec3& p1, const glm::dvec3& p2);
 
+// Sets *out to the unit vector along v; false if v has no usable direction (zero, NaN, infinite). Every
+// loader computes geometric and shading normals with it, so the same triangle gets the same bits.
+bool unitVector(const glm::dvec3& v, glm::vec3* out);
+
 // Triangles (as indices into `polygon`) covering a simple polygon given in order, wound like it. Corners
 // on a straight edge and repeated corners are skipped rather than producing zero-area slivers; convex
 // polygons become a fan, concave ones are ear-clipped in the polygon's plane. Returns nothing if the

@@ -162,7 +162,8 @@ TEST(ObjReject, ErrorsDoNotWarnFirst) {
 TEST(ObjReject, UnknownExtensionInLoadScene) {
     test::TempDir dir;
     std::string path = dir.write("picture.png", "v 0 0 0\n");
-    EXPECT_CONTAINS_ALL(errorOf([&] { loadScene(path); }), path, "'.png'", ".obj or .json");
+    EXPECT_CONTAINS_ALL(errorOf([&] { loadScene(path); }), path, "'.png'",
+                        "(expected .obj, .gltf, .glb or .json)");
 }
 
 }  // namespace

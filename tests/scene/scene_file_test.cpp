@@ -159,7 +159,7 @@ TEST(SceneFile, MeshMissingOrWrong) {
     SceneDir(R"({"camera": {"eye": [0, 0, -5], "target": [0, 0, 0]}})").reject("missing \"mesh\"");
     SceneDir(R"({"mesh": 3})").reject("mesh must be a string");
     SceneDir(R"({"mesh": ""})").reject("mesh must not be empty");
-    SceneDir(R"({"mesh": "mesh.png"})").reject("must be an .obj file");
+    SceneDir(R"({"mesh": "mesh.png"})").reject("must be an .obj, .gltf or .glb file");
     std::string message = SceneDir(R"({"mesh": "other.obj"})").reject("mesh 'other.obj' not found");
     EXPECT_CONTAINS_ALL(message, "other.obj)");
     SceneDir("[1, 2]").reject("the top level must be a JSON object");

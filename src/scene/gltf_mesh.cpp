@@ -1,0 +1,202 @@
+// glTF primitives to world-space triangles (gltf_internal.h).
+#include <cmath>
+
+#include "core/error.h"
+#include "scene/gltf_internal.h"
+#include "scene/obj_mesh.h"  // kMaxCoordinate
+#include "scene/triangulate.h"
+
+namespace fp::gltf {
+
+namespace {
+
+bool isTriangleMode(int mode) {
+    return mode == TINYGLTF_MODE_TRIANGLES || mode == TINYGLTF_MODE_TRIANGLE_STRIP ||
+           mode == TINYGLTF_MODE_TRIANGLE_FAN;
+}
+
+uint64_t trianglesOf(int mode, uint64_t n) {
+    if (mode == TINYGLTF_MODE_TRIANGLES) return n / 3;
+    return n >= 3 ? n - 2 : 0;
+}
+
+std::string primitiveName(int mesh, size_t primitive) {
+    return "meshes[" + std::to_string(mesh) + "].primitives[" + std::to_string(primitive) + "]";
+}
+
+bool finite(const glm::dvec3& v) {
+    return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
+}
+
+}  // namespace
+
+uint64_t triangleBound(const tinygltf::Model& model, int mesh, size_t p, const std::string& name) {
+    const tinygltf::Primitive& primitive = model.meshes[size_t(mesh)].primitives[p];
+    if (!isTriangleMode(primitive.mode)) return 0;
+    std::string where = primitiveName(mesh, p);
+    if (primitive.indices >= 0)
+        return trianglesOf(primitive.mode,
+                           AccessorData(model, primitive.indices, "indices of " + where, name).count());
+    auto position = primitive.attributes.find("POSITION");
+    if (position == primitive.attributes.end()) return 0;
+    return trianglesOf(primitive.mode,
+                       AccessorData(model, position->second, "POSITION of " + where, name).count());
+}
+
+void appendPrimitive(const tinygltf::Model& model, const MeshInstance& instance, size_t p,
+                     MaterialTable& materials, const std::string& name, Scene* scene, MeshTallies* tallies) {
+    const tinygltf::Primitive& primitive = model.meshes[size_t(instance.mesh)].primitives[p];
+    std::string where = primitiveName(instance.mesh, p);
+    if (primitive.extensions.count("KHR_draco_mesh_compression"))
+        throw Error(name + ": " + where +
+                    " is compressed with KHR_draco_mesh_compression, which is not supported (save the file "
+                    "without Draco compression)");
+    if (!isTriangleMode(primitive.mode)) {
+        ++tallies->notTriangles;
+        return;
+    }
+    auto position = primitive.attributes.find("POSITION");
+    if (position == primitive.attributes.end()) {
+        ++tallies->noPositions;
+        return;
+    }
+    if (!primitive.targets.empty()) ++tallies->morphTargets;
+
+    AccessorData positions(model, position->second, "POSITION of " + where, name);
+    positions.require(TINYGLTF_TYPE_VEC3, {TINYGLTF_COMPONENT_TYPE_FLOAT}, false,
+                      "VEC3 of FLOAT (quantized positions, KHR_mesh_quantization, are not supported)");
+    size_t vertexCount = positions.count();
+    auto sameCount = [&](const AccessorData& a) {
+        if (a.count() != vertexCount)
+            throw Error(name + ": " + a.label() + " has " + std::to_string(a.count()) +
+                        " elements, but POSITION has " + std::to_string(vertexCount) +
+                        " (all attributes of a primitive have one per vertex)");
+    };
+
+    // The vertices in world space, in double, then stored as the renderer will keep them (float).
+    const glm::dmat4& world = instance.world;
+    glm::dmat3 linear(world);
+    glm::dmat3 normalMatrix = glm::transpose(glm::inverse(linear));
+    bool flip = glm::determinant(linear) < 0.0;  // a mirroring transform turns front faces into back faces
+    std::vector<glm::vec3> p3(vertexCount);
+    for (size_t i = 0; i < vertexCount; ++i) {
+        glm::dvec3 local(positions.real(i, 0), positions.real(i, 1), positions.real(i, 2));
+        if (!finite(local))
+            throw Error(name + ": " + positions.label() + " holds a non-finite value (element " +
+                        std::to_string(i) + ")");
+        glm::dvec3 w(world * glm::dvec4(local, 1.0));
+        glm::vec3 stored(w);
+        glm::dvec3 back(stored);
+        if (!finite(back) ||
+            std::max({std::abs(back.x), std::abs(back.y), std::abs(back.z)}) > kMaxCoordinate)
+            throw Error(name + ": vertex " + std::to_string(i) + " of " + where +
+                        " lies beyond +-1e18 (or at infinity) "
+                        "once placed by nodes[" +
+                        std::to_string(instance.node) + "]");
+        p3[i] = stored;
+    }
+
+    std::vector<glm::vec3> normals;
+    auto normal = primitive.attributes.find("NORMAL");
+    if (normal != primitive.attributes.end()) {
+        AccessorData data(model, normal->second, "NORMAL of " + where, name);
+        data.require(TINYGLTF_TYPE_VEC3, {TINYGLTF_COMPONENT_TYPE_FLOAT}, false, "VEC3 of FLOAT");
+        sameCount(data);
+        normals.resize(vertexCount);
+        for (size_t i = 0; i < vertexCount; ++i) {
+            glm::dvec3 n(data.real(i, 0), data.real(i, 1), data.real(i, 2));
+            if (!finite(n))
+                throw Error(name + ": " + data.label() + " holds a non-finite value (element " +
+                            std::to_string(i) + ")");
+            if (!unitVector(normalMatrix * n, &normals[i]))
+                normals[i] = glm::vec3(0.0f);  // replaced per triangle
+        }
+    }
+
+    int set = materials.texcoordSet(primitive.material);
+    std::vector<glm::vec2> uv;
+    auto texcoord =
+        set >= 0 ? primitive.attributes.find("TEXCOORD_" + std::to_string(set)) : primitive.attributes.end();
+    if (texcoord != primitive.attributes.end()) {
+        AccessorData data(model, texcoord->second, "TEXCOORD_" + std::to_string(set) + " of " + where, name);
+        data.require(TINYGLTF_TYPE_VEC2,
+                     {TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE,
+                      TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT},
+                     true, "VEC2 of FLOAT, or of normalized UNSIGNED_BYTE or UNSIGNED_SHORT");
+        sameCount(data);
+        uv.resize(vertexCount);
+        for (size_t i = 0; i < vertexCount; ++i) {
+            float u = data.real(i, 0), v = data.real(i, 1);
+            if (!std::isfinite(u) || !std::isfinite(v))
+                throw Error(name + ": " + data.label() + " holds a non-finite value (element " +
+                            std::to_string(i) + ")");
+            uv[i] = glm::vec2(u, 1.0f - v);  // glTF's v = 0 is the top row of the image, ours the bottom
+        }
+    }
+    uint32_t material = materials.use(primitive.material, !uv.empty());
+
+    std::optional<AccessorData> indices;
+    if (primitive.indices >= 0) {
+        indices.emplace(model, primitive.indices, "indices of " + where, name);
+        indices->require(TINYGLTF_TYPE_SCALAR,
+                         {TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE, TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT,
+                          TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT},
+                         false, "SCALAR of UNSIGNED_BYTE, UNSIGNED_SHORT or UNSIGNED_INT");
+    }
+    size_t n = indices ? indices->count() : vertexCount;
+    auto vertex = [&](size_t k) -> size_t {
+        if (!indices) return k;
+        uint32_t v = indices->index(k);
+        if (v >= vertexCount)
+            throw Error(name + ": " + indices->label() + " holds index " + std::to_string(v) + " (element " +
+                        std::to_string(k) + "), beyond the " + std::to_string(vertexCount) +
+                        " vertices of POSITION");
+        return v;
+    };
+    if (primitive.mode == TINYGLTF_MODE_TRIANGLES && n % 3 != 0) ++tallies->trailingVertices;
+
+    uint64_t count = trianglesOf(primitive.mode, n);
+    for (uint64_t t = 0; t < count; ++t) {
+        size_t corner[3];
+        if (primitive.mode == TINYGLTF_MODE_TRIANGLES) {
+            for (int k = 0; k < 3; ++k) corner[k] = vertex(size_t(3 * t) + size_t(k));
+        } else if (primitive.mode == TINYGLTF_MODE_TRIANGLE_STRIP) {
+            // The glTF specification's order, which keeps every triangle's winding the strip's.
+            corner[0] = vertex(size_t(t));
+            corner[1] = vertex(size_t(t + 1 + t % 2));
+            corner[2] = vertex(size_t(t + 2 - t % 2));
+        } else {  // fan
+            corner[0] = vertex(size_t(t + 1));
+            corner[1] = vertex(size_t(t + 2));
+            corner[2] = vertex(0);
+        }
+        // Repeated vertices join strips and fans on purpose: not worth a warning.
+        if (primitive.mode != TINYGLTF_MODE_TRIANGLES &&
+            (corner[0] == corner[1] || corner[1] == corner[2] || corner[0] == corner[2]))
+            continue;
+        if (flip) std::swap(corner[1], corner[2]);
+
+        Triangle tri;
+        for (int k = 0; k < 3; ++k) tri.p[k] = p3[corner[k]];
+        glm::dvec3 q0(tri.p[0]), q1(tri.p[1]), q2(tri.p[2]);
+        glm::vec3 geometric;
+        if (isDegenerate(q0, q1, q2) || !unitVector(glm::cross(q1 - q0, q2 - q0), &geometric)) {
+            ++tallies->degenerate;
+            continue;
+        }
+        for (int k = 0; k < 3; ++k) {
+            tri.n[k] = geometric;  // without normals: the geometric normal
+            if (!normals.empty()) {
+                if (normals[corner[k]] == glm::vec3(0.0f))
+                    ++tallies->badNormals;
+                else
+                    tri.n[k] = normals[corner[k]];
+            }
+            if (!uv.empty()) tri.uv[k] = uv[corner[k]];
+        }
+        tri.material = material;
+        scene->triangles.push_back(tri);
+    }
+}
+
+}  // namespace fp::gltf

@@ -1,0 +1,189 @@
+// The glTF node forest: checks, world transforms, the camera (gltf_internal.h).
+#include <algorithm>
+#include <cmath>
+
+#include <glm/gtc/type_ptr.hpp>
+
+#include "core/error.h"
+#include "core/log.h"
+#include "scene/gltf_internal.h"
+
+namespace fp::gltf {
+
+namespace {
+
+std::string nodeName(int i) {
+    return "nodes[" + std::to_string(i) + "]";
+}
+
+bool finite(const glm::dmat4& m) {
+    for (int c = 0; c < 4; ++c)
+        for (int r = 0; r < 4; ++r)
+            if (!std::isfinite(m[c][r])) return false;
+    return true;
+}
+
+// Each node's parent (-1 for roots), after checking that the children lists form trees: no node is a
+// child twice, none is its own ancestor.
+std::vector<int> parents(const tinygltf::Model& model, const std::string& name) {
+    size_t n = model.nodes.size();
+    std::vector<int> parent(n, -1);
+    for (size_t i = 0; i < n; ++i)
+        for (int c : model.nodes[i].children) {
+            if (c < 0 || size_t(c) >= n)
+                throw Error(name + ": " + nodeName(int(i)) + " has a child " + nodeName(c) +
+                            ", which does not exist");
+            if (size_t(c) == i)
+                throw Error(name + ": " + nodeName(c) +
+                            " is its own ancestor (it lists itself among its children)");
+            if (parent[size_t(c)] >= 0)
+                throw Error(name + ": " + nodeName(c) + " is a child of both " + nodeName(parent[size_t(c)]) +
+                            " and " + nodeName(int(i)) + " (glTF nodes form trees: one parent each)");
+            parent[size_t(c)] = int(i);
+        }
+    // With one parent each, a cycle is a parent chain that comes back to itself. Each node is walked
+    // once: 1 marks the chain being walked, 2 nodes already known to lead to a root.
+    std::vector<uint8_t> state(n, 0);
+    std::vector<int> chain;
+    for (size_t i = 0; i < n; ++i) {
+        chain.clear();
+        int j = int(i);
+        while (j >= 0 && state[size_t(j)] == 0) {
+            state[size_t(j)] = 1;
+            chain.push_back(j);
+            j = parent[size_t(j)];
+        }
+        if (j >= 0 && state[size_t(j)] == 1) {
+            auto start = std::find(chain.begin(), chain.end(), j);
+            std::string cycle;
+            size_t shown = 0;
+            for (auto it = start; it != chain.end() && shown < 8; ++it, ++shown)
+                cycle += std::to_string(*it) + " -> ";
+            if (size_t(chain.end() - start) > shown) cycle += "... -> ";
+            throw Error(name + ": " + nodeName(j) + " is its own ancestor (parent chain " + cycle +
+                        std::to_string(j) + "); glTF nodes form trees");
+        }
+        for (int c : chain) state[size_t(c)] = 2;
+    }
+    return parent;
+}
+
+}  // namespace
+
+glm::dmat4 localTransform(const tinygltf::Node& node) {
+    if (node.matrix.size() == 16) return glm::make_mat4(node.matrix.data());  // column-major, as glm
+    glm::dmat4 t(1.0), r(1.0), s(1.0);
+    if (node.translation.size() == 3)
+        t[3] = glm::dvec4(node.translation[0], node.translation[1], node.translation[2], 1.0);
+    if (node.rotation.size() == 4) {
+        // The unit quaternion (x, y, z, w) as a rotation matrix (m[column][row]).
+        glm::dvec4 q(node.rotation[0], node.rotation[1], node.rotation[2], node.rotation[3]);
+        double length = glm::length(q);
+        if (length != 1.0) q /= length;
+        double x = q.x, y = q.y, z = q.z, w = q.w;
+        r[0] = glm::dvec4(1 - 2 * (y * y + z * z), 2 * (x * y + z * w), 2 * (x * z - y * w), 0);
+        r[1] = glm::dvec4(2 * (x * y - z * w), 1 - 2 * (x * x + z * z), 2 * (y * z + x * w), 0);
+        r[2] = glm::dvec4(2 * (x * z + y * w), 2 * (y * z - x * w), 1 - 2 * (x * x + y * y), 0);
+    }
+    if (node.scale.size() == 3)
+        s = glm::scale(glm::dmat4(1.0), glm::dvec3(node.scale[0], node.scale[1], node.scale[2]));
+    return t * r * s;
+}
+
+SceneGraph walkScene(const tinygltf::Model& model, const std::string& name) {
+    std::vector<int> parent = parents(model, name);
+    std::vector<int> roots;
+    std::string listedBy;
+    if (!model.scenes.empty()) {
+        int chosen = model.defaultScene >= 0 ? model.defaultScene : 0;
+        if (size_t(chosen) >= model.scenes.size())
+            throw Error(name + ": scene " + std::to_string(chosen) + " does not exist");
+        roots = model.scenes[size_t(chosen)].nodes;
+        listedBy = "scenes[" + std::to_string(chosen) + "].nodes";
+    } else {
+        for (size_t i = 0; i < parent.size(); ++i)
+            if (parent[i] < 0) roots.push_back(int(i));
+        if (!roots.empty())
+            warn(name + ": no scenes; rendering all " + std::to_string(roots.size()) + " root nodes");
+    }
+    for (int r : roots) {
+        if (r < 0 || size_t(r) >= parent.size())
+            throw Error(name + ": " + listedBy + " lists " + nodeName(r) + ", which does not exist");
+        if (parent[size_t(r)] >= 0)
+            throw Error(name + ": " + listedBy + " lists " + nodeName(r) + ", which is a child of " +
+                        nodeName(parent[size_t(r)]) + " (a scene lists root nodes)");
+    }
+
+    SceneGraph graph;
+    std::vector<uint8_t> visited(parent.size(), 0);
+    std::vector<std::pair<int, glm::dmat4>> stack;  // depth-first, children in their listed order
+    for (auto it = roots.rbegin(); it != roots.rend(); ++it) stack.emplace_back(*it, glm::dmat4(1.0));
+    while (!stack.empty()) {
+        auto [i, parentWorld] = stack.back();
+        stack.pop_back();
+        if (visited[size_t(i)]) throw Error(name + ": " + listedBy + " lists " + nodeName(i) + " twice");
+        visited[size_t(i)] = 1;
+        const tinygltf::Node& node = model.nodes[size_t(i)];
+        glm::dmat4 world = parentWorld * localTransform(node);
+        if (!finite(world))
+            throw Error(name + ": the transform of " + nodeName(i) + " (with its ancestors') is not finite");
+        if (node.mesh >= 0) graph.instances.push_back({i, node.mesh, world});
+        if (node.camera >= 0 && size_t(node.camera) < model.cameras.size()) {
+            if (model.cameras[size_t(node.camera)].type == "perspective") {
+                if (graph.cameraNode < 0) {
+                    graph.cameraNode = i;
+                    graph.cameraWorld = world;
+                }
+            } else {
+                ++graph.orthographicCameras;
+            }
+        }
+        if (node.skin >= 0) ++graph.skinnedNodes;
+        if (node.extensions.count("KHR_lights_punctual")) ++graph.lightNodes;
+        for (auto c = node.children.rbegin(); c != node.children.rend(); ++c) stack.emplace_back(*c, world);
+    }
+    return graph;
+}
+
+Camera cameraFromNode(const tinygltf::Model& model, int node, const glm::dmat4& world, const Aabb& bounds,
+                      const std::string& name) {
+    int index = model.nodes[size_t(node)].camera;
+    const tinygltf::Camera& glCamera = model.cameras[size_t(index)];
+    std::string where =
+        name + ": the camera of " + nodeName(node) + " (cameras[" + std::to_string(index) + "])";
+    double yfov = glCamera.perspective.yfov;
+    constexpr double kPi = 3.14159265358979323846;
+    if (!(yfov > 0.0 && yfov < kPi))
+        throw Error(where + ": yfov must be in (0, pi) radians, got " + std::to_string(yfov));
+    glm::dvec3 eye(world[3]);
+    glm::dmat3 basis(world);
+    glm::dvec3 forward = basis * glm::dvec3(0.0, 0.0, -1.0), up = basis * glm::dvec3(0.0, 1.0, 0.0);
+    double forwardLength = glm::length(forward), upLength = glm::length(up);
+    if (!(forwardLength > 0.0) || !(upLength > 0.0) || !std::isfinite(forwardLength) ||
+        !std::isfinite(upLength))
+        throw Error(where + ": its node's transform collapses the view direction (a zero scale?)");
+    forward /= forwardLength;
+    up /= upLength;
+
+    // The target only sets the view direction for rendering, but the viewer orbits around it.
+    double distance = 1.0;
+    if (!bounds.empty()) {
+        glm::dvec3 center(bounds.center());
+        double diagonal = glm::length(glm::dvec3(bounds.extent()));
+        double depth = glm::dot(center - eye, forward);
+        distance = depth > 1e-3 * diagonal && depth > 0.0 ? depth : std::max(diagonal, 1.0);
+    }
+    Camera camera;
+    camera.eye = glm::vec3(eye);
+    camera.target = glm::vec3(eye + forward * distance);
+    camera.up = glm::vec3(up);
+    camera.fovY = float(yfov * (180.0 / kPi));
+    try {
+        validateCamera(camera, "camera");
+    } catch (const Error& e) {
+        throw Error(where + ": " + e.what());
+    }
+    return camera;
+}
+
+}  // namespace fp::gltf

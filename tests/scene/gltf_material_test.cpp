@@ -1,0 +1,348 @@
+// glTF materials onto fragpath's models, rule by rule as the README's glTF table gives them, and the
+// warnings for what the models cannot use yet.
+#include <gtest/gtest.h>
+
+#include "gltf_test_util.h"
+#include "image/tone_map.h"
+#include "scene/load.h"
+#include "scene_test_util.h"
+#include "texture_test_util.h"
+
+namespace fp {
+namespace {
+
+using json = nlohmann::json;
+using test::GltfBuilder;
+
+// A quad in z = 0 facing +z (uv per corner), as two triangles.
+json quadPrimitive(GltfBuilder& b, int material, bool texcoords = true, const char* set = "TEXCOORD_0") {
+    json attributes = {{"POSITION", b.vec3({{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}})}};
+    if (texcoords) attributes[set] = b.vec2({{0, 1}, {1, 1}, {1, 0}, {0, 0}});
+    json p = {{"attributes", attributes}, {"indices", b.indices16({0, 1, 2, 0, 2, 3})}};
+    if (material >= 0) p["material"] = material;
+    return p;
+}
+
+// One quad per material (and one without a material when `withDefault`), loaded from a .gltf.
+Scene withMaterials(GltfBuilder& b, const std::vector<json>& materials, bool withDefault = false) {
+    json primitives = json::array();
+    for (const json& m : materials) primitives.push_back(quadPrimitive(b, b.material(m)));
+    if (withDefault) primitives.push_back(quadPrimitive(b, -1));
+    b.mesh(primitives);
+    b.node({{"mesh", int(b.doc["meshes"].size()) - 1}});
+    b.scene({0});
+    test::TempDir dir;
+    return loadScene(dir.write("m.gltf", b.gltf()));
+}
+
+const Material& materialOfQuad(const Scene& scene, size_t quad) {
+    return scene.materials[scene.triangles.at(2 * quad).material];
+}
+
+json pbr(double metallic, double roughness, json extra = json::object()) {
+    json p = {{"metallicFactor", metallic}, {"roughnessFactor", roughness}};
+    p.update(extra);
+    return p;
+}
+
+TEST(GltfMaterial, TheTablesRulesInOrder) {
+    GltfBuilder b;
+    json color = {0.2, 0.4, 0.6, 1.0};
+    WarningCapture capture;
+    Scene scene = withMaterials(
+        b,
+        {
+            json::object(),                                                         // 0: all defaults
+            {{"pbrMetallicRoughness", pbr(0, 1, {{"baseColorFactor", color}})}},    // 1
+            {{"pbrMetallicRoughness", pbr(0, 0.3, {{"baseColorFactor", color}})}},  // 2
+            {{"pbrMetallicRoughness", pbr(0, 0.3)},                                 // 3
+             {"extensions", {{"KHR_materials_specular", {{"specularFactor", 0.0}}}}}},
+            {{"pbrMetallicRoughness", pbr(0, 0.3)},  // 4
+             {"extensions",
+              {{"KHR_materials_specular",
+                {{"specularFactor", 0.5}, {"specularColorFactor", {0.5, 1.0, 0.25}}}},
+               {"KHR_materials_ior", {{"ior", 1.33}}}}}},
+            {{"pbrMetallicRoughness", pbr(0.8, 0.2, {{"baseColorFactor", {1.0, 0.8, 0.3, 1.0}}})}},  // 5
+            {{"pbrMetallicRoughness", pbr(0.4, 0.2)}},                                               // 6
+            {{"pbrMetallicRoughness", pbr(0, 0, {{"baseColorFactor", {0.9, 1.0, 0.9, 1.0}}})},       // 7
+             {"extensions",
+              {{"KHR_materials_transmission", {{"transmissionFactor", 0.9}}},
+               {"KHR_materials_ior", {{"ior", 1.7}}}}}},
+            {{"pbrMetallicRoughness", pbr(0, 1)},  // 8
+             {"extensions", {{"KHR_materials_transmission", {{"transmissionFactor", 0.5}}}}}},
+            {{"pbrMetallicRoughness", pbr(1, 0.1)},  // 9
+             {"extensions", {{"KHR_materials_transmission", {{"transmissionFactor", 1.0}}}}}},
+            {{"pbrMetallicRoughness", pbr(0, 1)},  // 10
+             {"emissiveFactor", {1.0, 0.5, 0.25}},
+             {"extensions", {{"KHR_materials_emissive_strength", {{"emissiveStrength", 4.0}}}}}},
+        },
+        true);
+    EXPECT_TRUE(capture.messages().empty()) << test::joined(capture);
+
+    // No properties: glTF's defaults, metallic 1 and roughness 1, a white rough metal.
+    const Material& defaults = materialOfQuad(scene, 0);
+    EXPECT_EQ(defaults.type, MaterialType::Conductor);
+    EXPECT_EQ(defaults.specular, glm::vec3(1.0f));
+    EXPECT_EQ(defaults.roughness, 1.0f);
+    EXPECT_EQ(defaults.name, "materials[0]");
+
+    // Rough (roughness 1) dielectrics are Lambertian.
+    const Material& diffuse = materialOfQuad(scene, 1);
+    EXPECT_EQ(diffuse.type, MaterialType::Diffuse);
+    EXPECT_EQ(diffuse.diffuse, glm::vec3(0.2f, 0.4f, 0.6f));
+
+    // Smoother ones are a coat (glTF's 4% Fresnel, index 1.5) over Lambertian: plastic.
+    const Material& plastic = materialOfQuad(scene, 2);
+    EXPECT_EQ(plastic.type, MaterialType::Plastic);
+    EXPECT_EQ(plastic.diffuse, glm::vec3(0.2f, 0.4f, 0.6f));
+    EXPECT_EQ(plastic.specular, glm::vec3(1.0f));
+    EXPECT_EQ(plastic.ior, 1.5f);
+    EXPECT_FLOAT_EQ(plastic.roughness, 0.3f);
+
+    EXPECT_EQ(materialOfQuad(scene, 3).type, MaterialType::Diffuse);  // no specular at all
+    const Material& tinted = materialOfQuad(scene, 4);
+    EXPECT_EQ(tinted.type, MaterialType::Plastic);
+    EXPECT_EQ(tinted.specular, glm::vec3(0.25f, 0.5f, 0.125f));
+    EXPECT_FLOAT_EQ(tinted.ior, 1.33f);
+
+    const Material& metal = materialOfQuad(scene, 5);
+    EXPECT_EQ(metal.type, MaterialType::Conductor);
+    EXPECT_EQ(metal.specular, glm::vec3(1.0f, 0.8f, 0.3f));
+    EXPECT_FLOAT_EQ(metal.roughness, 0.2f);
+    EXPECT_EQ(materialOfQuad(scene, 6).type, MaterialType::Plastic);  // metallic below 0.5
+
+    const Material& glass = materialOfQuad(scene, 7);
+    EXPECT_EQ(glass.type, MaterialType::Dielectric);
+    EXPECT_FLOAT_EQ(glass.ior, 1.7f);
+    EXPECT_EQ(glass.transmission, glm::vec3(0.9f, 1.0f, 0.9f));
+    EXPECT_EQ(glass.roughness, 0.0f);
+    EXPECT_EQ(materialOfQuad(scene, 8).type, MaterialType::Diffuse);    // transmission 0.5 is not above it
+    EXPECT_EQ(materialOfQuad(scene, 9).type, MaterialType::Conductor);  // metal before glass
+
+    const Material& lamp = materialOfQuad(scene, 10);
+    EXPECT_EQ(lamp.type, MaterialType::Diffuse);
+    EXPECT_EQ(lamp.emission, glm::vec3(4.0f, 2.0f, 1.0f));
+
+    // A primitive without a material: the glTF default material, added once.
+    const Material& none = materialOfQuad(scene, 11);
+    EXPECT_EQ(none.type, MaterialType::Conductor);
+    EXPECT_EQ(none.name, "glTF default");
+    EXPECT_EQ(scene.materials.size(), 12u);
+}
+
+TEST(GltfMaterial, EmissiveQuad) {
+    GltfBuilder b;
+    Scene scene = withMaterials(
+        b, {{{"name", "lamp"},
+             {"pbrMetallicRoughness", pbr(0, 1, {{"baseColorFactor", {0, 0, 0, 1}}})},
+             {"emissiveFactor", {1.0, 1.0, 1.0}},
+             {"extensions", {{"KHR_materials_emissive_strength", {{"emissiveStrength", 17}}}}}}});
+    ASSERT_EQ(scene.triangles.size(), 2u);
+    for (const Triangle& t : scene.triangles) {
+        const Material& m = scene.materials[t.material];
+        EXPECT_EQ(m.name, "lamp");
+        EXPECT_TRUE(m.isEmissive());
+        EXPECT_EQ(m.emission, glm::vec3(17.0f));
+        EXPECT_EQ(m.diffuse, glm::vec3(0.0f));
+        // It emits from its front, +z, where the quad's counter-clockwise winding faces.
+        EXPECT_GT(t.geometricNormal().z, 0.0f);
+    }
+}
+
+TEST(GltfMaterial, IorOutsideTheModelsRangeIsClampedWithAWarning) {
+    GltfBuilder b;
+    WarningCapture capture;
+    Scene scene = withMaterials(b, {{{"name", "diamondish"},
+                                     {"pbrMetallicRoughness", pbr(0, 0)},
+                                     {"extensions",
+                                      {{"KHR_materials_transmission", {{"transmissionFactor", 1}}},
+                                       {"KHR_materials_ior", {{"ior", 6.0}}}}}}});
+    EXPECT_EQ(materialOfQuad(scene, 0).ior, 4.0f);
+    ASSERT_EQ(capture.messages().size(), 1u) << test::joined(capture);
+    EXPECT_CONTAINS_ALL(capture.messages()[0], "m.gltf: KHR_materials_ior outside [1, 4] clamped",
+                        "material 'diamondish' (materials[0])");
+}
+
+// A texture in a data URI: images[i] and textures[i] for each call.
+int addTexture(GltfBuilder& b, const std::vector<uint8_t>& rgba, int width, int height) {
+    b.push("images", {{"uri", "data:image/png;base64," + test::base64(test::pngBytes(width, height, rgba))}});
+    return b.push("textures", {{"source", int(b.doc["images"].size()) - 1}});
+}
+
+TEST(GltfMaterial, MapsTheModelsCannotUseYetWarnOncePerKindNamingTheMaterials) {
+    GltfBuilder b;
+    int flat = addTexture(b, test::checkerTexels(1, 1, {128, 128, 255}, {128, 128, 255}), 1, 1);
+    json normalMapped = {
+        {"name", "brick"}, {"pbrMetallicRoughness", pbr(0, 1)}, {"normalTexture", {{"index", flat}}}};
+    json occluded = {
+        {"name", "stone"}, {"pbrMetallicRoughness", pbr(0, 1)}, {"occlusionTexture", {{"index", flat}}}};
+    json masked = {{"name", "leaf"}, {"pbrMetallicRoughness", pbr(0, 1)}, {"alphaMode", "MASK"}};
+    json blended = {{"name", "glassy"}, {"pbrMetallicRoughness", pbr(0, 1)}, {"alphaMode", "BLEND"}};
+    json alsoNormalMapped = normalMapped;
+    alsoNormalMapped["name"] = "tile";
+    // Unused materials warn about nothing (and their textures are never loaded).
+    b.material({{"name", "unused"}, {"normalTexture", {{"index", flat}}}});
+    WarningCapture capture;
+    Scene scene = withMaterials(b, {normalMapped, occluded, masked, blended, alsoNormalMapped});
+    EXPECT_EQ(scene.triangles.size(), 10u);
+    std::string all = test::joined(capture);
+    EXPECT_EQ(capture.messages().size(), 3u) << all;
+    EXPECT_TRUE(
+        capture.contains("m.gltf: normalTexture not supported yet, ignored (materials 'brick' "
+                         "(materials[1]), 'tile' (materials[5]))"))
+        << all;
+    EXPECT_TRUE(capture.contains(
+        "occlusionTexture ignored (a path tracer computes occlusion itself) (material 'stone'"))
+        << all;
+    EXPECT_TRUE(
+        capture.contains("alphaMode MASK and BLEND not supported yet: drawn opaque (materials 'leaf' "
+                         "(materials[3]), 'glassy'"))
+        << all;
+    EXPECT_EQ(all.find("unused"), std::string::npos) << all;
+}
+
+TEST(GltfMaterial, MetallicRoughnessAndEmissiveMapsStandInByTheirMean) {
+    GltfBuilder b;
+    // Blue (metallic) 0 everywhere, green (roughness) 51 and 153: mean 0.4. A metallicFactor of 1 with
+    // this map is no metal.
+    int mr = addTexture(b, test::checkerTexels(2, 1, {0, 51, 0}, {0, 153, 0}), 2, 1);
+    // Half white, half black: the mean linear colour is 0.5.
+    int glow = addTexture(b, test::checkerTexels(2, 1, {255, 255, 255}, {0, 0, 0}), 2, 1);
+    WarningCapture capture;
+    Scene scene = withMaterials(
+        b, {{{"name", "painted"},
+             {"pbrMetallicRoughness", pbr(1, 1, {{"metallicRoughnessTexture", {{"index", mr}}}})}},
+            {{"name", "sign"},
+             {"pbrMetallicRoughness", pbr(0, 1)},
+             {"emissiveFactor", {1.0, 0.5, 1.0}},
+             {"emissiveTexture", {{"index", glow}}}}});
+    const Material& painted = materialOfQuad(scene, 0);
+    EXPECT_EQ(painted.type, MaterialType::Plastic);
+    EXPECT_NEAR(painted.roughness, 0.4f, 1e-6f);
+    const Material& sign = materialOfQuad(scene, 1);
+    EXPECT_NEAR(sign.emission.r, 0.5f, 1e-6f);
+    EXPECT_NEAR(sign.emission.g, 0.25f, 1e-6f);
+    EXPECT_TRUE(
+        capture.contains("metallicRoughnessTexture not supported yet: the factors are multiplied by its mean "
+                         "(material 'painted'"))
+        << test::joined(capture);
+    EXPECT_TRUE(capture.contains(
+        "emissiveTexture not supported yet: emission is emissiveFactor times its mean colour "
+        "(material 'sign'"))
+        << test::joined(capture);
+    EXPECT_TRUE(scene.textures.empty());  // neither is a colour texture
+}
+
+TEST(GltfMaterial, BaseColorTextureOnLambertianAndPlasticWhileMetalsTakeItsMean) {
+    GltfBuilder b;
+    std::vector<uint8_t> texels = test::checkerTexels(2, 2, {255, 0, 0}, {0, 0, 255});
+    int checker = addTexture(b, texels, 2, 2);
+    json textured = {{"baseColorTexture", {{"index", checker}}}};
+    WarningCapture capture;
+    Scene scene = withMaterials(b, {{{"name", "matte"}, {"pbrMetallicRoughness", pbr(0, 1, textured)}},
+                                    {{"name", "shiny"}, {"pbrMetallicRoughness", pbr(0, 0.2, textured)}},
+                                    {{"name", "brass"}, {"pbrMetallicRoughness", pbr(1, 0.2, textured)}}});
+    ASSERT_EQ(scene.textures.size(), 1u);  // one image, shared
+    EXPECT_EQ(scene.textures[0].image.texels, texels);
+    EXPECT_EQ(materialOfQuad(scene, 0).diffuseTexture, 0);
+    EXPECT_EQ(materialOfQuad(scene, 1).diffuseTexture, 0);
+    const Material& brass = materialOfQuad(scene, 2);
+    EXPECT_EQ(brass.diffuseTexture, -1);
+    float red = srgbDecode(1.0f);
+    EXPECT_NEAR(brass.specular.r, 0.5f * red, 1e-6f);
+    EXPECT_NEAR(brass.specular.g, 0.0f, 1e-6f);
+    EXPECT_NEAR(brass.specular.b, 0.5f * red, 1e-6f);
+    ASSERT_EQ(capture.messages().size(), 1u) << test::joined(capture);
+    EXPECT_CONTAINS_ALL(capture.messages()[0],
+                        "baseColorTexture on metals and glass not supported yet: its mean colour",
+                        "material 'brass'");
+}
+
+TEST(GltfMaterial, TexturedMaterialWithoutItsTexcoordsGetsTheMeanColour) {
+    GltfBuilder b;
+    int checker = addTexture(b, test::checkerTexels(2, 2, {255, 0, 0}, {0, 0, 255}), 2, 2);
+    int m = b.material(
+        {{"name", "tex"},
+         {"pbrMetallicRoughness", pbr(0, 1,
+                                      {{"baseColorFactor", {0.5, 0.5, 0.5, 1}},
+                                       {"baseColorTexture", {{"index", checker}, {"texCoord", 1}}}})}});
+    // Only the second quad has TEXCOORD_1, the set the texture reads; the first has TEXCOORD_0 only.
+    b.mesh(json::array({quadPrimitive(b, m, true, "TEXCOORD_0"), quadPrimitive(b, m, true, "TEXCOORD_1")}));
+    b.node({{"mesh", 0}});
+    b.scene({0});
+    test::TempDir dir;
+    WarningCapture capture;
+    Scene scene = loadScene(dir.write("m.gltf", b.gltf()));
+    ASSERT_EQ(scene.triangles.size(), 4u);
+    const Material& copy = materialOfQuad(scene, 0);
+    EXPECT_EQ(copy.diffuseTexture, -1);
+    float red = srgbDecode(1.0f);
+    EXPECT_NEAR(copy.diffuse.r, 0.5f * 0.5f * red, 1e-6f);
+    EXPECT_NEAR(copy.diffuse.g, 0.0f, 1e-6f);
+    const Material& textured = materialOfQuad(scene, 1);
+    EXPECT_EQ(textured.diffuseTexture, 0);
+    EXPECT_EQ(scene.triangles[2].uv[0], glm::vec2(0.0f, 0.0f));  // TEXCOORD_1 (0, 1), flipped
+    ASSERT_EQ(capture.messages().size(), 1u) << test::joined(capture);
+    EXPECT_CONTAINS_ALL(capture.messages()[0], "primitives without the TEXCOORD_1 their texture needs",
+                        "material 'tex'");
+}
+
+TEST(GltfMaterial, OnlyUsedMaterialsLoadTheirTextures) {
+    GltfBuilder b;
+    b.push("images", {{"uri", "missing.png"}});
+    b.push("textures", {{"source", 0}});
+    b.material({{"name", "ghost"}, {"pbrMetallicRoughness", {{"baseColorTexture", {{"index", 0}}}}}});
+    WarningCapture capture;
+    Scene scene = withMaterials(b, {{{"pbrMetallicRoughness", pbr(0, 1)}}});
+    EXPECT_TRUE(scene.textures.empty());
+    EXPECT_TRUE(capture.messages().empty()) << test::joined(capture);
+}
+
+// As for a missing map_Kd: a warning (an error with --strict) and the magenta and black checker, with a
+// base colour of 1 so that it shows as it is; a map that only stands in by its mean is ignored.
+TEST(GltfMaterial, MissingOrBrokenImagesWarnAndShowTheChecker) {
+    auto build = [] {
+        GltfBuilder b;
+        b.push("images", {{"uri", "missing.png"}});
+        b.push("images", {{"uri", "data:image/png;base64,AAAA"}});  // three zero bytes: no PNG
+        b.push("textures", {{"source", 0}});
+        b.push("textures", {{"source", 1}});
+        return b;
+    };
+    GltfBuilder b = build();
+    WarningCapture capture;
+    Scene scene = withMaterials(
+        b, {{{"name", "ghost"},
+             {"pbrMetallicRoughness",
+              pbr(0, 1, {{"baseColorFactor", {0.5, 0.5, 0.5, 1}}, {"baseColorTexture", {{"index", 0}}}})}},
+            {{"name", "garbled"},
+             {"pbrMetallicRoughness", pbr(1, 0.5, {{"metallicRoughnessTexture", {{"index", 1}}}})}}});
+    ASSERT_EQ(scene.textures.size(), 1u);
+    EXPECT_EQ(scene.textures[0].image.texels, missingTextureChecker().texels);
+    const Material& ghost = materialOfQuad(scene, 0);
+    EXPECT_EQ(ghost.diffuseTexture, 0);
+    EXPECT_EQ(ghost.diffuse, glm::vec3(1.0f));
+    const Material& garbled = materialOfQuad(scene, 1);
+    EXPECT_EQ(garbled.type, MaterialType::Conductor);  // the factors alone
+    EXPECT_EQ(garbled.roughness, 0.5f);
+    ASSERT_EQ(capture.messages().size(), 2u) << test::joined(capture);
+    EXPECT_CONTAINS_ALL(
+        capture.messages()[0],
+        "m.gltf: 'ghost' (materials[0]): baseColorTexture: texture file 'missing.png' not found or "
+        "unreadable (looked for ",
+        "/missing.png); showing a magenta and black checker instead");
+    EXPECT_CONTAINS_ALL(capture.messages()[1], "m.gltf: 'garbled' (materials[1]): metallicRoughnessTexture: ",
+                        "images[1]: not an image stb_image can read", "; ignoring the map");
+
+    GltfBuilder strict = build();
+    setStrictWarnings(true);
+    std::string message = test::errorOf([&] {
+        withMaterials(strict,
+                      {{{"pbrMetallicRoughness", pbr(0, 1, {{"baseColorTexture", {{"index", 0}}}})}}});
+    });
+    setStrictWarnings(false);
+    EXPECT_CONTAINS_ALL(message, "texture file 'missing.png' not found", "(an error with --strict)");
+}
+
+}  // namespace
+}  // namespace fp
