@@ -119,7 +119,8 @@ struct SceneGraph {
     std::vector<MeshInstance> instances;
     int cameraNode = -1;  // the node of the first perspective camera in depth-first order, or -1
     glm::dmat4 cameraWorld{1.0};
-    size_t lightNodes = 0;  // nodes with a KHR_lights_punctual light
+    // Nodes with a KHR_lights_punctual light: the light's index and the node's world transform.
+    std::vector<std::pair<int, glm::dmat4>> lightNodes;
     size_t skinnedNodes = 0;
     size_t orthographicCameras = 0;
 };
@@ -136,6 +137,12 @@ glm::dmat4 localTransform(const tinygltf::Node& node);
 // origin, looking along its -z with +y up, yfov in degrees; the target is on the view axis at the depth
 // of `bounds`' centre (so the viewer orbits the model), or the bounds' diagonal ahead when the centre
 // is not in front. Throws fp::Error for a camera that cannot form an image (a degenerate transform).
+// The KHR_lights_punctual light `index` placed by a node's world transform: the position is the node's
+// origin, the direction its -Z axis; colour x intensity in the renderer's units, 1:1 (scene/scene.h
+// PunctualLight). Throws fp::Error naming the light for a value the renderer cannot use.
+PunctualLight lightFromNode(const tinygltf::Model& model, int index, const glm::dmat4& world,
+                            const std::string& name);
+
 Camera cameraFromNode(const tinygltf::Model& model, int node, const glm::dmat4& world, const Aabb& bounds,
                       const std::string& name);
 

@@ -159,9 +159,8 @@ Scene buildScene(const tinygltf::Model& model, const std::string& name, const Gl
     reportTallies(tallies, name);
     if (graph.cameraNode < 0 && graph.orthographicCameras)
         warn(name + ": orthographic cameras not supported, ignored (the default camera frames the scene)");
-    if (!model.lights.empty())
-        warn(name + ": " + plural(model.lights.size(), "KHR_lights_punctual light") +
-             " not yet supported, ignored");
+    for (const auto& [light, world] : graph.lightNodes)
+        scene.punctualLights.push_back(lightFromNode(model, light, world, name));
     if (!model.animations.empty())
         warn(name + ": animations not supported: the nodes are drawn with their own transforms");
     if (graph.skinnedNodes)
@@ -169,8 +168,7 @@ Scene buildScene(const tinygltf::Model& model, const std::string& name, const Gl
              " drawn with their nodes' transforms");
     std::string ignored;
     for (const std::string& extension : model.extensionsUsed)
-        if (!isImplementedExtension(extension) && extension != "KHR_lights_punctual")
-            ignored += (ignored.empty() ? "" : ", ") + extension;
+        if (!isImplementedExtension(extension)) ignored += (ignored.empty() ? "" : ", ") + extension;
     if (!ignored.empty()) warn(name + ": ignoring extensions fragpath does not implement: " + ignored);
     return scene;
 }

@@ -7,6 +7,7 @@
 #include "core/error.h"
 #include "core/log.h"
 #include "scene/gltf_internal.h"
+#include "scene/punctual_light.h"
 
 namespace fp::gltf {
 
@@ -139,10 +140,43 @@ SceneGraph walkScene(const tinygltf::Model& model, const std::string& name) {
             }
         }
         if (node.skin >= 0) ++graph.skinnedNodes;
-        if (node.extensions.count("KHR_lights_punctual")) ++graph.lightNodes;
+        auto light = node.extensions.find("KHR_lights_punctual");
+        if (light != node.extensions.end() && light->second.Has("light"))
+            graph.lightNodes.emplace_back(light->second.Get("light").GetNumberAsInt(), world);
         for (auto c = node.children.rbegin(); c != node.children.rend(); ++c) stack.emplace_back(*c, world);
     }
     return graph;
+}
+
+PunctualLight lightFromNode(const tinygltf::Model& model, int index, const glm::dmat4& world,
+                            const std::string& name) {
+    const std::string where = name + ": KHR_lights_punctual light " + std::to_string(index);
+    if (index < 0 || size_t(index) >= model.lights.size()) throw Error(where + " does not exist");
+    const tinygltf::Light& gl = model.lights[size_t(index)];
+    PunctualLight light;
+    light.name = gl.name;
+    if (gl.type == "point") {
+        light.type = PunctualLightType::Point;
+    } else if (gl.type == "spot") {
+        light.type = PunctualLightType::Spot;
+    } else if (gl.type == "directional") {
+        light.type = PunctualLightType::Directional;
+    } else {
+        throw Error(where + ": unknown type '" + gl.type + "' (point, spot or directional)");
+    }
+    glm::dvec3 color(1.0);
+    if (gl.color.size() == 3) color = glm::dvec3(gl.color[0], gl.color[1], gl.color[2]);
+    light.intensity = glm::vec3(color * gl.intensity);
+    light.position = glm::vec3(world[3]);
+    glm::dvec3 direction = glm::dmat3(world) * glm::dvec3(0.0, 0.0, -1.0);
+    double length = glm::length(direction);
+    if (!(length > 0.0) || !std::isfinite(length))
+        throw Error(where + ": its node's transform collapses the light's direction (a zero scale?)");
+    light.direction = glm::vec3(direction / length);
+    light.innerConeAngle = float(gl.spot.innerConeAngle);
+    light.outerConeAngle = float(gl.spot.outerConeAngle);
+    validatePunctualLight(light, where);
+    return light;
 }
 
 Camera cameraFromNode(const tinygltf::Model& model, int node, const glm::dmat4& world, const Aabb& bounds,

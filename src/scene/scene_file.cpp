@@ -359,7 +359,8 @@ Scene parseSceneFile(std::string_view bytes, const std::string& name, const Mesh
     if (camera) scene.camera = camera;  // else the mesh's own (a glTF camera), if it has one
     scene.defaults = defaults;
     scene.environment = environment.environment;
-    scene.punctualLights = lights;
+    // A glTF mesh may bring its own KHR_lights_punctual lights: the file's are added to them.
+    scene.punctualLights.insert(scene.punctualLights.end(), lights.begin(), lights.end());
     if (!environment.mapPath.empty())
         scene.environment.map = (loadMap ? loadMap : noMaps)(environment.mapPath);
     scene.source = name;

@@ -326,22 +326,67 @@ TEST(GltfLoader, OrthographicCamerasAloneAreIgnoredWithAWarning) {
     EXPECT_CONTAINS_ALL(capture.messages()[0], "ortho.glb: orthographic cameras not supported");
 }
 
-TEST(GltfLoader, PunctualLightsAndUnknownExtensionsAreIgnoredWithWarnings) {
+// KHR_lights_punctual lights arrive as the scene's punctual lights, placed by their nodes: the position
+// is the node's origin, the direction its -Z axis, colour x intensity 1:1 (scene/scene.h PunctualLight).
+TEST(GltfLoader, PunctualLightsArePlacedByTheirNodes) {
     GltfBuilder b;
     int tri = triangleMesh(b);
-    b.doc["extensionsUsed"] = {"KHR_lights_punctual", "KHR_materials_clearcoat",
-                               "KHR_materials_emissive_strength"};
-    b.doc["extensions"] = {{"KHR_lights_punctual", {{"lights", {{{"type", "point"}, {"intensity", 10}}}}}}};
-    b.node({{"mesh", tri}, {"extensions", {{"KHR_lights_punctual", {{"light", 0}}}}}});
-    b.scene({0});
+    b.doc["extensionsUsed"] = {"KHR_lights_punctual", "KHR_materials_clearcoat"};
+    b.doc["extensions"] = {
+        {"KHR_lights_punctual",
+         {{"lights",
+           {{{"type", "point"}, {"intensity", 10}, {"color", {1.0, 0.5, 0.25}}, {"name", "bulb"}},
+            {{"type", "spot"},
+             {"intensity", 2},
+             {"spot", {{"innerConeAngle", 0.2}, {"outerConeAngle", 0.5}}}},
+            {{"type", "directional"}, {"intensity", 3}}}}}}};
+    b.node({{"mesh", tri}});
+    // A point light moved to (1, 2, 3); a spot turned -90 degrees about +x (its -Z now points down, -y);
+    // a directional light under a parent turned 180 degrees about +y (its -Z now +z).
+    b.node({{"translation", {1, 2, 3}}, {"extensions", {{"KHR_lights_punctual", {{"light", 0}}}}}});
+    b.node({{"translation", {0, 5, 0}},
+            {"rotation", {-0.70710678, 0, 0, 0.70710678}},
+            {"extensions", {{"KHR_lights_punctual", {{"light", 1}}}}}});
+    b.node({{"children", {4}}, {"rotation", {0, 1, 0, 0}}});
+    b.node({{"extensions", {{"KHR_lights_punctual", {{"light", 2}}}}}});
+    b.scene({0, 1, 2, 3});
     WarningCapture capture;
     Scene scene = loadFile("lights.gltf", b.gltf());
-    EXPECT_EQ(scene.triangles.size(), 1u);
-    EXPECT_TRUE(capture.contains("lights.gltf: 1 KHR_lights_punctual light not yet supported, ignored"))
-        << test::joined(capture);
+    ASSERT_EQ(scene.punctualLights.size(), 3u);
+    const PunctualLight& point = scene.punctualLights[0];
+    EXPECT_EQ(point.type, PunctualLightType::Point);
+    EXPECT_EQ(point.name, "bulb");
+    EXPECT_EQ(point.position, glm::vec3(1, 2, 3));
+    EXPECT_EQ(point.intensity, glm::vec3(10.0f, 5.0f, 2.5f));
+    const PunctualLight& spot = scene.punctualLights[1];
+    EXPECT_EQ(spot.type, PunctualLightType::Spot);
+    EXPECT_EQ(spot.position, glm::vec3(0, 5, 0));
+    EXPECT_NEAR(spot.direction.y, -1.0f, 1e-6f);
+    EXPECT_NEAR(glm::length(spot.direction), 1.0f, 1e-6f);
+    EXPECT_FLOAT_EQ(spot.innerConeAngle, 0.2f);
+    EXPECT_FLOAT_EQ(spot.outerConeAngle, 0.5f);
+    EXPECT_EQ(spot.intensity, glm::vec3(2.0f));
+    const PunctualLight& sun = scene.punctualLights[2];
+    EXPECT_EQ(sun.type, PunctualLightType::Directional);
+    EXPECT_NEAR(sun.direction.z, 1.0f, 1e-6f);
+    // Only the extension it does not implement is warned about.
     EXPECT_TRUE(capture.contains("ignoring extensions fragpath does not implement: KHR_materials_clearcoat"))
         << test::joined(capture);
-    EXPECT_EQ(capture.messages().size(), 2u) << test::joined(capture);
+    EXPECT_EQ(capture.messages().size(), 1u) << test::joined(capture);
+}
+
+TEST(GltfLoader, ABadPunctualLightIsAClearError) {
+    GltfBuilder b;
+    int tri = triangleMesh(b);
+    b.doc["extensions"] = {{"KHR_lights_punctual", {{"lights", {{{"type", "area"}, {"intensity", 1}}}}}}};
+    b.node({{"mesh", tri}, {"extensions", {{"KHR_lights_punctual", {{"light", 0}}}}}});
+    b.scene({0});
+    try {
+        loadFile("bad_light.gltf", b.gltf());
+        ADD_FAILURE() << "an area light is no punctual light";
+    } catch (const Error& e) {
+        EXPECT_CONTAINS_ALL(e.what(), "bad_light.gltf: KHR_lights_punctual light 0: unknown type 'area'");
+    }
 }
 
 TEST(GltfLoader, UpperCaseFileExtensionAndAFileWithoutScenesRendersEveryRootNode) {

@@ -72,9 +72,9 @@ TEST(GltfReject, RequiredExtensionsWeDoNotImplement) {
                         "bad.gltf: buffers compressed with EXT_meshopt_compression are not supported");
     EXPECT_CONTAINS_ALL(requiring("KHR_mesh_quantization"),
                         "bad.gltf: quantized vertex data (KHR_mesh_quantization) is not supported");
-    EXPECT_CONTAINS_ALL(
-        requiring("KHR_lights_punctual"),
-        "bad.gltf: the file requires the extension KHR_lights_punctual, which fragpath does not implement");
+    EXPECT_CONTAINS_ALL(requiring("KHR_materials_clearcoat"),
+                        "bad.gltf: the file requires the extension KHR_materials_clearcoat, which fragpath "
+                        "does not implement");
     // A Draco primitive the file does not declare as required still cannot be drawn.
     std::string message = rejectedEdit([](json& d) {
         d["meshes"][0]["primitives"][0]["extensions"] = {{"KHR_draco_mesh_compression", {{"bufferView", 0}}}};
