@@ -16,15 +16,19 @@ struct CliRun {
     std::string output;  // stdout and stderr together
 };
 
-// `environment` is prepended as VAR=value assignments; LP_NUM_THREADS=2 unless it sets its own.
-inline CliRun runFragpath(const std::string& args, const std::string& environment = "LP_NUM_THREADS=2") {
-    std::string command = environment + " " + FP_BINARY + " " + args + " 2>&1";
-    FILE* pipe = popen(command.c_str(), "r");
+// Any shell command (the native reference, the viewer under xvfb-run), with stdout and stderr together.
+inline CliRun runCommand(const std::string& command) {
+    FILE* pipe = popen((command + " 2>&1").c_str(), "r");
     std::string output;
     char buffer[4096];
     while (size_t n = fread(buffer, 1, sizeof buffer, pipe)) output.append(buffer, n);
     int status = pclose(pipe);
     return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, output};
+}
+
+// `environment` is prepended as VAR=value assignments; LP_NUM_THREADS=2 unless it sets its own.
+inline CliRun runFragpath(const std::string& args, const std::string& environment = "LP_NUM_THREADS=2") {
+    return runCommand(environment + " " + FP_BINARY + " " + args);
 }
 
 class TempDirTest : public ::testing::Test {

@@ -115,14 +115,9 @@ TEST_F(PunctualLightsCli, TheNativeReferenceRefusesThem) {
     EXPECT_NE(bench.output.find("point, spot or directional lights"), std::string::npos) << bench.output;
     // fragpath_native (the reference on its own) refuses the scene the same way, with exit status 1.
     const std::string native = std::filesystem::path(FP_BINARY).parent_path().string() + "/fragpath_native";
-    std::string command = native + " " + file + " --size 8x8 --spp 1 -o " + path("native.png") + " 2>&1";
-    FILE* pipe = popen(command.c_str(), "r");
-    std::string output;
-    char buffer[4096];
-    while (size_t n = fread(buffer, 1, sizeof buffer, pipe)) output.append(buffer, n);
-    int status = pclose(pipe);
-    EXPECT_EQ(WIFEXITED(status) ? WEXITSTATUS(status) : -1, 1) << output;
-    EXPECT_NE(output.find("point, spot or directional lights"), std::string::npos) << output;
+    CliRun r = test::runCommand(native + " " + file + " --size 8x8 --spp 1 -o " + path("native.png"));
+    EXPECT_EQ(r.exitCode, 1) << r.output;
+    EXPECT_NE(r.output.find("point, spot or directional lights"), std::string::npos) << r.output;
     EXPECT_FALSE(std::filesystem::exists(path("native.png")));
 }
 

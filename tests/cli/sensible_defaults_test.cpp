@@ -149,14 +149,8 @@ TEST_F(SensibleDefaults, ALitSceneIsLeftAlone) {
     EXPECT_EQ(render(scene + kCamera + " --environment none --spp 1").at(0, 0), glm::vec3(0.0f));
 }
 
-// A command other than fragpath (the native reference, the viewer under xvfb-run), stdout and stderr.
 CliRun run(const std::string& command) {
-    FILE* pipe = popen((command + " 2>&1").c_str(), "r");
-    std::string output;
-    char buffer[4096];
-    while (size_t n = fread(buffer, 1, sizeof buffer, pipe)) output.append(buffer, n);
-    int status = pclose(pipe);
-    return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, output};
+    return test::runCommand(command);
 }
 
 TEST_F(SensibleDefaults, TheNativeReferenceGetsTheSameSky) {

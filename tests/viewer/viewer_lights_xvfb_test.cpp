@@ -17,14 +17,8 @@ namespace {
 using test::CliRun;
 
 CliRun view(const std::string& args) {
-    std::string command = "LP_NUM_THREADS=2 xvfb-run -a -s \"-screen 0 1280x1024x24\" " +
-                          std::string(FP_BINARY) + " view " + args + " 2>&1";
-    FILE* pipe = popen(command.c_str(), "r");
-    std::string output;
-    char buffer[4096];
-    while (size_t n = fread(buffer, 1, sizeof buffer, pipe)) output.append(buffer, n);
-    int status = pclose(pipe);
-    return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, output};
+    return test::runCommand("LP_NUM_THREADS=2 xvfb-run -a -s \"-screen 0 1280x1024x24\" " +
+                            std::string(FP_BINARY) + " view " + args);
 }
 
 std::vector<unsigned char> readRgb(const std::string& path, int& width, int& height) {

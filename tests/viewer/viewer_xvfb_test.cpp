@@ -20,12 +20,7 @@ namespace fs = std::filesystem;
 using test::CliRun;
 
 CliRun run(const std::string& command) {
-    FILE* pipe = popen((command + " 2>&1").c_str(), "r");
-    std::string output;
-    char buffer[4096];
-    while (size_t n = fread(buffer, 1, sizeof buffer, pipe)) output.append(buffer, n);
-    int status = pclose(pipe);
-    return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, output};
+    return test::runCommand(command);
 }
 
 // The viewer on its own virtual display (-a picks a free server number).
