@@ -14,6 +14,16 @@ RenderRequest request(const std::vector<std::string>& argv, const FrontEndDefaul
     return RenderRequest(Args(argv, requestOptionGroups(options, defaults)), defaults);
 }
 
+// The message a request for `argv` fails with, "no error" if it does not.
+std::string message(const std::vector<std::string>& argv) {
+    try {
+        request(argv);
+    } catch (const Error& e) {
+        return e.what();
+    }
+    return "no error";
+}
+
 // A scene as a scene file leaves it: every default and a camera set, each unlike the built-in one.
 Scene sceneWithDefaults() {
     Scene scene;
@@ -95,14 +105,6 @@ TEST(RenderRequest, TheLensTakesFlagsOverTheSceneFileOverTheDefault) {
 }
 
 TEST(RenderRequest, BadLensFlagsFailWithClearMessages) {
-    auto message = [](const std::vector<std::string>& argv) {
-        try {
-            request(argv);
-        } catch (const Error& e) {
-            return std::string(e.what());
-        }
-        return std::string("no error");
-    };
     EXPECT_EQ(message({"--aperture", "-1"}),
               "option --aperture: must be 0 (a pinhole) or more (the lens diameter in scene units)");
     EXPECT_EQ(message({"--focus-distance", "0"}),
@@ -203,14 +205,6 @@ TEST(RenderRequest, EnvironmentAndStrictAreReadAndCheckedAtOnce) {
     EXPECT_EQ(request({"--environment", "default"}).environment(), EnvironmentChoice::Default);
     EXPECT_EQ(request({"--environment=none"}).environment(), EnvironmentChoice::None);
     // A map must be an .hdr or .exr that exists, before any scene is loaded.
-    auto message = [](const std::vector<std::string>& argv) {
-        try {
-            request(argv);
-        } catch (const Error& e) {
-            return std::string(e.what());
-        }
-        return std::string("no error");
-    };
     EXPECT_EQ(message({"--environment", "black"}),
               "option --environment: expected none, default or an .hdr or .exr file, got 'black'");
     EXPECT_EQ(message({"--environment", "/no/such/sky.exr"}),
