@@ -73,7 +73,7 @@ vec3 connectToLight(int t) {
     float yRevLast = toArea(vertexPdf(c, mc, c.wo, d), c.p, y);
     float w = misWeight(1, t, zRevLast, zRevPrev, yRevLast, 0.0, y.pdfFwd);
     if (!unoccluded(c, y)) return vec3(0.0);
-    vec3 Le = materialEmission(tri.material);
+    vec3 Le = emitterRadiance(e.triangle, tri, b);
     return c.beta * f * Le * (cosLight / (dist2 * y.pdfFwd)) * w * spectralFactor(c.dispersive);
 }
 

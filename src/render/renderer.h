@@ -93,6 +93,8 @@ class Renderer {
     uint32_t lightCount_ = 0;
     bool closeEmitters_ = false;    // LightSampling::Auto samples by solid angle (pack/light_strategy.h)
     bool surfaceTextures_ = false;  // some material has a texture: compile the lookups in
+    int surfaceMaps_ = 0;           // which kinds of map (layout::MapBit): SURFACE_MAPS
+    bool surfaceOpacity_ = false;   // some material has alpha or is single-sided: SURFACE_OPACITY
     std::unique_ptr<SceneTextures> textures_;
     std::unique_ptr<EnvironmentTextures> environmentTextures_;  // only for an environment map
     std::unique_ptr<RenderTargets> targets_;

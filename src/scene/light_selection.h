@@ -17,11 +17,14 @@ float luminance(const glm::vec3& rgb);
 
 struct EmitterPmfs {
     std::vector<float> pmf;   // per triangle, in the order asked for; 0 for non-emitters
-    double totalPower = 0.0;  // sum of luminance(Ke) * area over the emitters
+    double totalPower = 0.0;  // sum of luminance(Ke) * area over the emitters (see below)
 };
 
 // The selection probabilities of scene's triangles order[0 .. count) (e.g. a BVH's leaf order), each in
-// proportion to luminance(Ke) * area, as lightPmfs rounds them.
+// proportion to luminance(Ke) * area, as lightPmfs rounds them. Ke is taken times its emission map's
+// mean colour and a constant coverage (BLEND alpha; MASK 0 or 1), so that an emitter that emits nothing
+// anywhere is never picked; the shader's light samples then carry the map and coverage at their point
+// (lights.glsl emitterRadiance).
 EmitterPmfs emitterPmfs(const Scene& scene, const uint32_t* order, size_t count);
 
 // Probabilities proportional to `power`, on the 2^-24 grid of the shader's random numbers and summing to
