@@ -349,6 +349,39 @@ TEST(BsdfSampleWeights, MeanWeightIsTheIntegralOfEval) {
     }
 }
 
+// The density bsdfSample reports with each non-delta sample is bsdfPdf of the direction it returns: MIS
+// weighs a BSDF sample by the first and a light sample by the second, and the two weights of one path
+// sum to 1 only if they agree. What this catches: a sampler that reports the density of the lobe it
+// chose rather than of the whole mixture (the plastic's coat and base, the metallic-roughness model's
+// two lobes), or a density computed at a different direction. Within float rounding.
+TEST(BsdfSampleDensity, SampledDensityIsBsdfPdf) {
+    BsdfProbe& probe = bsdfProbe();
+    const std::vector<BsdfCase> cases = samplingCases();
+    for (size_t c = 0; c < cases.size(); ++c) {
+        probe.setMaterial(cases[c].material);
+        for (size_t a = 0; a < incidentAngles().size(); ++a) {
+            const glm::vec3 wo = incidentDirection(incidentAngles()[a]);
+            std::vector<ProbeSample> samples = probe.sample(wo, cases[c].eta, caseSeed(c, a) + 700, kCount);
+            std::vector<EvalQuery> queries;
+            for (const ProbeSample& s : samples)
+                if (s.ok() && !s.delta()) queries.push_back({wo, cases[c].eta, s.wi});
+            std::vector<ProbeEval> values = probe.eval(queries);
+            Mismatches bad;
+            size_t k = 0;
+            for (const ProbeSample& s : samples) {
+                if (!s.ok() || s.delta()) continue;
+                if (!near(s.pdf, values[k].pdf, 1e-4, 1e-7))
+                    bad.add("sampled pdf " + std::to_string(s.pdf) + " but bsdfPdf " +
+                            std::to_string(values[k].pdf) + " wi " + vectorText(s.wi));
+                ++k;
+            }
+            const std::string what = describe(cases[c], incidentAngles()[a]);
+            EXPECT_EQ(bad.count, 0) << what << ", " << queries.size() << " samples; first: " << bad.first;
+            EXPECT_GT(queries.size(), samples.size() / 5) << what;
+        }
+    }
+}
+
 // A shading normal interpolated across a triangle can leave the view direction below it (wo.z < 0) on
 // a surface whose geometric normal faces the viewer. bsdfEval and bsdfPdf must then give finite,
 // non-negative values (0 is the intended answer): a negative f or pdf would subtract light and break

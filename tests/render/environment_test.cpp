@@ -38,7 +38,7 @@ struct SphereMean {
 
 SphereMean sphereMean(const Scene& scene, Integrator integrator, int maxDepth) {
     ensureGlContext();
-    Renderer renderer(scene);
+    Renderer renderer(scene, testShaders());
     Accumulation acc = renderScene(renderer, outsideCamera(), integrator, 32, 64, maxDepth);
     // Which pixels see the sphere: the depth view of the same camera.
     RenderSettings s;

@@ -43,8 +43,8 @@ void appendMappedQuad(Scene& scene, glm::vec3 a, glm::vec3 b, glm::vec3 c, glm::
 
 // A sky that is black but for one texel, a small sun of radiance kSun: light from (almost) one
 // direction, the same at every point of the scene, so that a plane's shading depends only on its
-// normal. Texel (47, 9) of 64 x 32 lies at theta = 53.4 degrees from +y, azimuth 87 degrees: mostly +x.
-constexpr int kSkyWidth = 64, kSkyHeight = 32, kSunX = 47, kSunY = 9;
+// normal. Texel (40, 9) of 64 x 32 lies at theta = 53.4 degrees from +y, between +x and -z.
+constexpr int kSkyWidth = 64, kSkyHeight = 32, kSunX = 40, kSunY = 9;
 constexpr float kSun = 200.0f;
 
 Image sunSky() {
@@ -97,14 +97,14 @@ Camera lookingDown() {
 // geometrically tilted to the mapped normal shows, and both what the integral of the sun's texel gives
 // (a Lambertian surface lit from one direction is a function of its shading normal alone; the sun is
 // at infinity). The map's frame on the flat plane: tangent +x (u grows along +x), bitangent -z (v grows
-// along -z: dp/dv), normal +y. Texel (191, 128, 238) decodes to (0.498, 0.004, 0.867): the normal
-// tilted 30 degrees toward +x (and a hair toward -z). With normal scale 0.5 the x and y components
-// halve (glTF's normalTexture.scale). What this catches: a map not applied, applied in the wrong
-// frame (tangent or bitangent swapped or reversed, the sign of the bitangent ignored), not decoded as
-// 2 c - 1, the scale applied to z, or an sRGB decode of a linear map.
+// along -z: dp/dv), normal +y. Texel (191, 160, 230) decodes to (0.498, 0.255, 0.804): the normal
+// tilted toward +x and -z, toward the sun. With normal scale 0.5 the x and y components halve (glTF's
+// normalTexture.scale). What this catches: a map not applied, applied in the wrong frame (tangent or
+// bitangent swapped or reversed, the sign of the bitangent ignored), not decoded as 2 c - 1, the scale
+// applied to z, or an sRGB decode of a linear map.
 TEST(SurfaceMaps, NormalMappedPlaneShowsTheTiltedPlane) {
     ensureGlContext();
-    const uint8_t code[3] = {191, 128, 238};
+    const uint8_t code[3] = {191, 160, 230};
     for (float scale : {1.0f, 0.5f}) {
         glm::dvec3 c(code[0] / 255.0 * 2.0 - 1.0, code[1] / 255.0 * 2.0 - 1.0, code[2] / 255.0 * 2.0 - 1.0);
         c.x *= scale;
