@@ -12,6 +12,10 @@ Ray cameraRay(vec2 pixel) {
     return Ray(uCameraEye, normalize(uCameraForward + ndc.x * uCameraRight + ndc.y * uCameraUp));
 }
 
+// Whether a ray is one of cameraRay's: only they start at the pinhole itself (every other ray leaves a
+// surface point). Single-sided surfaces hide their backs from these alone (opacity.glsl).
+bool isCameraRay(Ray ray) { return ray.origin == uCameraEye; }
+
 // The pinhole as a sensor, for light tracing (pbrt-v3 16.1.1; Veach 1997, ch. 10). cameraRay spreads
 // directions uniformly over the image plane at distance 1, of area A = 4 |right| |up|; a direction at
 // angle theta to the forward axis then has solid-angle density p(w) = 1 / (A cos^3 theta) (pbrt-v3 eq.

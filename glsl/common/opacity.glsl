@@ -1,6 +1,7 @@
 // Coverage (glTF alphaMode MASK and BLEND, MTL d and map_d) and single-sided surfaces (glTF doubleSided
-// false), decided during traversal, for camera, bounce and shadow rays alike: a hit the surface does not
-// cover is skipped as if the triangle were not there. Compiled in only when some material needs it
+// false), decided during traversal: a hit the surface does not cover is skipped as if the triangle were
+// not there. Coverage holds for camera, bounce and shadow rays alike; single-sidedness for the camera's
+// view only (below). Compiled in only when some material needs it
 // (SURFACE_OPACITY), and asked only for triangles whose flags say so (the triangles' third texel,
 // src/pack/layout.h), so that other scenes pay nothing.
 //
@@ -34,11 +35,24 @@ float coverageHash(Ray ray, int i) {
     return float(h.x >> 8u) * (1.0 / 16777216.0);
 }
 
+// A single-sided surface (glTF's back-face culling) is not there for the camera when it is seen from
+// behind (from the side its counter-clockwise front, surface.glsl's frontFace, does not face). Only the
+// camera's view: light and every other ray meet both of its sides, so that such a wall still casts
+// shadows and holds light in, and visibility stays symmetric, which bidirectional estimators need (a
+// surface that let light through one way only would be seen differently by light subpaths). Camera
+// rays are the rays from the pinhole (camera.glsl isCameraRay); bdpt's joins of light vertices to the
+// eye are traced the other way and say so with gTowardTheEye, and check the joined vertex's own side
+// (light_trace.frag.glsl).
+bool isCameraRay(Ray ray);
+bool gTowardTheEye = false;
+
 // Whether the hit of `ray` at barycentrics b of triangle i (whose flags are not 0) counts.
 bool coversHit(Ray ray, TriangleData tri, int i, vec2 b) {
     int flags = int(tri.flags);
-    // A single-sided surface is seen from its front only: counter-clockwise, as surface.glsl's frontFace.
-    if ((flags & TRIANGLE_SINGLE_SIDED_FLAG) != 0 && !(dot(cross(tri.e1, tri.e2), ray.dir) < 0.0)) return false;
+    if ((flags & TRIANGLE_SINGLE_SIDED_FLAG) != 0) {
+        bool front = dot(cross(tri.e1, tri.e2), ray.dir) < 0.0;
+        if (gTowardTheEye ? front : !front && isCameraRay(ray)) return false;
+    }
     if ((flags & TRIANGLE_ALPHA_FLAG) == 0) return true;
     float coverage = materialCoverage(tri.material, i, b);
     return coverage >= 1.0 || (coverage > 0.0 && coverageHash(ray, i) < coverage);

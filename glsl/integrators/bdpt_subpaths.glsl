@@ -29,6 +29,11 @@ struct PathVertex {
 
 PathVertex gCamera[BDPT_CAMERA_VERTICES];   // z0 (the eye) .. z_{D+1}
 PathVertex gLight[BDPT_MAX_LIGHT_VERTICES];  // y0 (on an emitter) ..
+#ifdef SURFACE_OPACITY
+// For each light vertex on a single-sided surface its front's unit normal, else 0: the eye sees it only
+// from the front (opacity.glsl), which light tracing's join to the eye checks.
+vec3 gLightSingleSidedFront[BDPT_MAX_LIGHT_VERTICES];
+#endif
 vec3 gSpectralWeight = vec3(1.0);
 
 void storeCameraVertex(int i, PathVertex v) { gCamera[i] = v; }
@@ -235,6 +240,10 @@ int traceLightSubpath(int maxDepth) {
         y.pdfFwd = toArea(pdfDir, gLight[count - 1].p, y);
         storeLightVertex(count, y);
         keepDiffuse(false, count, s);
+#ifdef SURFACE_OPACITY
+        bool singleSided = (int(fetchTriangle(hit.triangle).flags) & TRIANGLE_SINGLE_SIDED_FLAG) != 0;
+        gLightSingleSidedFront[count] = singleSided ? (s.frontFace ? s.geometricNormal : -s.geometricNormal) : vec3(0.0);
+#endif
         ++count;
         if (count == n) break;
 

@@ -17,8 +17,9 @@
 //                                            e1 = v1 - v0, e2 = v2 - v0; light pmf = probability that
 //                                            light sampling picks this triangle (0 if not emissive);
 //                                            flags (an exact float): + 1 if its material has alpha
-//                                            (MASK or BLEND), + 2 if it is single-sided: traversal
-//                                            tests such hits (read only with SURFACE_OPACITY).
+//                                            (MASK or BLEND), + 2 if it is single-sided (the camera
+//                                            does not see its back): traversal tests such hits (read
+//                                            only with SURFACE_OPACITY).
 //                                            (RGB32F positions, 36 bytes, with the rest moved to the
 //                                            normals, rendered the same image 10 % slower on llvmpipe:
 //                                            docs/optimisation-log.md, entry 6.)

@@ -53,8 +53,9 @@ struct Material {
     float alpha = 1.0f;  // in [0, 1]
     AlphaMode alphaMode = AlphaMode::Opaque;
     float alphaCutoff = 0.5f;  // MASK only
-    // glTF doubleSided. False: rays pass through the back face (glTF's back-face culling); OBJ
-    // surfaces are double-sided. Emission is one-sided (the front face) either way.
+    // glTF doubleSided. False: the camera does not see the back face (glTF's back-face culling; every
+    // other ray meets both sides: glsl/common/opacity.glsl); OBJ surfaces are double-sided. Emission is
+    // one-sided (the front face) either way.
     bool doubleSided = true;
 
     // Texture maps: indices into Scene::textures, or -1. Each multiplies the factor it belongs to

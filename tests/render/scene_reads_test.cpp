@@ -14,6 +14,7 @@
 #include "render_test_util.h"
 #include "scene/builtin_scene.h"
 #include "scene/load.h"
+#include "surface_maps_scene.h"
 
 namespace fp::test {
 namespace {
@@ -29,6 +30,12 @@ void expectTheSameBothWays(const Scene& scene, const Camera& camera) {
         Accumulation b = renderScene(fetches, camera, integrator, 24, 4, 5, 7);
         expectBitIdentical(a, b, integratorName(integrator));
     }
+}
+
+// Every kind of texture map (the tangents are an image too), coverage and single-sided surfaces.
+TEST(SceneReads, ImageLoadAndTexelFetchRenderTheSameMapsAndCoverage) {
+    ensureGlContext();
+    expectTheSameBothWays(everyMapScene(), everyMapCamera());
 }
 
 TEST(SceneReads, ImageLoadAndTexelFetchRenderTheSameCornellBox) {

@@ -12,31 +12,12 @@
 #include <cstdio>
 
 #include "render_test_util.h"
+#include "surface_maps_scene.h"
 
 namespace fp::test {
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
-
-// A texture of w x h texels given as RGBA bytes, top row first.
-Texture makeTexture(const std::string& name, int w, int h, std::vector<uint8_t> rgba) {
-    Texture t;
-    t.name = name;
-    t.image.width = w;
-    t.image.height = h;
-    t.image.texels = std::move(rgba);
-    return t;
-}
-
-// The quad a b c d as appendQuad makes it, with texture coordinates (0, 0) (s, 0) (s, s) (0, s) at its
-// corners: u runs along a -> b, v along b -> c.
-void appendMappedQuad(Scene& scene, glm::vec3 a, glm::vec3 b, glm::vec3 c, glm::vec3 d, uint32_t material,
-                      float s = 1.0f) {
-    size_t first = scene.triangles.size();
-    appendQuad(scene, a, b, c, d, material);
-    scene.triangles[first].uv = {glm::vec2(0.0f), glm::vec2(s, 0.0f), glm::vec2(s)};
-    scene.triangles[first + 1].uv = {glm::vec2(0.0f), glm::vec2(s), glm::vec2(0.0f, s)};
-}
 
 // ---------------------------------------------------------------------------------------------------
 // Normal maps.
@@ -205,7 +186,8 @@ ShellImage shellImage(Renderer& renderer, Integrator integrator, int spp) {
     return out;
 }
 
-void expectShell(const Scene& scene, double transmitted, const std::string& what) {
+void expectShell(const Scene& scene, double transmitted, const std::string& what, double sphere = -1.0) {
+    if (sphere < 0.0) sphere = 0.5 * transmitted;
     ensureGlContext();
     Renderer renderer(scene, testShaders());
     for (Integrator integrator : {Integrator::Nee, Integrator::Bsdf, Integrator::Naive, Integrator::Bdpt}) {
@@ -213,13 +195,11 @@ void expectShell(const Scene& scene, double transmitted, const std::string& what
         const std::string where = what + ", " + integratorName(integrator);
         std::printf("  %-40s background %.4f +- %.4f, sphere %.4f +- %.4f (expected %.4f, %.4f)\n",
                     where.c_str(), double(s.background.mean.x), double(s.background.standardError.x),
-                    double(s.sphere.mean.x), double(s.sphere.standardError.x), transmitted,
-                    0.5 * transmitted);
+                    double(s.sphere.mean.x), double(s.sphere.standardError.x), transmitted, sphere);
         for (int ch = 0; ch < 3; ++ch) {
             EXPECT_NEAR(s.background.mean[ch], transmitted, 5.0 * s.background.standardError[ch] + 1e-6)
                 << where;
-            EXPECT_NEAR(s.sphere.mean[ch], 0.5 * transmitted, 5.0 * s.sphere.standardError[ch] + 1e-6)
-                << where;
+            EXPECT_NEAR(s.sphere.mean[ch], sphere, 5.0 * s.sphere.standardError[ch] + 1e-6) << where;
         }
         if (transmitted == 0.0 || transmitted == 1.0) {
             // Deterministic: every camera ray passes, or none does.
@@ -275,14 +255,15 @@ TEST(SurfaceMaps, MaskCoverageCutsAtTheCutoff) {
     expectShell(sphereInAShell(shell), 0.0, "mask 0.5 above a cutoff of 0.4");
 }
 
-// A single-sided surface (glTF doubleSided false) is seen from its front only: the shell's faces turned
-// outward vanish for the camera and the sphere inside (the sky exactly), turned inward they block
-// everything (black exactly); a double-sided shell blocks either way. What this catches: culling the
-// wrong side, or only for camera rays.
-TEST(SurfaceMaps, SingleSidedSurfacesVanishFromBehind) {
+// A single-sided surface (glTF doubleSided false) is not there for the camera from behind, and only for
+// the camera (opacity.glsl): the shell's faces turned outward vanish from the camera inside it (the sky
+// exactly) but still keep the sky's light from the sphere (black exactly); turned inward they block
+// everything; a double-sided shell blocks either way. What this catches: culling the wrong side, or
+// culling for rays other than the camera's (the sphere would be lit).
+TEST(SurfaceMaps, SingleSidedSurfacesVanishFromBehindForTheCamera) {
     Material shell = blackShell();
     shell.doubleSided = false;
-    expectShell(sphereInAShell(shell, false), 1.0, "single-sided, facing out");
+    expectShell(sphereInAShell(shell, false), 1.0, "single-sided, facing out", 0.0);
     expectShell(sphereInAShell(shell, true), 0.0, "single-sided, facing in");
     shell.doubleSided = true;
     expectShell(sphereInAShell(shell, false), 0.0, "double-sided");
@@ -397,51 +378,16 @@ TEST(SurfaceMaps, MetallicRoughnessMapIsItsFactors) {
                     "metallic-roughness map against its factors");
 }
 
-// Every map at once on a floor (base colour, metallic-roughness and normal checkers) and a plastic box
-// (specular map, roughness map), under a lamp and a dim sky: nee, bsdf and bdpt must agree. bdpt keeps
-// the textured values of every stored vertex (bdpt_subpaths.glsl keepDiffuse); the estimators meet the
-// maps through different functions (light samples, BSDF samples, joins).
+// Every map at once (surface_maps_scene.h: base colour, metallic-roughness and normal maps on a floor,
+// specular and roughness maps on a plastic box, an alpha-mapped BLEND quad and a single-sided one),
+// under a lamp and a dim sky: nee, bsdf and bdpt must agree. bdpt keeps the textured values of every
+// stored vertex (bdpt_subpaths.glsl keepDiffuse); the estimators meet the maps through different
+// functions (light samples, BSDF samples, joins).
 TEST(SurfaceMaps, EveryMapAtOnceNeeBsdfAndBdptAgree) {
     ensureGlContext();
-    Scene scene;
-    scene.source = "every map at once";
-    Material floor;
-    floor.type = MaterialType::MetallicRoughness;
-    floor.diffuse = glm::vec3(1.0f);
-    floor.metallic = 1.0f;
-    floor.roughness = 1.0f;
-    floor.diffuseTexture = 0;
-    floor.metallicRoughnessTexture = 1;
-    floor.normalTexture = 2;
-    floor.normalScale = 0.8f;
-    Material box;
-    box.type = MaterialType::Plastic;
-    box.diffuse = glm::vec3(0.3f, 0.5f, 0.7f);
-    box.specular = glm::vec3(1.0f);
-    box.roughness = 1.0f;
-    box.specularTexture = 3;
-    box.metallicRoughnessTexture = 1;
-    scene.materials = {floor, box, lampMaterial(glm::vec3(12.0f))};
-    scene.textures.push_back(makeTexture(
-        "base", 2, 2, {230, 200, 120, 255, 90, 160, 230, 255, 90, 160, 230, 255, 230, 200, 120, 255}));
-    scene.textures.push_back(
-        makeTexture("mr", 2, 2, {0, 60, 255, 255, 0, 200, 0, 255, 0, 200, 0, 255, 0, 60, 255, 255}));
-    scene.textures.push_back(makeTexture("normal", 2, 1, {200, 128, 230, 255, 80, 170, 235, 255}));
-    scene.textures.push_back(makeTexture("specular", 1, 2, {255, 255, 255, 255, 60, 60, 60, 255}));
-    appendMappedQuad(scene, glm::vec3(-3.0f, 0.0f, 3.0f), glm::vec3(3.0f, 0.0f, 3.0f),
-                     glm::vec3(3.0f, 0.0f, -3.0f), glm::vec3(-3.0f, 0.0f, -3.0f), 0, 3.0f);
-    size_t first = scene.triangles.size();
-    appendBox(scene, glm::vec3(-0.4f, 0.0f, -0.2f), glm::vec3(0.4f, 0.8f, 0.6f), 1);
-    for (size_t i = first; i < scene.triangles.size(); ++i)
-        scene.triangles[i].uv = {glm::vec2(0.0f), glm::vec2(1.0f, 0.0f), glm::vec2(1.0f)};
-    appendQuad(scene, glm::vec3(-1.0f, 2.5f, -1.0f), glm::vec3(1.0f, 2.5f, -1.0f),
-               glm::vec3(1.0f, 2.5f, 1.0f), glm::vec3(-1.0f, 2.5f, 1.0f), 2);
-    scene.environment.color = glm::vec3(0.1f);
+    Scene scene = everyMapScene();
     Renderer renderer(scene, testShaders());
-    Camera c;
-    c.eye = glm::vec3(0.5f, 1.8f, -3.5f);
-    c.target = glm::vec3(0.0f, 0.3f, 0.3f);
-    c.fovY = 45.0f;
+    const Camera c = everyMapCamera();
     Accumulation nee = renderScene(renderer, c, Integrator::Nee, 24, 256, 4, 1);
     Accumulation bsdf = renderScene(renderer, c, Integrator::Bsdf, 24, 1024, 4, 2);
     Accumulation bdpt = renderScene(renderer, c, Integrator::Bdpt, 24, 256, 4, 3);
