@@ -34,6 +34,21 @@ std::array<glm::vec4, layout::kMaterialTexels> packMaterial(const Material& m) {
             glm::vec4(m.metallic, m.normalScale, index(m.specularTexture), 0.0f)};
 }
 
+Material shaderMaterial(const Material& m) {
+    if (m.type != MaterialType::MetallicRoughness || m.metallicRoughnessTexture >= 0) return m;
+    Material out = m;
+    if (m.metallic >= 1.0f && m.diffuseTexture < 0) {
+        out.type = MaterialType::Conductor;
+        out.specular = m.diffuse;
+        out.metallic = 0.0f;
+    } else if (m.metallic <= 0.0f) {
+        out.type = MaterialType::Plastic;
+        out.specular = glm::vec3(1.0f);
+        out.metallic = 0.0f;
+    }
+    return out;
+}
+
 glm::vec4 triangleTangent(const Triangle& t) {
     const glm::vec3 e1 = t.p[1] - t.p[0], e2 = t.p[2] - t.p[0];
     const glm::vec2 d1 = t.uv[1] - t.uv[0], d2 = t.uv[2] - t.uv[0];
@@ -122,7 +137,7 @@ PackedScene packScene(const Scene& scene, const Bvh& bvh) {
         triangleFlags[k] = float((m.hasAlpha() ? layout::kTriangleAlphaFlag : 0) +
                                  (m.doubleSided ? 0 : layout::kTriangleSingleSidedFlag));
         out.opacity = out.opacity || m.needsOpacityTest();
-        for (const glm::vec4& texel : packMaterial(m)) out.materials.push_back(texel);
+        for (const glm::vec4& texel : packMaterial(shaderMaterial(m))) out.materials.push_back(texel);
     }
     const bool tangents = (out.surfaceMaps & layout::kNormalMapBit) != 0;
     if (tangents && !scene.tangents.empty() && scene.tangents.size() != scene.triangles.size())

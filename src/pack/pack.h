@@ -39,6 +39,15 @@ struct PackedScene {
 // One material's texels, as pack/layout.h describes them (the BSDF tests pack their materials with it).
 std::array<glm::vec4, layout::kMaterialTexels> packMaterial(const Material& m);
 
+// The material as packScene packs it: a metallic-roughness material at metallic 1 without a
+// metallic-roughness or base colour map is exactly the conductor with F0 = its base colour, and at
+// metallic 0 without a metallic-roughness map exactly the plastic with a white coat (bsdf.glsl runs the
+// same functions; tests/render/metallic_roughness_test.cpp), which compile less shader code: such
+// materials are packed as those, so that a scene of plain metals (MTL Pm 1, glTF metallicFactor 1)
+// renders as fast as with the Conductor type. Every other material is returned as it is. The renderer
+// takes MATERIAL_TYPES from these types.
+Material shaderMaterial(const Material& m);
+
 // The tangent frame of a triangle from its positions and texture coordinates (Lengyel 2001, "Computing
 // Tangent Space Basis Vectors for an Arbitrary Mesh"): xyz = dp/du made orthogonal to the triangle's
 // normal and unit, w = +-1 such that w cross(n, t) points along dp/dv, n the vertices' mean normal

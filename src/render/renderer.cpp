@@ -64,7 +64,7 @@ Renderer::Renderer(const Scene& scene, ShaderLibrary shaders, const BvhBuildOpti
         if (environment.totalWeight > 0.0)
             environmentTextures_ = std::make_unique<EnvironmentTextures>(environment);
     }
-    for (const Material& m : scene.materials) materialTypes_ |= 1u << uint32_t(m.type);
+    for (const Material& m : scene.materials) materialTypes_ |= 1u << uint32_t(shaderMaterial(m).type);
     glGenVertexArrays(1, &vertexArray_);
 }
 

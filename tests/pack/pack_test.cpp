@@ -302,6 +302,44 @@ TEST(PackScene, MaterialTexelsFollowTheLayout) {
         EXPECT_EQ(p.triangles[i * layout::kTriangleTexels + 2].w, 0.0f);
 }
 
+// A metallic-roughness material at its ends without maps that change that is packed as the model it
+// equals (shaderMaterial), every other material as it is.
+TEST(PackScene, MetallicRoughnessAtItsEndsIsPackedAsTheConductorOrThePlastic) {
+    Material metal;
+    metal.type = MaterialType::MetallicRoughness;
+    metal.diffuse = glm::vec3(0.9f, 0.6f, 0.3f);
+    metal.metallic = 1.0f;
+    metal.roughness = 0.3f;
+    metal.normalTexture = 0;  // maps that do not change the model do not matter
+    Material m = shaderMaterial(metal);
+    EXPECT_EQ(m.type, MaterialType::Conductor);
+    EXPECT_EQ(m.specular, metal.diffuse) << "F0 = the base colour";
+    EXPECT_EQ(m.roughness, 0.3f);
+    EXPECT_EQ(m.normalTexture, 0);
+    Material dielectric = metal;
+    dielectric.metallic = 0.0f;
+    dielectric.diffuseTexture = 1;
+    m = shaderMaterial(dielectric);
+    EXPECT_EQ(m.type, MaterialType::Plastic);
+    EXPECT_EQ(m.specular, glm::vec3(1.0f)) << "a white coat";
+    EXPECT_EQ(m.diffuse, metal.diffuse);
+    EXPECT_EQ(m.diffuseTexture, 1) << "the base colour map multiplies the plastic's Kd as it did the base";
+    // Stays the blend: in between, a metallic-roughness map, a metal's base colour map.
+    Material between = metal, mapped = metal, texturedMetal = metal;
+    between.metallic = 0.5f;
+    mapped.metallicRoughnessTexture = 2;
+    texturedMetal.diffuseTexture = 1;
+    for (const Material& other : {between, mapped, texturedMetal})
+        EXPECT_EQ(shaderMaterial(other).type, MaterialType::MetallicRoughness);
+    // And in the packed scene.
+    Scene s = randomScene(10, 3);
+    s.materials[0] = metal;
+    s.materials[0].normalTexture = -1;
+    PackedScene p = packScene(s, buildFor(s));
+    EXPECT_EQ(p.materials[0], glm::vec4(metal.diffuse, float(MaterialType::Conductor)));
+    EXPECT_EQ(p.materials[2], glm::vec4(metal.diffuse, 1.5f));  // Ks = F0, ior
+}
+
 // A triangle's tangent is dp/du in its plane and its sign says where dp/dv lies (Lengyel 2001): checked
 // on a triangle whose uvs are a rotated, mirrored and scaled copy of its positions, where both
 // derivatives are known exactly.

@@ -113,26 +113,41 @@ Camera sphereCamera() {
 }
 
 // Whole renders: a metallic-roughness material at metallic 1 (0) renders the same image, bit for bit,
-// as the conductor (plastic) it equals, with every integrator; the shaders compile only the model each
-// scene has. What this catches: everything the probe test does, and an integrator that treats the new
-// type differently (a delta test that misses a smooth metal, a bdpt vertex that loses its metallic
-// factor, a lobe choice that uses a different random number).
+// as the conductor (plastic) it equals, with every integrator. Plain, the packer packs it as that model
+// (shaderMaterial: fewer shader lines); with a metallic-roughness map of white texels (factors times 1)
+// it stays the blend, whose shader code then runs at its ends, compiled beside only what the scene
+// has (MATERIAL_TYPES). What this catches: everything the probe test does, and an integrator that
+// treats the new type differently (a delta test that misses a smooth metal, a bdpt vertex that loses
+// its metallic factor, a lobe choice that uses a different random number), or a packed shortcut that
+// is not the same model.
 TEST(MetallicRoughness, EndpointsRenderTheSameImagesAsTheConductorAndThePlastic) {
     ensureGlContext();
-    for (float metallic : {1.0f, 0.0f})
-        for (float roughness : {0.0f, 0.4f}) {
-            Material mr = makeMetallicRoughness(metallic, roughness);
-            Scene a = sphereOnAFloor(mr), b = sphereOnAFloor(endpointModel(mr));
-            Renderer ra(a, testShaders()), rb(b, testShaders());
-            for (Integrator integrator :
-                 {Integrator::Nee, Integrator::Bsdf, Integrator::Bdpt, Integrator::Naive}) {
-                std::string what = std::string(integratorName(integrator)) + ", metallic " +
-                                   std::to_string(metallic) + ", roughness " + std::to_string(roughness);
-                Accumulation ia = renderScene(ra, sphereCamera(), integrator, 32, 8, 4, 3);
-                Accumulation ib = renderScene(rb, sphereCamera(), integrator, 32, 8, 4, 3);
-                expectBitIdentical(ia, ib, what.c_str());
+    for (bool mapped : {false, true})
+        for (float metallic : {1.0f, 0.0f})
+            for (float roughness : {0.0f, 0.4f}) {
+                Material mr = makeMetallicRoughness(metallic, roughness);
+                Scene a = sphereOnAFloor(mr), b = sphereOnAFloor(endpointModel(mr));
+                if (mapped) {
+                    a.materials[0].metallicRoughnessTexture = 0;
+                    Texture white;
+                    white.name = "white";
+                    white.image.width = white.image.height = 1;
+                    white.image.texels = {0, 255, 255, 255};
+                    a.textures.push_back(white);
+                }
+                EXPECT_EQ(shaderMaterial(a.materials[0]).type,
+                          mapped ? MaterialType::MetallicRoughness : b.materials[0].type);
+                Renderer ra(a, testShaders()), rb(b, testShaders());
+                for (Integrator integrator :
+                     {Integrator::Nee, Integrator::Bsdf, Integrator::Bdpt, Integrator::Naive}) {
+                    std::string what = std::string(integratorName(integrator)) + ", metallic " +
+                                       std::to_string(metallic) + ", roughness " + std::to_string(roughness) +
+                                       (mapped ? ", mapped" : "");
+                    Accumulation ia = renderScene(ra, sphereCamera(), integrator, 32, 8, 4, 3);
+                    Accumulation ib = renderScene(rb, sphereCamera(), integrator, 32, 8, 4, 3);
+                    expectBitIdentical(ia, ib, what.c_str());
+                }
             }
-        }
 }
 
 }  // namespace
