@@ -25,7 +25,7 @@ struct SceneStats {
     double bvhBuildCpuSeconds = 0.0;  // process CPU time of the build, all its threads together
     int bvhBuildThreads = 0;
     size_t gpuBytes = 0, gpuGeometryBytes = 0;  // all buffers; positions + BVH only
-    size_t gpuTextureBytes = 0;                 // of gpuBytes: texture coordinates and texels (map_Kd)
+    size_t gpuTextureBytes = 0;                 // of gpuBytes: texture coordinates, texels and tangents
     size_t gpuPinnedBytes = 0;  // of gpuBytes: read in place, not copied (SceneTextures::pinnedBytes)
     uint32_t stackSize = 0;     // traversal stack entries the shader was compiled with
     SceneReads sceneReads = SceneReads::TexelFetch;  // how the trace shaders read the scene buffers
