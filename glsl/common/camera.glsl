@@ -37,10 +37,17 @@ Ray cameraLensRay(vec2 pixel, vec2 u) {
 // The camera ray of the sample being traced: through the pinhole, or through a point of the lens drawn
 // from the lens's own pair of the random stream (rng.glsl, kLensPair). A pinhole draws no number for it,
 // so its images are bit for bit those of the camera before the lens existed.
+// It records the ray's origin (the eye or the lens point) for isCameraRay.
+vec3 gCameraRayOrigin = vec3(0.0);
 Ray primaryRay(vec2 pixel) {
-    if (uLensRadius > 0.0) return cameraLensRay(pixel, randAt(kLensPair));
-    return cameraRay(pixel);
+    Ray ray = uLensRadius > 0.0 ? cameraLensRay(pixel, randAt(kLensPair)) : cameraRay(pixel);
+    gCameraRayOrigin = ray.origin;
+    return ray;
 }
+
+// Whether a ray is the camera ray primaryRay made: only it starts at that point of the lens (every
+// other ray leaves a surface point). Single-sided surfaces hide their backs from it alone (opacity.glsl).
+bool isCameraRay(Ray ray) { return ray.origin == gCameraRayOrigin; }
 
 // The camera as a sensor, for light tracing (pbrt-v3 16.1.1; Veach 1997, ch. 10). cameraRay spreads
 // directions uniformly over the image plane at distance 1, of area A = 4 |right| |up|; a direction at

@@ -20,6 +20,8 @@ struct Hit {
     vec2 uv;       // barycentrics of v1 and v2
 };
 
+#include "common/opacity.glsl"
+
 // Moller & Trumbore 1997, "Fast, minimum storage ray-triangle intersection"; two-sided.
 bool intersectTriangle(Ray ray, vec3 v0, vec3 e1, vec3 e2, float tMax, out float t, out vec2 uv) {
     vec3 p = cross(ray.dir, e2);
@@ -83,6 +85,10 @@ bool intersectLeaves(Ray ray, uvec4 first, uvec4 count, bool anyHit, inout Hit h
         float t;
         vec2 uv;
         if (intersectTriangle(ray, tri.v0, tri.e1, tri.e2, hit.t, t, uv)) {
+#ifdef SURFACE_OPACITY
+            // Alpha and back-face culling: a hit the surface does not cover is no hit at all.
+            if (tri.flags != 0.0 && !coversHit(ray, tri, int(i), uv)) continue;
+#endif
             hit = Hit(t, int(i), uv);
             if (anyHit) return true;
         }

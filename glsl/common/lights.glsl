@@ -185,6 +185,7 @@ int pickLight(float u) {
 struct EmitterPoint {
     TriangleData tri;
     vec2 unitSquare;  // for the point on it: sampleTriangle (uniform by area) or sampleSphericalTriangle
+    int triangle;     // tri's index (when punctual is -1)
     int punctual;     // -1: the emitter triangle `tri`; else the punctual light of that number (no tri)
     float punctualPmf;  // its selection probability
 };
@@ -195,12 +196,39 @@ EmitterPoint sampleEmitterPoint() {
     vec4 texel = lightTexel(entry);
 #if PUNCTUAL_LIGHTS
     if (texel.x < 0.0)
-        return EmitterPoint(TriangleData(vec3(0.0), vec3(0.0), vec3(0.0), 0, 0.0), u, int(-texel.x) - 1, texel.z);
+        return EmitterPoint(TriangleData(vec3(0.0), vec3(0.0), vec3(0.0), 0, 0.0, 0.0), u, -1, int(-texel.x) - 1, texel.z);
 #endif
-    TriangleData tri = fetchTriangle(int(texel.x));
+    int triangle = int(texel.x);
+    TriangleData tri = fetchTriangle(triangle);
     float below = entry > 0 ? lightTexel(entry - 1).y : 0.0;
     vec2 v = tri.lightPmf >= 1.0 / 4096.0 ? vec2((u.x - below) / tri.lightPmf, u.y) : rand2();
-    return EmitterPoint(tri, v, -1, 0.0);
+    return EmitterPoint(tri, v, triangle, -1, 0.0);
+}
+
+// The radiance leaving the front of emitter triangle i at barycentrics b: Ke, times its emission map,
+// times its coverage (opacity.glsl: an emitter with alpha emits only where it covers, as rays see it
+// only there; for BLEND the expected coverage alpha). Without maps or alpha, Ke alone.
+vec3 emitterRadiance(int i, TriangleData tri, vec2 b) {
+    vec3 Le = materialEmission(tri.material);
+#ifdef SURFACE_TEXTURES
+#if HAS_MAP(EMISSION_MAP_BIT)
+    int t = materialMaps(tri.material).z;
+    if (t >= 0) Le *= sampleTexture(t, fetchTexcoord(i, b));
+#endif
+#endif
+#ifdef SURFACE_OPACITY
+    if ((int(tri.flags) & TRIANGLE_ALPHA_FLAG) != 0) Le *= materialCoverage(tri.material, i, b);
+#endif
+    return Le;
+}
+
+// The barycentrics (of v1 and v2) of point p in tri's plane.
+vec2 barycentricsOf(TriangleData tri, vec3 p) {
+    vec3 d = p - tri.v0;
+    float d00 = dot(tri.e1, tri.e1), d01 = dot(tri.e1, tri.e2), d11 = dot(tri.e2, tri.e2);
+    float d20 = dot(d, tri.e1), d21 = dot(d, tri.e2);
+    float det = d00 * d11 - d01 * d01;
+    return vec2(d11 * d20 - d01 * d21, d00 * d21 - d01 * d20) / det;
 }
 
 // The area density of sampleLight's emitter points on triangle tri: its pmf (the probability that
@@ -293,7 +321,7 @@ LightSample sampleLight(vec3 from) {
         if (cosLight <= 0.0) return ls;
         ls.dist = -dot(a, ls.normal) / cosLight;  // to the emitter's plane along ls.dir
         ls.point = from + ls.dist * ls.dir;
-        ls.radiance = materialEmission(tri.material);
+        ls.radiance = emitterRadiance(e.triangle, tri, barycentricsOf(tri, ls.point));
         ls.pdf = (1.0 - pEnvironment) * tri.lightPmf / solidAngle;
         return ls;
     }
@@ -305,7 +333,7 @@ LightSample sampleLight(vec3 from) {
     ls.dir = toLight / ls.dist;
     float cosLight = -dot(ls.normal, ls.dir);
     if (cosLight <= 0.0 || dist2 == 0.0) return ls;  // one-sided emitter seen from behind
-    ls.radiance = materialEmission(tri.material);
+    ls.radiance = emitterRadiance(e.triangle, tri, b);
     ls.pdf = (1.0 - pEnvironment) * emitterAreaPdf(tri) * dist2 / cosLight;
     return ls;
 }

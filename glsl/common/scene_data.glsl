@@ -38,13 +38,14 @@ struct TriangleData {
     vec3 v0, e1, e2;  // e1 = v1 - v0, e2 = v2 - v0
     int material;
     float lightPmf;   // probability that light sampling picks this triangle
+    float flags;      // TRIANGLE_ALPHA_FLAG + TRIANGLE_SINGLE_SIDED_FLAG (opacity.glsl)
 };
 
 TriangleData fetchTriangle(int i) {
     vec4 a = triangleTexel(i * TRIANGLE_TEXELS);
     vec4 b = triangleTexel(i * TRIANGLE_TEXELS + 1);
     vec4 c = triangleTexel(i * TRIANGLE_TEXELS + 2);
-    return TriangleData(a.xyz, b.xyz, c.xyz, int(a.w), b.w);
+    return TriangleData(a.xyz, b.xyz, c.xyz, int(a.w), b.w, c.w);
 }
 
 vec3 fetchShadingNormal(int i, vec2 uv) {

@@ -15,6 +15,51 @@ struct Surface {
 
 int gSurfacesShaded = 0;  // surface interactions of the current path, for the cost view
 
+#ifdef SURFACE_TEXTURES
+// Every map material s.materialIndex has, at the hit: a colour map multiplies Kd (a metallic-roughness's
+// base colour), one of emission Ke, one of specular Ks; the metallic-roughness map's G multiplies the
+// roughness and B the metallic factor (glTF's channels); a normal map replaces the shading normal and
+// frame. ns is the interpolated vertex normal before it was turned to the ray's side.
+void applyTextureMaps(inout Surface s, Hit hit, vec3 ns) {
+    ivec4 maps = materialMaps(s.materialIndex);  // (diffuse, metallic-roughness, emission, normal)
+    vec2 uv = fetchTexcoord(hit.triangle, hit.uv);
+#if HAS_MAP(DIFFUSE_MAP_BIT)
+    if (maps.x >= 0) s.material.diffuse *= sampleTexture(maps.x, uv);
+#endif
+#if HAS_MAP(ROUGHNESS_MAP_BIT)
+    if (maps.y >= 0) {
+        vec4 c = sampleLinearTexture(maps.y, uv);
+        s.material.roughness *= c.g;
+        s.material.metallic *= c.b;
+    }
+#endif
+#if HAS_MAP(EMISSION_MAP_BIT)
+    if (maps.z >= 0) s.material.emission *= sampleTexture(maps.z, uv);
+#endif
+#if HAS_MAP(SPECULAR_MAP_BIT) || HAS_MAP(NORMAL_MAP_BIT)
+    vec4 extra = materialTexel(s.materialIndex * MATERIAL_TEXELS + MATERIAL_EXTRA_TEXEL);  // (metallic, scale, Ks map)
+#endif
+#if HAS_MAP(SPECULAR_MAP_BIT)
+    if (extra.z >= 0.0) s.material.specular *= sampleTexture(int(extra.z), uv);
+#endif
+#if HAS_MAP(NORMAL_MAP_BIT)
+    if (maps.w >= 0) {
+        vec3 n = normalMapped(maps.w, extra.y, hit.triangle, hit.uv, uv, ns);
+        // On the ray's side as the vertex normal was turned, then kept a little above the surface's
+        // plane: a shading normal below the geometric hemisphere would make every direction leak
+        // (sameSide); bending it back is the simple alternative to Schuessler et al. 2017's
+        // microfacet-based normal mapping.
+        n = dot(ns, s.geometricNormal) < 0.0 ? -n : n;
+        float c = dot(n, s.geometricNormal);
+        const float kMinCos = 0.05;
+        if (c < kMinCos) n = normalize(n + (kMinCos - c) * s.geometricNormal);
+        s.shadingNormal = n;
+        orthonormalBasis(s.shadingNormal, s.tangent, s.bitangent);
+    }
+#endif
+}
+#endif
+
 Surface surfaceAt(Ray ray, Hit hit) {
     ++gSurfacesShaded;
     TriangleData tri = fetchTriangle(hit.triangle);
@@ -31,8 +76,12 @@ Surface surfaceAt(Ray ray, Hit hit) {
     s.materialIndex = tri.material;
     s.material = fetchMaterial(s.materialIndex);
 #ifdef SURFACE_TEXTURES
-    // The one place a texture meets a material: every integrator and view reads Kd from here.
+    // The one place a texture meets a material: every integrator and view reads the material from here.
+#if SURFACE_MAPS == DIFFUSE_MAP_BIT
     s.material.diffuse = texturedDiffuse(s.materialIndex, s.material.diffuse, hit.triangle, hit.uv);
+#else
+    applyTextureMaps(s, hit, ns);
+#endif
 #endif
     // Front faces face out of a closed glass object: a ray hitting one enters it.
     s.eta = s.frontFace ? s.material.ior : 1.0 / s.material.ior;

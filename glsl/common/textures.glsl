@@ -1,22 +1,35 @@
-// Colour textures (MTL map_Kd), compiled in only when the scene has some (SURFACE_TEXTURES), so that
-// other scenes pay nothing. The layout is in src/pack/layout.h: three texture coordinates per triangle,
-// every texture's sRGB-encoded texels in one RGBA8 buffer, and (first texel, width, height) per texture.
+// Texture maps (MTL map_Kd, map_Pr/map_Pm, map_Ke, norm/map_Bump, map_d, map_Ks; glTF's material
+// textures), compiled in only when the scene has some (SURFACE_TEXTURES), and each kind of map only when
+// some material has one (its bit in SURFACE_MAPS), so that other scenes pay nothing. The layout is in
+// src/pack/layout.h: three texture coordinates per triangle, every texture's 8-bit texels in one RGBA8
+// buffer, (first texel, width, height) per texture, the maps' indices in the material's texels, and, with
+// normal maps, three tangents per triangle.
 #ifdef SURFACE_TEXTURES
+#ifndef SURFACE_MAPS
+#define SURFACE_MAPS DIFFUSE_MAP_BIT
+#endif
+#define HAS_MAP(bit) ((SURFACE_MAPS & (bit)) != 0)
 // Read as images or texel fetches like the scene buffers (scene_data.glsl), except the RGBA8 texels,
 // whose texelFetch llvmpipe already generates inline.
 #ifdef SCENE_READS_IMAGES
 layout(rg32f) readonly uniform imageBuffer uTexcoords;
 layout(rgba32i) readonly uniform iimageBuffer uTextureTable;
+#if HAS_MAP(NORMAL_MAP_BIT)
+layout(rgba32f) readonly uniform imageBuffer uTangents;
+#endif
 #else
 uniform samplerBuffer uTexcoords;
 uniform isamplerBuffer uTextureTable;
+#if HAS_MAP(NORMAL_MAP_BIT)
+uniform samplerBuffer uTangents;
+#endif
 #endif
 uniform samplerBuffer uTextureTexels;
 
 vec2 texcoordTexel(int i) { return SCENE_TEXEL(uTexcoords, i).xy; }
 ivec4 textureTableTexel(int t) { return SCENE_TEXEL(uTextureTable, t); }
 
-int materialTexture(int m) { return int(materialTexel(m * MATERIAL_TEXELS + 4).x); }
+int materialTexture(int m) { return int(materialTexel(m * MATERIAL_TEXELS + MATERIAL_MAPS_TEXEL).x); }
 
 // The texture coordinates at barycentrics b of triangle i.
 vec2 fetchTexcoord(int i, vec2 b) {
@@ -31,16 +44,19 @@ vec3 srgbDecode(vec3 c) {
     return mix(c / 12.92, pow((c + 0.055) / 1.055, vec3(2.4)), greaterThan(c, vec3(0.04045)));
 }
 
-// The linear colour of texel xy (integer-valued, any range) of a texture, wrapped around (repeat). The
+// Texel xy (integer-valued, any range) of a texture, wrapped around (repeat), as code / 255. The
 // floor-modulo is done in float, exact for integers below 2^24 (GLSL leaves % of negatives undefined);
 // the clamp only guards against a rounded division.
-vec3 textureTexel(ivec4 info, vec2 xy) {
+vec4 textureCode(ivec4 info, vec2 xy) {
     vec2 size = vec2(info.yz);
     ivec2 p = clamp(ivec2(xy - size * floor(xy / size)), ivec2(0), info.yz - 1);
-    return srgbDecode(texelFetch(uTextureTexels, info.x + p.y * info.y + p.x).rgb);
+    return texelFetch(uTextureTexels, info.x + p.y * info.y + p.x);
 }
 
-// Bilinear filtering of texture t at uv, texel centres at half-integers, with repeat wrapping. Rows are
+// The linear colour of texel xy of a colour map.
+vec3 textureTexel(ivec4 info, vec2 xy) { return srgbDecode(textureCode(info, xy).rgb); }
+
+// Bilinear filtering of colour map t at uv, texel centres at half-integers, with repeat wrapping. Rows are
 // stored top first and OBJ's v = 0 is the bottom of the image. Texels are decoded before filtering, as
 // GPUs filter sRGB textures.
 vec3 sampleTexture(int t, vec2 uv) {
@@ -52,9 +68,43 @@ vec3 sampleTexture(int t, vec2 uv) {
     return mix(top, bottom, f.y);
 }
 
+// The same for a map of linear values (roughness and metallic, normals, coverage): the codes / 255,
+// bilinear, all four channels.
+vec4 sampleLinearTexture(int t, vec2 uv) {
+    ivec4 info = textureTableTexel(t);
+    vec2 xy = vec2(uv.x, 1.0 - uv.y) * vec2(info.yz) - 0.5;
+    vec2 base = floor(xy), f = xy - base;
+    vec4 top = mix(textureCode(info, base), textureCode(info, base + vec2(1.0, 0.0)), f.x);
+    vec4 bottom = mix(textureCode(info, base + vec2(0.0, 1.0)), textureCode(info, base + vec2(1.0)), f.x);
+    return mix(top, bottom, f.y);
+}
+
 // Material m's Kd at barycentrics b of triangle i: `diffuse` times its texture, if it has one.
 vec3 texturedDiffuse(int m, vec3 diffuse, int i, vec2 b) {
     int t = materialTexture(m);
     return t < 0 ? diffuse : diffuse * sampleTexture(t, fetchTexcoord(i, b));
 }
+
+ivec4 materialMaps(int m) { return ivec4(materialTexel(m * MATERIAL_TEXELS + MATERIAL_MAPS_TEXEL)); }
+
+#if HAS_MAP(NORMAL_MAP_BIT)
+vec4 tangentTexel(int i) { return SCENE_TEXEL(uTangents, i); }
+
+// Tangent-space normal mapping (glTF 2.0 material.normalTexture; the frame of Mikkelsen 2008, "Simulation
+// of Wrinkled Surfaces Revisited", section 2.3): the map's rgb * 2 - 1, x and y scaled by `scale`,
+// gives the normal in the frame (t, b, n) with n the interpolated vertex normal, t the interpolated
+// tangent made orthogonal to n (Gram-Schmidt) and b = sign cross(n, t). The unit result may lean past
+// the surface's plane where a map tilts steeply: surfaceAt keeps it in the geometric normal's hemisphere.
+vec3 normalMapped(int t, float scale, int i, vec2 b, vec2 uv, vec3 n) {
+    vec4 tw = (1.0 - b.x - b.y) * tangentTexel(i * TANGENT_TEXELS) + b.x * tangentTexel(i * TANGENT_TEXELS + 1) +
+              b.y * tangentTexel(i * TANGENT_TEXELS + 2);
+    vec3 tangent = tw.xyz - n * dot(n, tw.xyz);
+    if (!(dot(tangent, tangent) > 1e-12)) return n;
+    tangent = normalize(tangent);
+    vec3 bitangent = cross(n, tangent) * (tw.w < 0.0 ? -1.0 : 1.0);
+    vec3 c = sampleLinearTexture(t, uv).xyz * 2.0 - 1.0;
+    vec3 mapped = scale * (c.x * tangent + c.y * bitangent) + c.z * n;
+    return dot(mapped, mapped) > 1e-12 ? normalize(mapped) : n;
+}
+#endif
 #endif

@@ -117,7 +117,7 @@ vec3 connectToLight(int t) {
         float cosLight = -dot(normal, d);
         if (cosLight <= 0.0) return vec3(0.0);  // one-sided emitter seen from behind
         zRevLast = toArea(cosLight / PI, y.p, c);
-        Le = materialEmission(tri.material);
+        Le = emitterRadiance(e.triangle, tri, b);
         scale = cosLight / (dist2 * y.pdfFwd);
         pdfFresh = y.pdfFwd;
     }

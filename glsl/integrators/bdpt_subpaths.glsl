@@ -29,30 +29,61 @@ struct PathVertex {
 
 PathVertex gCamera[BDPT_CAMERA_VERTICES];   // z0 (the eye) .. z_{D+1}
 PathVertex gLight[BDPT_MAX_LIGHT_VERTICES];  // y0 (on an emitter) ..
+#ifdef SURFACE_OPACITY
+// For each light vertex on a single-sided surface its front's unit normal, else 0: the eye sees it only
+// from the front (opacity.glsl), which light tracing's join to the eye checks.
+vec3 gLightSingleSidedFront[BDPT_MAX_LIGHT_VERTICES];
+#endif
 vec3 gSpectralWeight = vec3(1.0);
 
 void storeCameraVertex(int i, PathVertex v) { gCamera[i] = v; }
 void storeLightVertex(int i, PathVertex v) { gLight[i] = v; }
 
 // The textured Kd of each stored surface vertex (surface.glsl), which fetchMaterial alone would miss;
-// kept beside PathVertex so that scenes without textures store nothing more.
+// kept beside PathVertex so that scenes without textures store nothing more. With metallic-roughness
+// maps also the textured roughness and metallic, with specular maps the textured Ks (a normal map's
+// shading normal is the vertex's ns already).
 #ifdef SURFACE_TEXTURES
 vec3 gCameraDiffuse[BDPT_CAMERA_VERTICES];
 vec3 gLightDiffuse[BDPT_MAX_LIGHT_VERTICES];
+#if HAS_MAP(ROUGHNESS_MAP_BIT)
+vec2 gCameraRoughness[BDPT_CAMERA_VERTICES];  // (roughness, metallic)
+vec2 gLightRoughness[BDPT_MAX_LIGHT_VERTICES];
+#endif
+#if HAS_MAP(SPECULAR_MAP_BIT)
+vec3 gCameraSpecular[BDPT_CAMERA_VERTICES];
+vec3 gLightSpecular[BDPT_MAX_LIGHT_VERTICES];
+#endif
 #endif
 
 void keepDiffuse(bool camera, int i, Surface s) {
 #ifdef SURFACE_TEXTURES
     if (camera) gCameraDiffuse[i] = s.material.diffuse;
     else gLightDiffuse[i] = s.material.diffuse;
+#if HAS_MAP(ROUGHNESS_MAP_BIT)
+    if (camera) gCameraRoughness[i] = vec2(s.material.roughness, s.material.metallic);
+    else gLightRoughness[i] = vec2(s.material.roughness, s.material.metallic);
+#endif
+#if HAS_MAP(SPECULAR_MAP_BIT)
+    if (camera) gCameraSpecular[i] = s.material.specular;
+    else gLightSpecular[i] = s.material.specular;
+#endif
 #endif
 }
 
-// The material at stored vertex i of the camera or light subpath, with its Surface's Kd.
+// The material at stored vertex i of the camera or light subpath, with its Surface's textured values.
 MaterialData vertexMaterial(bool camera, int i) {
     MaterialData m = fetchMaterial(camera ? gCamera[i].material : gLight[i].material);
 #ifdef SURFACE_TEXTURES
     m.diffuse = camera ? gCameraDiffuse[i] : gLightDiffuse[i];
+#if HAS_MAP(ROUGHNESS_MAP_BIT)
+    vec2 rm = camera ? gCameraRoughness[i] : gLightRoughness[i];
+    m.roughness = rm.x;
+    m.metallic = rm.y;
+#endif
+#if HAS_MAP(SPECULAR_MAP_BIT)
+    m.specular = camera ? gCameraSpecular[i] : gLightSpecular[i];
+#endif
 #endif
     return m;
 }
@@ -245,7 +276,7 @@ int traceLightSubpath(int maxDepth) {
         vec2 b = sampleTriangle(e.unitSquare);  // by area: bdpt's vertices carry area densities
         vec3 normal = normalize(cross(tri.e1, tri.e2));
         float pdfPosition = emitterAreaPdf(tri);
-        vec3 Le = materialEmission(tri.material);
+        vec3 Le = emitterRadiance(e.triangle, tri, b);
         PathVertex y0 = PathVertex(tri.v0 + b.x * tri.e1 + b.y * tri.e2, normal, normal, normal, Le / pdfPosition,
                                    tri.material, 1.0, pdfPosition, 0.0, false, false, surfaceOffset(tri));
         storeLightVertex(0, y0);
@@ -273,6 +304,10 @@ int traceLightSubpath(int maxDepth) {
 #endif
         storeLightVertex(count, y);
         keepDiffuse(false, count, s);
+#ifdef SURFACE_OPACITY
+        bool singleSided = (int(fetchTriangle(hit.triangle).flags) & TRIANGLE_SINGLE_SIDED_FLAG) != 0;
+        gLightSingleSidedFront[count] = singleSided ? (s.frontFace ? s.geometricNormal : -s.geometricNormal) : vec3(0.0);
+#endif
         ++count;
         if (count == n) break;
 

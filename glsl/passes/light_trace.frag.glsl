@@ -44,6 +44,10 @@ vec3 lightToCamera(int s, out vec2 pixel) {
     vec3 f;
     float yRevPrev = 0.0;
     MaterialData m = vertexMaterial(false, s - 1);
+#ifdef SURFACE_OPACITY
+    // The eye does not see a single-sided surface from behind (opacity.glsl).
+    if (s > 1 && dot(gLightSingleSidedFront[s - 1], d) < 0.0) return vec3(0.0);
+#endif
     if (s == 1) {
         if (gLightPunctual) return vec3(0.0);  // a light of no size is not seen (bdpt_subpaths.glsl)
         float cosLight = dot(y.ng, d);
@@ -61,7 +65,14 @@ vec3 lightToCamera(int s, out vec2 pixel) {
     float w = misWeight(s, 1, 0.0, 0.0, yRevLast, yRevPrev, s == 1 ? y.pdfFwd : 0.0, gLightPunctual);
     PathVertex eye = PathVertex(lens, uCameraForward, uCameraForward, uCameraForward, vec3(1.0), 0, 1.0,
                                 1.0, 0.0, false, false, 0.0);
-    if (!unoccluded(y, eye)) return vec3(0.0);
+#ifdef SURFACE_OPACITY
+    gTowardTheEye = true;  // traced from y toward the eye (opacity.glsl)
+#endif
+    bool visible = unoccluded(y, eye);
+#ifdef SURFACE_OPACITY
+    gTowardTheEye = false;
+#endif
+    if (!visible) return vec3(0.0);
     float cosCamera = dot(-d, uCameraForward);
     return y.beta * f * (cameraImportance(-d) * cosCamera / dist2) * w * spectralFactor(y.dispersive);
 }

@@ -51,6 +51,7 @@ void main() {
         Ray ray = primaryRay(vec2(pixel) + rand2());
 #else
         Ray ray = cameraRay(vec2(pixel) + 0.5);
+        gCameraRayOrigin = ray.origin;
 #endif
 #if DEBUG_VIEW == 0
         vec3 c = radiance(ray);

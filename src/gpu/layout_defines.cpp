@@ -8,14 +8,32 @@ namespace fp::layout {
 
 ShaderDefines layoutDefines(bool images) {
     auto s = [](int v) { return std::to_string(v); };
-    ShaderDefines defines = {
-        {"TRIANGLE_TEXELS", s(kTriangleTexels)},  {"NORMAL_TEXELS", s(kNormalTexels)},
-        {"NODE_TEXELS", s(kNodeTexels)},          {"NODE_LINK_TEXEL", s(kNodeLinkTexel)},
-        {"MATERIAL_TEXELS", s(kMaterialTexels)},  {"TRIANGLES_UNIT", s(kTrianglesUnit)},
-        {"NORMALS_UNIT", s(kNormalsUnit)},        {"NODES_UNIT", s(kNodesUnit)},
-        {"MATERIALS_UNIT", s(kMaterialsUnit)},    {"LIGHTS_UNIT", s(kLightsUnit)},
-        {"TEXCOORD_TEXELS", s(kTexcoordTexels)},  {"LEAF_BIT", std::to_string(kLeafBit) + "u"},
-        {"LEAF_COUNT_SHIFT", s(kLeafCountShift)}, {"LEAF_FIRST_MASK", std::to_string(kMaxLeafFirst) + "u"}};
+    ShaderDefines defines = {{"TRIANGLE_TEXELS", s(kTriangleTexels)},
+                             {"NORMAL_TEXELS", s(kNormalTexels)},
+                             {"NODE_TEXELS", s(kNodeTexels)},
+                             {"NODE_LINK_TEXEL", s(kNodeLinkTexel)},
+                             {"MATERIAL_TEXELS", s(kMaterialTexels)},
+                             {"TRIANGLES_UNIT", s(kTrianglesUnit)},
+                             {"NORMALS_UNIT", s(kNormalsUnit)},
+                             {"NODES_UNIT", s(kNodesUnit)},
+                             {"MATERIALS_UNIT", s(kMaterialsUnit)},
+                             {"LIGHTS_UNIT", s(kLightsUnit)},
+                             {"TEXCOORD_TEXELS", s(kTexcoordTexels)},
+                             {"LEAF_BIT", std::to_string(kLeafBit) + "u"},
+                             {"LEAF_COUNT_SHIFT", s(kLeafCountShift)},
+                             {"LEAF_FIRST_MASK", std::to_string(kMaxLeafFirst) + "u"},
+                             {"MATERIAL_MAPS_TEXEL", s(kMaterialMapsTexel)},
+                             {"MATERIAL_ALPHA_TEXEL", s(kMaterialAlphaTexel)},
+                             {"MATERIAL_EXTRA_TEXEL", s(kMaterialExtraTexel)},
+                             {"TANGENT_TEXELS", s(kTangentTexels)},
+                             {"DIFFUSE_MAP_BIT", s(kDiffuseMapBit)},
+                             {"ROUGHNESS_MAP_BIT", s(kRoughnessMapBit)},
+                             {"EMISSION_MAP_BIT", s(kEmissionMapBit)},
+                             {"NORMAL_MAP_BIT", s(kNormalMapBit)},
+                             {"ALPHA_MAP_BIT", s(kAlphaMapBit)},
+                             {"SPECULAR_MAP_BIT", s(kSpecularMapBit)},
+                             {"TRIANGLE_ALPHA_FLAG", s(kTriangleAlphaFlag)},
+                             {"TRIANGLE_SINGLE_SIDED_FLAG", s(kTriangleSingleSidedFlag)}};
     defines.emplace_back("PUNCTUAL_TEXELS", s(kPunctualTexels));
     if (images) {
         // A GL_ name becomes an #extension line (gl/shader_source.h): the shaders are #version 410.

@@ -117,6 +117,8 @@ SceneTextures::SceneTextures(PackedScene scene, size_t maxTexels) : scene_(std::
         specs.push_back(spec("texture coordinates", s.texcoords, GL_RG32F, layout::kTexcoordsUnit));
         specs.push_back(spec("texture texels", s.textureTexels, GL_RGBA8, layout::kTextureTexelsUnit, 4));
         specs.push_back(spec("texture table", s.textureTable, GL_RGBA32I, layout::kTextureTableUnit));
+        if (!s.tangents.empty())
+            specs.push_back(spec("tangents", s.tangents, GL_RGBA32F, layout::kTangentsUnit));
     }
 
     if (maxTexels == 0) maxTexels = size_t(glInteger(GL_MAX_TEXTURE_BUFFER_SIZE));

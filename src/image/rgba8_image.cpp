@@ -25,6 +25,7 @@ Rgba8Image decodeRgba8(const std::string& bytes, const std::string& name) {
     Rgba8Image image;
     image.width = width;
     image.height = height;
+    image.fileChannels = channels;
     image.texels.resize(size_t(width) * size_t(height) * 4);
     std::memcpy(image.texels.data(), pixels, image.texels.size());
     stbi_image_free(pixels);
@@ -56,6 +57,14 @@ glm::vec3 meanLinearColor(const Rgba8Image& image) {
             glm::dvec3(decoded[image.texels[i]], decoded[image.texels[i + 1]], decoded[image.texels[i + 2]]);
     size_t count = image.texels.size() / 4;
     return count == 0 ? glm::vec3(0.0f) : glm::vec3(sum / double(count));
+}
+
+glm::vec4 meanCodes(const Rgba8Image& image) {
+    glm::dvec4 sum(0.0);
+    for (size_t i = 0; i + 3 < image.texels.size(); i += 4)
+        sum += glm::dvec4(image.texels[i], image.texels[i + 1], image.texels[i + 2], image.texels[i + 3]);
+    size_t count = image.texels.size() / 4;
+    return count == 0 ? glm::vec4(0.0f) : glm::vec4(sum / (255.0 * double(count)));
 }
 
 }  // namespace fp

@@ -13,6 +13,7 @@ namespace fp {
 struct Rgba8Image {
     int width = 0, height = 0;
     std::vector<std::uint8_t> texels;  // 4 bytes (R, G, B, A) per pixel, row-major, row 0 at the top
+    int fileChannels = 4;  // what the file held: 1 grey, 2 grey + alpha, 3 RGB, 4 RGBA (A = 255 without)
 };
 
 // Throws fp::Error starting with `name` when the bytes are not an 8-bit (or 16-bit, reduced to 8)
@@ -27,5 +28,8 @@ constexpr int kCheckerTexels = 64, kCheckerSquares = 8;
 
 // The mean of the pixels' linear RGB (each channel decoded from sRGB, then averaged; alpha ignored).
 glm::vec3 meanLinearColor(const Rgba8Image& image);
+
+// The mean of the pixels' codes / 255, all four channels (for maps of linear values).
+glm::vec4 meanCodes(const Rgba8Image& image);
 
 }  // namespace fp

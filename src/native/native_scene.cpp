@@ -22,8 +22,12 @@ std::optional<std::string> unsupportedFeature(const fp::Scene& scene) {
         if (m.type != MaterialType::Diffuse)
             return "material '" + m.name +
                    "' is not Lambertian; the native reference implements only diffuse surfaces";
-        if (m.diffuseTexture >= 0)
+        if (m.hasTextures())
             return "material '" + m.name + "' has a texture; the native reference implements none";
+        if (m.needsOpacityTest())
+            return "material '" + m.name +
+                   "' has alpha or is single-sided; the native reference implements opaque double-sided "
+                   "surfaces only";
     }
     return std::nullopt;
 }

@@ -13,9 +13,13 @@
 // Triangles are stored in BVH leaf order; "triangle i" below means packed index i.
 //
 //  buffer        format     texels per item  contents
-//  triangles     RGBA32F    3 per triangle   (v0.xyz, material index)  (e1.xyz, light pmf)  (e2.xyz, 0)
+//  triangles     RGBA32F    3 per triangle   (v0.xyz, material index)  (e1.xyz, light pmf)  (e2.xyz, flags)
 //                                            e1 = v1 - v0, e2 = v2 - v0; light pmf = probability that
-//                                            light sampling picks this triangle (0 if not emissive).
+//                                            light sampling picks this triangle (0 if not emissive);
+//                                            flags (an exact float): + 1 if its material has alpha
+//                                            (MASK or BLEND), + 2 if it is single-sided (the camera
+//                                            does not see its back): traversal tests such hits (read
+//                                            only with SURFACE_OPACITY).
 //                                            (RGB32F positions, 36 bytes, with the rest moved to the
 //                                            normals, rendered the same image 10 % slower on llvmpipe:
 //                                            docs/optimisation-log.md, entry 6.)
@@ -42,13 +46,20 @@
 //                                            on cornell, sphere-100k and sphere-1m; the exact boxes of
 //                                            112-byte nodes took 57.8-61.1; docs/optimisation-log.md,
 //                                            entry 21).
-//  materials     RGBA32F    5 per material   (Kd.rgb, type) (Ke.rgb, roughness) (Ks.rgb, ior) (Tf.rgb, B)
-//                                            (diffuse texture, 0, 0, 0)
+//  materials     RGBA32F    7 per material   (Kd.rgb, type) (Ke.rgb, roughness) (Ks.rgb, ior) (Tf.rgb, B)
+//                                            (diffuse map, metallic-roughness map, emission map, normal map)
+//                                            (alpha map, alpha, alpha cutoff, alpha mode)
+//                                            (metallic, normal scale, specular map, 0)
 //                                            B: Cauchy coefficient in nm^2 of a dispersive glass, else 0
 //                                            (ior is then the index at 587.6 nm; scene/spectrum.h)
-//                                            type: fp::MaterialType as an exact float
-//                                            diffuse texture: index into textureTable, -1 for none; read
-//                                            only when the shader is compiled with SURFACE_TEXTURES
+//                                            type: fp::MaterialType as an exact float, alpha mode
+//                                            fp::AlphaMode; Kd is a MetallicRoughness's base colour
+//                                            maps: indices into textureTable, -1 for none (Material's
+//                                            *Texture fields); each is read only when the shader is
+//                                            compiled with its bit in SURFACE_MAPS (layout::MapBit);
+//                                            the alpha texel only with SURFACE_OPACITY; metallic only
+//                                            when MATERIAL_TYPES has MetallicRoughness. Scenes without
+//                                            them read the first four texels, as before.
 //  lights        RGBA32F    1 per light,     the light-selection cdf, one entry per emitter triangle (in
 //                           then 3 per       leaf order) and then one per punctual light (in the scene's
 //                           punctual light   order), each (index, cdf up to and including it, pmf, area):
@@ -72,9 +83,14 @@
 // shader has no texture code at all and the three buffers are not allocated):
 //  texcoords     RG32F      3 per triangle   (uv0) (uv1) (uv2): OBJ vt, v = 0 at the image's bottom row
 //  textureTexels RGBA8      1 per texel      every texture's texels, concatenated; each texture row-major
-//                                            with its top row first; sRGB-encoded codes (alpha unused),
-//                                            read as code / 255 and decoded in the shader
+//                                            with its top row first; codes read as code / 255, the rgb
+//                                            of colour maps (diffuse, emission, specular) then decoded
+//                                            from sRGB in the shader; A is coverage (alpha maps)
 //  textureTable  RGBA32I    1 per texture    (first texel in textureTexels, width, height, 0)
+// Only when some material has a normal map (SURFACE_MAPS has kNormalMapBit):
+//  tangents      RGBA32F    3 per triangle   (t0.xyz, s0) (t1.xyz, s1) (t2.xyz, s2): per-vertex tangents
+//                                            (Scene::tangents, or the triangle's own from its positions
+//                                            and uvs at all three), s = +-1 the bitangent's sign
 //
 // An environment map (only when the scene has one) is a 2D RGBA32F texture of W x H radiance texels,
 // texel (x, y) covering u in [x, x+1)/W, v in [y, y+1)/H (v = 0 is straight up), and an R32F buffer
@@ -107,10 +123,28 @@ struct ChildLink {
 // Throws fp::Error when the leaf cannot be encoded (first > kMaxLeafFirst, count > kMaxLeafCount).
 uint32_t encodeChild(const ChildLink& child);
 ChildLink decodeChild(uint32_t link);
-constexpr int kMaterialTexels = 5;
+constexpr int kMaterialTexels = 7;
+// The material texels the shaders address by name (the others are read together in fetchMaterial).
+constexpr int kMaterialMapsTexel = 4;
+constexpr int kMaterialAlphaTexel = 5;
+constexpr int kMaterialExtraTexel = 6;
+// SURFACE_MAPS: one bit per kind of texture map some material has, so that a scene compiles only the
+// lookups it needs (glsl/common/textures.glsl).
+enum MapBit : int {
+    kDiffuseMapBit = 1,
+    kRoughnessMapBit = 2,  // metallic-roughness
+    kEmissionMapBit = 4,
+    kNormalMapBit = 8,
+    kAlphaMapBit = 16,
+    kSpecularMapBit = 32,
+};
+// The flags of a triangle's third texel.
+constexpr int kTriangleAlphaFlag = 1;
+constexpr int kTriangleSingleSidedFlag = 2;
 constexpr int kLightTexels = 1;
 constexpr int kPunctualTexels = 3;  // per punctual light, after the cdf entries in the lights buffer
 constexpr int kTexcoordTexels = 3;
+constexpr int kTangentTexels = 3;
 constexpr uint32_t kMaxFloatIndex = 1u << 24;
 
 // Texture units the scene buffers are bound to while tracing.
@@ -123,6 +157,7 @@ enum Unit : int {
     kTexcoordsUnit,
     kTextureTexelsUnit,
     kTextureTableUnit,
+    kTangentsUnit,
     kEnvironmentMapUnit,
     kEnvironmentCdfUnit,
     kFirstFreeUnit
@@ -134,9 +169,9 @@ enum Unit : int {
 // shaders declare the same ones as images under SCENE_READS_IMAGES (glsl/common/scene_data.glsl, and
 // textures.glsl and lights.glsl for the optional ones). A context without image units for all of them
 // reads them all with texelFetch (resolveSceneReads).
-constexpr Unit kImageUnits[] = {kTrianglesUnit,    kNormalsUnit,        kNodesUnit,
-                                kMaterialsUnit,    kLightsUnit,         kTexcoordsUnit,
-                                kTextureTableUnit, kEnvironmentMapUnit, kEnvironmentCdfUnit};
+constexpr Unit kImageUnits[] = {kTrianglesUnit,      kNormalsUnit,       kNodesUnit,        kMaterialsUnit,
+                                kLightsUnit,         kTexcoordsUnit,     kTextureTableUnit, kTangentsUnit,
+                                kEnvironmentMapUnit, kEnvironmentCdfUnit};
 // The highest image unit used, plus one.
 constexpr int kImageUnitsNeeded = [] {
     int highest = 0;

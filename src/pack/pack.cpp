@@ -20,7 +20,58 @@ size_t PackedScene::bytes() const {
 
 size_t PackedScene::textureBytes() const {
     return sizeof(glm::vec2) * texcoords.size() + textureTexels.size() +
-           sizeof(glm::ivec4) * textureTable.size();
+           sizeof(glm::ivec4) * textureTable.size() + sizeof(glm::vec4) * tangents.size();
+}
+
+std::array<glm::vec4, layout::kMaterialTexels> packMaterial(const Material& m) {
+    auto index = [](int32_t t) { return float(std::max(t, -1)); };
+    return {glm::vec4(m.diffuse, float(m.type)),
+            glm::vec4(m.emission, m.roughness),
+            glm::vec4(m.specular, m.ior),
+            glm::vec4(m.transmission, spectrum::cauchyFromAbbe(m.ior, m.abbeNumber).y),
+            glm::vec4(index(m.diffuseTexture), index(m.metallicRoughnessTexture), index(m.emissionTexture),
+                      index(m.normalTexture)),
+            glm::vec4(index(m.alphaTexture), m.alpha, m.alphaCutoff, float(m.alphaMode)),
+            glm::vec4(m.metallic, m.normalScale, index(m.specularTexture), 0.0f)};
+}
+
+Material shaderMaterial(const Material& m) {
+    if (m.type != MaterialType::MetallicRoughness || m.metallicRoughnessTexture >= 0) return m;
+    Material out = m;
+    if (m.metallic >= 1.0f && m.diffuseTexture < 0) {
+        out.type = MaterialType::Conductor;
+        out.specular = m.diffuse;
+        out.metallic = 0.0f;
+    } else if (m.metallic <= 0.0f) {
+        out.type = MaterialType::Plastic;
+        out.specular = glm::vec3(1.0f);
+        out.metallic = 0.0f;
+    }
+    return out;
+}
+
+glm::vec4 triangleTangent(const Triangle& t) {
+    const glm::vec3 e1 = t.p[1] - t.p[0], e2 = t.p[2] - t.p[0];
+    const glm::vec2 d1 = t.uv[1] - t.uv[0], d2 = t.uv[2] - t.uv[0];
+    glm::vec3 n = t.n[0] + t.n[1] + t.n[2];
+    const glm::vec3 ng = glm::cross(e1, e2);
+    n = glm::dot(n, n) > 1e-12f ? glm::normalize(n) : glm::normalize(ng);
+    // Solve e1 = d1.x T + d1.y B, e2 = d2.x T + d2.y B for T = dp/du and B = dp/dv (Lengyel 2001).
+    const float det = d1.x * d2.y - d2.x * d1.y;
+    glm::vec3 tangent(0.0f), bitangent(0.0f);
+    if (std::isfinite(det) && std::abs(det) > 0.0f) {
+        tangent = (e1 * d2.y - e2 * d1.y) / det;
+        bitangent = (e2 * d1.x - e1 * d2.x) / det;
+    }
+    tangent -= n * glm::dot(n, tangent);
+    if (!(glm::dot(tangent, tangent) > 1e-30f) || !std::isfinite(glm::dot(tangent, tangent))) {
+        // No usable uv gradient: any direction in the plane (the normal map is then meaningless anyway).
+        tangent = e1 - n * glm::dot(n, e1);
+        bitangent = glm::cross(n, tangent);
+    }
+    tangent = glm::normalize(tangent);
+    float sign = glm::dot(glm::cross(n, tangent), bitangent) < 0.0f ? -1.0f : 1.0f;
+    return glm::vec4(tangent, sign);
 }
 
 size_t PackedScene::geometryBytes() const {
@@ -68,14 +119,50 @@ PackedScene packScene(const Scene& scene, const Bvh& bvh) {
     out.totalLightPower = float(emitters.totalPower);
     const std::vector<float>& pmf = emitters.pmf;
 
+    bool textured = false;
+    std::vector<float> triangleFlags(scene.materials.size(), 0.0f);
+    for (size_t k = 0; k < scene.materials.size(); ++k) {
+        const Material& m = scene.materials[k];
+        const int32_t maps[] = {m.diffuseTexture,  m.metallicRoughnessTexture,
+                                m.emissionTexture, m.normalTexture,
+                                m.alphaTexture,    m.specularTexture};
+        const int bits[] = {layout::kDiffuseMapBit, layout::kRoughnessMapBit, layout::kEmissionMapBit,
+                            layout::kNormalMapBit,  layout::kAlphaMapBit,     layout::kSpecularMapBit};
+        for (int j = 0; j < 6; ++j) {
+            if (maps[j] >= int32_t(scene.textures.size()))
+                throw Error("internal: material '" + m.name + "' names texture " + std::to_string(maps[j]) +
+                            " of " + std::to_string(scene.textures.size()));
+            if (maps[j] >= 0) out.surfaceMaps |= bits[j];
+        }
+        textured = textured || m.hasTextures();
+        triangleFlags[k] = float((m.hasAlpha() ? layout::kTriangleAlphaFlag : 0) +
+                                 (m.doubleSided ? 0 : layout::kTriangleSingleSidedFlag));
+        out.opacity = out.opacity || m.needsOpacityTest();
+        for (const glm::vec4& texel : packMaterial(shaderMaterial(m))) out.materials.push_back(texel);
+    }
+    const bool tangents = (out.surfaceMaps & layout::kNormalMapBit) != 0;
+    if (tangents && !scene.tangents.empty() && scene.tangents.size() != scene.triangles.size())
+        throw Error("internal: " + std::to_string(scene.tangents.size()) + " tangent triples for " +
+                    std::to_string(scene.triangles.size()) + " triangles");
+
     out.triangles.reserve(n * layout::kTriangleTexels);
     out.normals.reserve(n * layout::kNormalTexels);
+    if (tangents) out.tangents.reserve(n * layout::kTangentTexels);
     float cdf = 0.0f;
     for (size_t i = 0; i < n; ++i) {
         const Triangle& t = scene.triangles[bvh.primIndex[i]];
         out.triangles.emplace_back(t.p[0], float(t.material));
         out.triangles.emplace_back(t.p[1] - t.p[0], pmf[i]);
-        out.triangles.emplace_back(t.p[2] - t.p[0], 0.0f);
+        out.triangles.emplace_back(t.p[2] - t.p[0], triangleFlags[t.material]);
+        if (tangents) {
+            if (scene.tangents.empty()) {
+                glm::vec4 tangent = triangleTangent(t);
+                for (int v = 0; v < 3; ++v) out.tangents.push_back(tangent);
+            } else {
+                for (const glm::vec4& tangent : scene.tangents[bvh.primIndex[i]])
+                    out.tangents.push_back(tangent);
+            }
+        }
         for (const glm::vec3& normal : t.n) out.normals.emplace_back(normal, 0.0f);
         if (pmf[i] > 0.0f) {
             cdf += pmf[i];  // exact: every pmf and partial sum is a multiple of 2^-24 in [0, 1]
@@ -114,18 +201,6 @@ PackedScene packScene(const Scene& scene, const Bvh& bvh) {
         }
     }
 
-    bool textured = false;
-    for (const Material& m : scene.materials) {
-        if (m.diffuseTexture >= int32_t(scene.textures.size()))
-            throw Error("internal: material '" + m.name + "' names texture " +
-                        std::to_string(m.diffuseTexture) + " of " + std::to_string(scene.textures.size()));
-        textured = textured || m.diffuseTexture >= 0;
-        out.materials.emplace_back(m.diffuse, float(m.type));
-        out.materials.emplace_back(m.emission, m.roughness);
-        out.materials.emplace_back(m.specular, m.ior);
-        out.materials.emplace_back(m.transmission, spectrum::cauchyFromAbbe(m.ior, m.abbeNumber).y);
-        out.materials.emplace_back(float(std::max(m.diffuseTexture, -1)), 0.0f, 0.0f, 0.0f);
-    }
     if (textured) packTextures(scene, bvh, &out);
 
     WideBvh wide = collapseToWide(bvh);

@@ -1,5 +1,6 @@
 #pragma once
 // Scene + BVH -> the texel arrays described in pack/layout.h (CPU only; upload is in scene_textures.h).
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <vector>
@@ -8,6 +9,7 @@
 
 #include "bvh/bvh.h"
 #include "core/huge_page_allocator.h"
+#include "pack/layout.h"
 #include "scene/scene.h"
 
 namespace fp {
@@ -21,6 +23,9 @@ struct PackedScene {
     HugePageVector<glm::vec2> texcoords;
     HugePageVector<uint8_t> textureTexels;  // 4 bytes per texel
     std::vector<glm::ivec4> textureTable;
+    HugePageVector<glm::vec4> tangents;  // empty unless some material has a normal map
+    int surfaceMaps = 0;   // SURFACE_MAPS: the layout::MapBit of every kind of map some material has
+    bool opacity = false;  // SURFACE_OPACITY: some material has alpha or is single-sided
     // lightCount: entries of the light-selection cdf (emitter triangles, then punctual lights: layout.h);
     // punctualCount of them are punctual lights.
     uint32_t triangleCount = 0, nodeCount = 0, lightCount = 0, punctualCount = 0;
@@ -30,8 +35,27 @@ struct PackedScene {
     bool hasTextures() const { return !textureTable.empty(); }
     size_t bytes() const;
     size_t geometryBytes() const;  // positions + BVH only
-    size_t textureBytes() const;   // texture coordinates, texels and table
+    size_t textureBytes() const;   // texture coordinates, texels, table and tangents
 };
+
+// One material's texels, as pack/layout.h describes them (the BSDF tests pack their materials with it).
+std::array<glm::vec4, layout::kMaterialTexels> packMaterial(const Material& m);
+
+// The material as packScene packs it: a metallic-roughness material at metallic 1 without a
+// metallic-roughness or base colour map is exactly the conductor with F0 = its base colour, and at
+// metallic 0 without a metallic-roughness map exactly the plastic with a white coat (bsdf.glsl runs the
+// same functions; tests/render/metallic_roughness_test.cpp), which compile less shader code: such
+// materials are packed as those, so that a scene of plain metals (MTL Pm 1, glTF metallicFactor 1)
+// renders as fast as with the Conductor type. Every other material is returned as it is. The renderer
+// takes MATERIAL_TYPES from these types.
+Material shaderMaterial(const Material& m);
+
+// The tangent frame of a triangle from its positions and texture coordinates (Lengyel 2001, "Computing
+// Tangent Space Basis Vectors for an Arbitrary Mesh"): xyz = dp/du made orthogonal to the triangle's
+// normal and unit, w = +-1 such that w cross(n, t) points along dp/dv, n the vertices' mean normal
+// (the geometric normal where they cancel). Degenerate uvs give an arbitrary unit tangent in the plane
+// and w = 1.
+glm::vec4 triangleTangent(const Triangle& t);
 
 // Throws fp::Error if the scene cannot be addressed by the layout (over 2^24 triangles or materials,
 // 2^31 texture texels, or a BVH node over 2^40 across: pack/quantised_node.h), or has a punctual light

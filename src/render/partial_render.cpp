@@ -76,6 +76,21 @@ std::string renderFingerprint(const Scene& scene, const RenderSettings& settings
         f.value(m.roughness);
         f.value(m.ior);
         f.value(m.abbeNumber);
+        // The fields of the metallic-roughness model, alpha and maps, only where they differ from the
+        // defaults: a scene without them keeps the fingerprint it had before they existed.
+        const Material defaults;
+        if (m.metallic != defaults.metallic || m.alpha != defaults.alpha ||
+            m.alphaMode != defaults.alphaMode || m.alphaCutoff != defaults.alphaCutoff ||
+            m.doubleSided != defaults.doubleSided || m.normalScale != defaults.normalScale ||
+            m.textureIndices() != defaults.textureIndices()) {
+            f.value(m.metallic);
+            f.value(m.alpha);
+            f.value(m.alphaMode);
+            f.value(m.alphaCutoff);
+            f.value(m.doubleSided);
+            f.value(m.normalScale);
+            f.value(m.textureIndices());
+        }
     }
     const Environment& e = scene.environment;
     f.value(e.color);

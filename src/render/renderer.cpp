@@ -48,6 +48,8 @@ Renderer::Renderer(const Scene& scene, ShaderLibrary shaders, const BvhBuildOpti
     stats_.gpuGeometryBytes = packed.geometryBytes();
     stats_.gpuTextureBytes = packed.textureBytes();
     surfaceTextures_ = packed.hasTextures();
+    surfaceMaps_ = packed.surfaceMaps;
+    surfaceOpacity_ = packed.opacity;
     // The traversal stack holds at most three entries (the hit siblings of the child it descends to)
     // for each node on the way down from the root.
     stats_.stackSize = std::max<uint32_t>(32, 3 * packed.bvhDepth + 1);
@@ -65,7 +67,7 @@ Renderer::Renderer(const Scene& scene, ShaderLibrary shaders, const BvhBuildOpti
         if (environment.totalWeight > 0.0)
             environmentTextures_ = std::make_unique<EnvironmentTextures>(environment);
     }
-    for (const Material& m : scene.materials) materialTypes_ |= 1u << uint32_t(m.type);
+    for (const Material& m : scene.materials) materialTypes_ |= 1u << uint32_t(shaderMaterial(m).type);
     glGenVertexArrays(1, &vertexArray_);
 }
 
@@ -93,7 +95,12 @@ std::unique_ptr<Program> Renderer::compile(Integrator integrator, const char* fr
                              "ivec2(" + std::to_string(size.x) + ", " + std::to_string(size.y) + ")");
     }
     // Only textured scenes pay for texture lookups (glsl/common/textures.glsl).
-    if (surfaceTextures_) defines.emplace_back("SURFACE_TEXTURES", "1");
+    if (surfaceTextures_) {
+        defines.emplace_back("SURFACE_TEXTURES", "1");
+        defines.emplace_back("SURFACE_MAPS", std::to_string(surfaceMaps_));
+    }
+    // Only scenes with alpha or single-sided materials test hits during traversal (common/opacity.glsl).
+    if (surfaceOpacity_) defines.emplace_back("SURFACE_OPACITY", "1");
     // Only scenes with point, spot or directional lights compile their sampling (glsl/common/lights.glsl).
     defines.emplace_back("PUNCTUAL_LIGHTS", punctualCount_ > 0 ? "1" : "0");
     auto vec3Literal = [](const glm::vec3& v) {
@@ -244,6 +251,7 @@ void Renderer::setTraceUniforms(Program& p, int maxDepth) {
         p.set("uTexcoords", int(layout::kTexcoordsUnit));
         p.set("uTextureTexels", int(layout::kTextureTexelsUnit));
         p.set("uTextureTable", int(layout::kTextureTableUnit));
+        if (surfaceMaps_ & layout::kNormalMapBit) p.set("uTangents", int(layout::kTangentsUnit));
     }
     p.set("uEnvironment", environmentColor_);
     if (environmentTextures_) {

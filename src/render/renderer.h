@@ -26,7 +26,7 @@ struct SceneStats {
     double bvhBuildCpuSeconds = 0.0;  // process CPU time of the build, all its threads together
     int bvhBuildThreads = 0;
     size_t gpuBytes = 0, gpuGeometryBytes = 0;  // all buffers; positions + BVH only
-    size_t gpuTextureBytes = 0;                 // of gpuBytes: texture coordinates and texels (map_Kd)
+    size_t gpuTextureBytes = 0;                 // of gpuBytes: texture coordinates, texels and tangents
     size_t gpuPinnedBytes = 0;  // of gpuBytes: read in place, not copied (SceneTextures::pinnedBytes)
     uint32_t stackSize = 0;     // traversal stack entries the shader was compiled with
     SceneReads sceneReads = SceneReads::TexelFetch;  // how the trace shaders read the scene buffers
@@ -96,6 +96,8 @@ class Renderer {
     uint32_t punctualCount_ = 0;    // of them punctual lights: compile them in (PUNCTUAL_LIGHTS)
     bool closeEmitters_ = false;    // LightSampling::Auto samples by solid angle (pack/light_strategy.h)
     bool surfaceTextures_ = false;  // some material has a texture: compile the lookups in
+    int surfaceMaps_ = 0;           // which kinds of map (layout::MapBit): SURFACE_MAPS
+    bool surfaceOpacity_ = false;   // some material has alpha or is single-sided: SURFACE_OPACITY
     std::unique_ptr<SceneTextures> textures_;
     std::unique_ptr<EnvironmentTextures> environmentTextures_;  // only for an environment map
     std::unique_ptr<RenderTargets> targets_;

@@ -173,22 +173,24 @@ void appendPrimitive(const tinygltf::Model& model, const MeshInstance& instance,
 
 // ---- gltf_material.cpp
 
-// The glTF factors a material is mapped from, with texture means already folded in (see the README).
+// The glTF factors a material is mapped from (see the README's material table).
 struct PbrFactors {
-    glm::vec4 baseColor{1.0f};
+    glm::vec4 baseColor{1.0f};  // rgb: base colour; a: alpha
     float metallic = 1.0f, roughness = 1.0f;
-    glm::vec3 emission{0.0f};  // emissiveFactor times KHR_materials_emissive_strength
-    float transmission = 0.0f;
-    std::optional<float> ior;  // KHR_materials_ior
-    glm::vec3 specular{1.0f};  // KHR_materials_specular: specularFactor times specularColorFactor
+    glm::vec3 emission{0.0f};   // emissiveFactor times KHR_materials_emissive_strength
+    float transmission = 0.0f;  // KHR_materials_transmission, times its texture's mean
+    std::optional<float> ior;   // KHR_materials_ior
+    AlphaMode alphaMode = AlphaMode::Opaque;
+    float alphaCutoff = 0.5f;
+    bool doubleSided = false;  // glTF's default
 };
 
-// The mapping rules of the README's glTF table, first match wins.
+// The mapping rules of the README's glTF table: glass (Dielectric) where transmission is above 1/2,
+// else the metallic-roughness model; maps are added by MaterialTable.
 Material materialFromPbr(const PbrFactors& factors, const std::string& name);
 
 // Turns glTF materials into fragpath's, on demand: the first time a primitive uses a material, its
-// textures are loaded (base colour as a texture, the maps the models cannot use yet as their mean),
-// it is mapped, and what is ignored is tallied for one warning per kind.
+// textures are loaded, it is mapped, and what is ignored is tallied for one warning per kind.
 class MaterialTable {
   public:
     MaterialTable(const tinygltf::Model& model, const std::string& name, const GltfLookup& lookup,
@@ -200,7 +202,7 @@ class MaterialTable {
     // The TEXCOORD set material `gltfMaterial` (-1: the default material) reads, or -1 if none.
     int texcoordSet(int gltfMaterial);
     // The Scene material for a primitive using `gltfMaterial`; `hasTexcoords` says whether it has the
-    // set texcoordSet asked for (without, a textured material becomes a copy with the mean colour).
+    // set texcoordSet asked for (without, a textured material becomes a copy with its maps' means).
     uint32_t use(int gltfMaterial, bool hasTexcoords);
     // Warns once per kind of what was ignored.
     void reportIgnored() const;

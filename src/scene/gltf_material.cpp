@@ -1,4 +1,4 @@
-// glTF metallic-roughness materials onto fragpath's four models (README, "glTF"; gltf_internal.h).
+// glTF metallic-roughness materials onto fragpath's (README, the material table; gltf_internal.h).
 #include <algorithm>
 #include <map>
 #include <set>
@@ -7,6 +7,7 @@
 #include "core/log.h"
 #include "image/rgba8_image.h"
 #include "scene/gltf_internal.h"
+#include "scene/material_maps.h"
 
 namespace fp::gltf {
 
@@ -14,10 +15,6 @@ namespace {
 
 glm::vec3 clamp01(const glm::vec3& c) {
     return glm::clamp(c, glm::vec3(0.0f), glm::vec3(1.0f));
-}
-
-bool isBlack(const glm::vec3& c) {
-    return !(c.x > 0.0f || c.y > 0.0f || c.z > 0.0f);
 }
 
 // A number an extension object holds, or `fallback`.
@@ -38,14 +35,6 @@ int extensionTexture(const tinygltf::ExtensionMap& extensions, const char* exten
     return info.Get("index").GetNumberAsInt();
 }
 
-// The mean of a channel's code values over [0, 1]: data maps (metallic, roughness) are linear.
-float meanChannel(const Rgba8Image& image, int channel) {
-    double sum = 0.0;
-    size_t count = image.texels.size() / 4;
-    for (size_t i = 0; i < count; ++i) sum += image.texels[i * 4 + size_t(channel)];
-    return count ? float(sum / (255.0 * double(count))) : 0.0f;
-}
-
 }  // namespace
 
 Material materialFromPbr(const PbrFactors& f, const std::string& name) {
@@ -54,24 +43,54 @@ Material materialFromPbr(const PbrFactors& f, const std::string& name) {
     m.diffuse = clamp01(glm::vec3(f.baseColor));
     m.emission = f.emission;
     m.roughness = std::clamp(f.roughness, 0.0f, 1.0f);
+    m.alpha = std::clamp(f.baseColor.a, 0.0f, 1.0f);
+    m.alphaMode = f.alphaMode;
+    m.alphaCutoff = f.alphaCutoff;
+    m.doubleSided = f.doubleSided;
     float ior = f.ior ? std::clamp(*f.ior, 1.0f, 4.0f) : 1.5f;
-    if (f.metallic >= 0.5f) {
-        m.type = MaterialType::Conductor;
-        m.specular = m.diffuse;
-    } else if (f.transmission > 0.5f) {
+    if (f.transmission * (1.0f - std::clamp(f.metallic, 0.0f, 1.0f)) > 0.5f) {
+        // KHR_materials_transmission with KHR_materials_ior: glass (refraction into the mesh's volume,
+        // its index the ior), tinted by the base colour, where over half the surface transmits (glTF:
+        // transmission applies to the dielectric part, 1 - metallic).
         m.type = MaterialType::Dielectric;
         m.ior = ior;
         m.transmission = m.diffuse;
-    } else if (f.roughness < 1.0f && !isBlack(f.specular)) {
-        m.type = MaterialType::Plastic;
-        m.specular = clamp01(f.specular);
-        // A coat of index 1 would reflect nothing: like MTL's Ni, only an index above 1 counts.
-        m.ior = f.ior && *f.ior > 1.0f ? ior : 1.5f;
-    } else {
-        m.roughness = 0.0f;  // unused by the Lambertian model; kept at the Material default
+        return m;
     }
+    m.type = MaterialType::MetallicRoughness;
+    m.metallic = std::clamp(f.metallic, 0.0f, 1.0f);
+    // A coat of index 1 would reflect nothing: like MTL's Ni, only an index above 1 counts.
+    m.ior = f.ior && *f.ior > 1.0f ? ior : 1.5f;
     return m;
 }
+
+namespace {
+
+// The factors of glTF material g, without its textures.
+PbrFactors factorsOf(const tinygltf::Material& g) {
+    PbrFactors f;
+    const tinygltf::PbrMetallicRoughness& pbr = g.pbrMetallicRoughness;
+    for (int c = 0; c < 4 && size_t(c) < pbr.baseColorFactor.size(); ++c)
+        f.baseColor[c] = float(pbr.baseColorFactor[size_t(c)]);
+    f.metallic = float(pbr.metallicFactor);
+    f.roughness = float(pbr.roughnessFactor);
+    for (int c = 0; c < 3 && size_t(c) < g.emissiveFactor.size(); ++c)
+        f.emission[c] = float(g.emissiveFactor[size_t(c)]);
+    f.emission *=
+        float(extensionNumber(g.extensions, "KHR_materials_emissive_strength", "emissiveStrength", 1.0));
+    f.transmission =
+        float(extensionNumber(g.extensions, "KHR_materials_transmission", "transmissionFactor", 0.0));
+    if (g.extensions.count("KHR_materials_ior"))
+        f.ior = float(extensionNumber(g.extensions, "KHR_materials_ior", "ior", 1.5));
+    f.alphaMode = g.alphaMode == "MASK"    ? AlphaMode::Mask
+                  : g.alphaMode == "BLEND" ? AlphaMode::Blend
+                                           : AlphaMode::Opaque;
+    f.alphaCutoff = float(g.alphaCutoff);
+    f.doubleSided = g.doubleSided;
+    return f;
+}
+
+}  // namespace
 
 struct MaterialTable::Impl {
     const tinygltf::Model& model;
@@ -191,115 +210,88 @@ struct MaterialTable::Impl {
         return it->second;
     }
 
+    const std::string kIgnoreMap = "ignoring the map";
+    const std::string kShowChecker = "showing a magenta and black checker instead";
+
+    // glTF texture `info` (of the kind `slot`) as a Scene texture index, or -1 (with a warning or a
+    // tally) when it cannot be used: a missing colour map shows the checker, other missing maps are
+    // ignored; every map must read the material's one TEXCOORD set (the first map's).
+    template <class Info>
+    int32_t mapTexture(const Info& info, int material, const std::string& slot, bool colour, Resolved* r,
+                       bool* broken = nullptr) {
+        if (info.index < 0) return -1;
+        const Loaded* map = image(info.index, material, slot, colour ? kShowChecker : kIgnoreMap);
+        if (!map || (!colour && !map->problem.empty())) return -1;
+        if (broken) *broken = !map->problem.empty();
+        if (r->texcoordSet < 0) r->texcoordSet = info.texCoord;
+        if (info.texCoord != r->texcoordSet) {
+            tally("maps reading another TEXCOORD set than the material's first map ignored", material);
+            return -1;
+        }
+        if (info.extensions.count("KHR_texture_transform"))
+            tally("KHR_texture_transform not supported yet, ignored", material);
+        int sampler = model.textures[size_t(info.index)].sampler;
+        if (sampler >= 0 && size_t(sampler) < model.samplers.size() &&
+            (model.samplers[size_t(sampler)].wrapS != TINYGLTF_TEXTURE_WRAP_REPEAT ||
+             model.samplers[size_t(sampler)].wrapT != TINYGLTF_TEXTURE_WRAP_REPEAT))
+            tally("texture wrap modes other than REPEAT drawn as REPEAT", material);
+        return sceneTexture(info.index);
+    }
+
+    // The texture maps of glTF material g onto m (README, the material table). Glass reads none of the
+    // surface maps but emission and normals: its colour and roughness take their maps' means.
+    void addMaps(const tinygltf::Material& g, int material, Material* m, Resolved* r) {
+        const tinygltf::PbrMetallicRoughness& pbr = g.pbrMetallicRoughness;
+        bool broken = false;
+        int32_t base = mapTexture(pbr.baseColorTexture, material, "baseColorTexture", true, r, &broken);
+        // The checker shows as it is whatever the factor was, as for a missing map_Kd.
+        if (base >= 0 && broken) m->diffuse = glm::vec3(1.0f);
+        int32_t metallicRoughness =
+            mapTexture(pbr.metallicRoughnessTexture, material, "metallicRoughnessTexture", false, r);
+        m->emissionTexture = mapTexture(g.emissiveTexture, material, "emissiveTexture", true, r);
+        m->normalTexture = mapTexture(g.normalTexture, material, "normalTexture", false, r);
+        m->normalScale = float(g.normalTexture.scale);
+        if (g.occlusionTexture.index >= 0)
+            tally("occlusionTexture ignored (a path tracer computes occlusion itself)", material);
+        if (m->type == MaterialType::Dielectric) {
+            const std::vector<Texture>& textures = scene->textures;
+            if (base >= 0) m->transmission *= meanLinearColor(textures[size_t(base)].image);
+            if (metallicRoughness >= 0)
+                m->roughness *= meanCodes(textures[size_t(metallicRoughness)].image).g;
+            if (base >= 0 || metallicRoughness >= 0)
+                tally("baseColorTexture and metallicRoughnessTexture on glass: their means used", material);
+            return;
+        }
+        m->diffuseTexture = base;
+        m->metallicRoughnessTexture = metallicRoughness;
+        // The base colour texture's alpha is the coverage map (glTF: alpha = factor.a * texture.a).
+        if (m->alphaMode != AlphaMode::Opaque && !broken) m->alphaTexture = base;
+    }
+
     Resolved& resolve(int material) {
         if (material >= int(model.materials.size()))
             throw Error(name + ": materials[" + std::to_string(material) + "] does not exist");
         Resolved& r = resolved[material < 0 ? resolved.size() - 1 : size_t(material)];
         if (r.done) return r;
         r.done = true;
-        const std::string kIgnoreMap = "ignoring the map";
-        PbrFactors f;
         const tinygltf::Material* g = material >= 0 ? &model.materials[size_t(material)] : nullptr;
-        if (g) {
-            const tinygltf::PbrMetallicRoughness& pbr = g->pbrMetallicRoughness;
-            for (int c = 0; c < 4 && size_t(c) < pbr.baseColorFactor.size(); ++c)
-                f.baseColor[c] = float(pbr.baseColorFactor[size_t(c)]);
-            f.metallic = float(pbr.metallicFactor);
-            f.roughness = float(pbr.roughnessFactor);
-            for (int c = 0; c < 3 && size_t(c) < g->emissiveFactor.size(); ++c)
-                f.emission[c] = float(g->emissiveFactor[size_t(c)]);
-            f.emission *= float(
-                extensionNumber(g->extensions, "KHR_materials_emissive_strength", "emissiveStrength", 1.0));
-            f.transmission = float(
-                extensionNumber(g->extensions, "KHR_materials_transmission", "transmissionFactor", 0.0));
-            if (g->extensions.count("KHR_materials_ior")) {
-                f.ior = float(extensionNumber(g->extensions, "KHR_materials_ior", "ior", 1.5));
-                if (*f.ior == 0.0f || *f.ior > 4.0f)
-                    tally("KHR_materials_ior outside [1, 4] clamped into it", material);
+        PbrFactors f = g ? factorsOf(*g) : PbrFactors{};
+        if (g && g->extensions.count("KHR_materials_ior") && (*f.ior == 0.0f || *f.ior > 4.0f))
+            tally("KHR_materials_ior outside [1, 4] clamped into it", material);
+        if (g && g->extensions.count("KHR_materials_specular"))
+            tally("KHR_materials_specular not supported, ignored (the dielectric's F0 is 0.04)", material);
+        // The transmission map decides the model, so only its mean can count.
+        int transmissionTexture =
+            g ? extensionTexture(g->extensions, "KHR_materials_transmission", "transmissionTexture") : -1;
+        if (transmissionTexture >= 0) {
+            const Loaded* map = image(transmissionTexture, material, "transmissionTexture", kIgnoreMap);
+            if (map && map->problem.empty()) {
+                f.transmission *= meanCodes(map->image).r;
+                tally("transmissionTexture: transmissionFactor is multiplied by its mean", material);
             }
-            auto specular = g->extensions.find("KHR_materials_specular");
-            if (specular != g->extensions.end() && specular->second.IsObject()) {
-                f.specular = glm::vec3(1.0f);
-                if (specular->second.Has("specularColorFactor")) {
-                    const tinygltf::Value& color = specular->second.Get("specularColorFactor");
-                    for (int c = 0; c < 3 && size_t(c) < color.ArrayLen(); ++c)
-                        f.specular[c] = float(color.Get(c).GetNumberAsDouble());
-                }
-                f.specular *=
-                    float(extensionNumber(g->extensions, "KHR_materials_specular", "specularFactor", 1.0));
-                if (extensionTexture(g->extensions, "KHR_materials_specular", "specularTexture") >= 0 ||
-                    extensionTexture(g->extensions, "KHR_materials_specular", "specularColorTexture") >= 0)
-                    tally("specularTexture and specularColorTexture not supported yet, ignored", material);
-            }
-
-            // Maps the models cannot use per texel yet: their mean stands in, so that a mostly
-            // non-metallic or mostly dark map does not turn into a metal or a glowing surface.
-            if (pbr.metallicRoughnessTexture.index >= 0) {
-                const Loaded* map = image(pbr.metallicRoughnessTexture.index, material,
-                                          "metallicRoughnessTexture", kIgnoreMap);
-                if (map && map->problem.empty()) {
-                    f.roughness *= meanChannel(map->image, 1);  // green
-                    f.metallic *= meanChannel(map->image, 2);   // blue
-                    tally(
-                        "metallicRoughnessTexture not supported yet: the factors are multiplied by its mean",
-                        material);
-                }
-            }
-            if (g->emissiveTexture.index >= 0) {
-                const Loaded* map = image(g->emissiveTexture.index, material, "emissiveTexture", kIgnoreMap);
-                if (map && map->problem.empty()) {
-                    f.emission *= meanLinearColor(map->image);
-                    tally(
-                        "emissiveTexture not supported yet: emission is emissiveFactor times its mean colour",
-                        material);
-                }
-            }
-            int transmissionTexture =
-                extensionTexture(g->extensions, "KHR_materials_transmission", "transmissionTexture");
-            if (transmissionTexture >= 0) {
-                const Loaded* map = image(transmissionTexture, material, "transmissionTexture", kIgnoreMap);
-                if (map && map->problem.empty()) {
-                    f.transmission *= meanChannel(map->image, 0);  // red
-                    tally(
-                        "transmissionTexture not supported yet: transmissionFactor is multiplied by its mean",
-                        material);
-                }
-            }
-            if (g->normalTexture.index >= 0) tally("normalTexture not supported yet, ignored", material);
-            if (g->occlusionTexture.index >= 0)
-                tally("occlusionTexture ignored (a path tracer computes occlusion itself)", material);
-            if (g->alphaMode == "MASK" || g->alphaMode == "BLEND")
-                tally("alphaMode MASK and BLEND not supported yet: drawn opaque", material);
         }
-
         Material m = materialFromPbr(f, g ? (g->name.empty() ? label(material) : g->name) : "glTF default");
-        if (g && g->pbrMetallicRoughness.baseColorTexture.index >= 0) {
-            const tinygltf::TextureInfo& info = g->pbrMetallicRoughness.baseColorTexture;
-            bool textured = m.type == MaterialType::Diffuse || m.type == MaterialType::Plastic;
-            const Loaded* map = image(info.index, material, "baseColorTexture",
-                                      textured ? "showing a magenta and black checker instead" : kIgnoreMap);
-            if (map && textured) {
-                m.diffuseTexture = sceneTexture(info.index);
-                r.texcoordSet = info.texCoord;
-                // The checker shows as it is whatever the factor was, as for a missing map_Kd.
-                if (!map->problem.empty()) m.diffuse = glm::vec3(1.0f);
-                if (info.extensions.count("KHR_texture_transform"))
-                    tally("KHR_texture_transform not supported yet, ignored", material);
-                int sampler = model.textures[size_t(info.index)].sampler;
-                if (sampler >= 0 && size_t(sampler) < model.samplers.size() &&
-                    (model.samplers[size_t(sampler)].wrapS != TINYGLTF_TEXTURE_WRAP_REPEAT ||
-                     model.samplers[size_t(sampler)].wrapT != TINYGLTF_TEXTURE_WRAP_REPEAT))
-                    tally("texture wrap modes other than REPEAT drawn as REPEAT", material);
-            } else if (map && map->problem.empty()) {
-                // Metals and glass do not read textures: their colour is the texture's mean.
-                glm::vec3 mean = meanLinearColor(map->image);
-                m.diffuse *= mean;
-                m.specular *= mean;
-                m.transmission *= mean;
-                tally("baseColorTexture on metals and glass not supported yet: its mean colour used",
-                      material);
-            }
-        }
+        if (g) addMaps(*g, material, &m, &r);
         if (material >= 0) {
             r.index = uint32_t(material);
             scene->materials[size_t(material)] = m;
@@ -318,12 +310,8 @@ MaterialTable::MaterialTable(const tinygltf::Model& model, const std::string& na
     // alone (their textures are never loaded).
     for (size_t i = 0; i < model.materials.size(); ++i) {
         const tinygltf::Material& g = model.materials[i];
-        PbrFactors f;
-        for (int c = 0; c < 4 && size_t(c) < g.pbrMetallicRoughness.baseColorFactor.size(); ++c)
-            f.baseColor[c] = float(g.pbrMetallicRoughness.baseColorFactor[size_t(c)]);
-        f.metallic = float(g.pbrMetallicRoughness.metallicFactor);
-        f.roughness = float(g.pbrMetallicRoughness.roughnessFactor);
-        scene->materials.push_back(materialFromPbr(f, g.name.empty() ? impl_->label(int(i)) : g.name));
+        scene->materials.push_back(
+            materialFromPbr(factorsOf(g), g.name.empty() ? impl_->label(int(i)) : g.name));
     }
 }
 
@@ -336,17 +324,15 @@ int MaterialTable::texcoordSet(int gltfMaterial) {
 uint32_t MaterialTable::use(int gltfMaterial, bool hasTexcoords) {
     Impl::Resolved& r = impl_->resolve(gltfMaterial);
     if (r.texcoordSet < 0 || hasTexcoords) return r.index;
-    // Without texture coordinates a texture cannot be looked up: a copy with the texture's mean colour
-    // keeps the surface's average albedo (as the OBJ loader does).
+    // Without texture coordinates a texture cannot be looked up: a copy with its maps' means keeps the
+    // surface's average look (as the OBJ loader does).
     ++r.withoutTexcoords;
     if (r.untextured < 0) {
-        Material copy = impl_->scene->materials[r.index];
-        copy.diffuse *= meanLinearColor(impl_->scene->textures[size_t(copy.diffuseTexture)].image);
-        copy.diffuseTexture = -1;
-        r.untextured = int64_t(impl_->scene->materials.size());
-        impl_->scene->materials.push_back(copy);
+        Scene& scene = *impl_->scene;
+        r.untextured = int64_t(scene.materials.size());
+        scene.materials.push_back(withoutMaps(scene.materials[r.index], scene.textures));
         impl_->tally("primitives without the TEXCOORD_" + std::to_string(r.texcoordSet) +
-                         " their texture needs: baseColorFactor times the texture's mean colour",
+                         " their maps need: the factors times the maps' means",
                      gltfMaterial);
     }
     return uint32_t(r.untextured);

@@ -26,14 +26,34 @@ double punctualLightPower(const PunctualLight& light, float sceneRadius) {
     return 0.0;
 }
 
+namespace {
+
+// The mean radiance of a material's emitters over their area, as far as it is known without texture
+// coordinates: Ke times its emission map's mean colour, times the coverage of a constant alpha (BLEND:
+// alpha; MASK: 0 or 1). An emitter whose mean is 0 emits nothing anywhere (a black map, or no coverage),
+// so light sampling may skip it.
+double meanEmittedLuminance(const Scene& scene, const Material& m) {
+    glm::vec3 emission = m.emission;
+    if (m.emissionTexture >= 0 && size_t(m.emissionTexture) < scene.textures.size())
+        emission *= meanLinearColor(scene.textures[size_t(m.emissionTexture)].image);
+    double coverage = 1.0;
+    if (m.alphaTexture < 0 && m.alphaMode == AlphaMode::Blend) coverage = double(m.alpha);
+    if (m.alphaTexture < 0 && m.alphaMode == AlphaMode::Mask) coverage = m.alpha >= m.alphaCutoff ? 1.0 : 0.0;
+    return double(luminance(emission)) * coverage;
+}
+
+}  // namespace
+
 EmitterPmfs emitterPmfs(const Scene& scene, const uint32_t* order, size_t count) {
     const size_t punctual = scene.punctualLights.size();
     std::vector<double> power(count + punctual, 0.0);
+    std::vector<double> radiance(scene.materials.size(), 0.0);
+    for (size_t m = 0; m < scene.materials.size(); ++m)
+        if (scene.materials[m].isEmissive()) radiance[m] = meanEmittedLuminance(scene, scene.materials[m]);
     EmitterPmfs out;
     for (size_t i = 0; i < count; ++i) {
         const Triangle& t = scene.triangles[order[i]];
-        const Material& m = scene.materials[t.material];
-        if (m.isEmissive()) power[i] = double(luminance(m.emission)) * double(t.area());
+        if (radiance[t.material] > 0.0) power[i] = radiance[t.material] * double(t.area());
         out.totalPower += power[i];
     }
     if (punctual > 0) {

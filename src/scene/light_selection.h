@@ -32,7 +32,10 @@ struct EmitterPmfs {
 // of its punctual lights, each in proportion to its power, as lightPmfs rounds them. The powers are in
 // the unit of luminance(Ke) * area, a triangle's power divided by pi (a one-sided Lambertian emitter of
 // radiance L and area A emits pi L A): so a punctual light's is punctualLightPower / pi. A scene
-// without punctual lights gets the probabilities it always had, to the bit.
+// without punctual lights gets the probabilities it always had, to the bit. Ke is taken times its
+// emission map's mean colour and a constant coverage (BLEND alpha; MASK 0 or 1), so that an emitter
+// that emits nothing anywhere is never picked; the shader's light samples then carry the map and
+// coverage at their point (lights.glsl emitterRadiance).
 EmitterPmfs emitterPmfs(const Scene& scene, const uint32_t* order, size_t count);
 
 // Probabilities proportional to `power`, on the 2^-24 grid of the shader's random numbers and summing to

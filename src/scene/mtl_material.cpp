@@ -38,6 +38,8 @@ Material materialFromMtl(const MtlMaterial& mtl) {
     m.name = mtl.name;
     m.diffuse = mtl.kd;
     m.emission = mtl.ke;
+    // With map_Pr alone the texture is the roughness (a factor of 1), as map_Kd alone is the colour.
+    auto roughness = [&](float otherwise) { return mtl.pr ? *mtl.pr : mtl.roughnessMap ? 1.0f : otherwise; };
 
     // An explicit illum names the lighting model and wins over Tf; see rule 1 in mtl.h.
     bool glass = mtl.illum ? isTransparentModel(*mtl.illum) : !isBlack(mtl.tf);
@@ -45,24 +47,32 @@ Material materialFromMtl(const MtlMaterial& mtl) {
         m.type = MaterialType::Dielectric;
         m.ior = mtl.ni.value_or(1.5f);
         m.transmission = isBlack(mtl.tf) ? glm::vec3(1.0f) : mtl.tf;
-        m.roughness = mtl.pr.value_or(0.0f);
+        m.roughness = roughness(0.0f);
         m.abbeNumber = mtl.vd.value_or(0.0f);
-    } else if (mtl.pm && *mtl.pm >= 0.5f) {
-        m.type = MaterialType::Conductor;
-        m.specular = mtl.kd;
-        m.roughness = mtl.pr.value_or(0.5f);
-    } else if (mtl.illum == 5 && !isBlack(mtl.ks) && !mtl.pm) {
+    } else if (mtl.pm || mtl.metallicMap) {
+        m.type = MaterialType::MetallicRoughness;
+        m.metallic = mtl.pm.value_or(1.0f);
+        m.roughness = roughness(0.5f);
+        // As the plastic's coat (rule 4): "Ni 1" means nothing on an opaque material.
+        m.ior = mtl.ni && *mtl.ni > 1.0f ? *mtl.ni : 1.5f;
+    } else if (mtl.illum == 5 && !isBlack(mtl.ks)) {
         m.type = MaterialType::Conductor;
         m.specular = mtl.ks;
-        m.roughness = mtl.pr.value_or(0.0f);
+        m.roughness = roughness(0.0f);
     } else if (!isBlack(mtl.ks) && !(mtl.illum && isSpecularOff(*mtl.illum))) {
         m.type = MaterialType::Plastic;
         m.specular = mtl.ks;
         // Exporters write "Ni 1" on opaque materials, where it means nothing; a coat of index 1 would
         // reflect nothing, so a coat takes the common 1.5 unless the file gives a real index.
         m.ior = mtl.ni && *mtl.ni > 1.0f ? *mtl.ni : 1.5f;
-        m.roughness = mtl.pr ? *mtl.pr : mtl.ns ? roughnessFromPhong(*mtl.ns) : 0.5f;
+        m.roughness = mtl.pr             ? *mtl.pr
+                      : mtl.roughnessMap ? 1.0f
+                      : mtl.ns           ? roughnessFromPhong(*mtl.ns)
+                                         : 0.5f;
     }
+    // Coverage: a dissolve below 1, or a map of it, makes the material a BLEND one (stochastic opacity).
+    m.alpha = mtl.d.value_or(1.0f);
+    if (m.alpha < 1.0f || mtl.alphaMap) m.alphaMode = AlphaMode::Blend;
     return m;
 }
 

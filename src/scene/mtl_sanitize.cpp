@@ -36,6 +36,7 @@ class KeyedTally {
 
 struct MtlRepairs {
     KeyedTally clamped, negative, nonFinite, malformed, unsupported, nonFiniteScalar, mapOptions;
+    std::vector<std::string> optionStatements;  // the map statements whose options were ignored
     RepairTally iorClamped;
     std::vector<std::pair<std::string, int>> unknown;  // statement name and first line, in file order
 
@@ -47,7 +48,9 @@ struct MtlRepairs {
         unsupported.report(name, "ignored", "spectral or CIE XYZ", "statement", "(only RGB is supported)");
         nonFiniteScalar.report(name, "ignored", "", "statement", "with a NaN or infinite value");
         iorClamped.report(name, "clamped", "Ni value", "to [1, 4]");
-        mapOptions.report(name, "ignored", "map_Kd", "option", "(textures repeat, unscaled and unshifted)");
+        std::string statements;
+        for (const std::string& k : optionStatements) statements += (statements.empty() ? "" : "/") + k;
+        mapOptions.report(name, "ignored", statements, "option", "(textures repeat, unscaled and unshifted)");
         for (const auto& [key, line] : unknown)
             warn(name + ": unknown MTL statement '" + key + "' ignored (first at line " +
                  std::to_string(line) + ")");
@@ -69,11 +72,25 @@ bool isColorStatement(std::string_view key) {
 }
 
 bool isScalarStatement(std::string_view key) {
-    return key == "Ni" || key == "Ns" || key == "Pr" || key == "Pm" || key == "Vd" || key == "illum";
+    return key == "Ni" || key == "Ns" || key == "Pr" || key == "Pm" || key == "Vd" || key == "illum" ||
+           key == "d";
+}
+
+// The texture map statements we read (mtl.h), by name; bump and map_bump are map_Bump.
+std::optional<MtlMap> mapOf(std::string_view key) {
+    static const std::pair<std::string_view, MtlMap> kMaps[] = {
+        {"map_Kd", MtlMap::Kd}, {"map_Ks", MtlMap::Ks},     {"map_Ke", MtlMap::Ke},
+        {"map_Pr", MtlMap::Pr}, {"map_Pm", MtlMap::Pm},     {"map_d", MtlMap::D},
+        {"norm", MtlMap::Norm}, {"map_Bump", MtlMap::Bump}, {"map_bump", MtlMap::Bump},
+        {"bump", MtlMap::Bump}};
+    for (const auto& [name, map] : kMaps)
+        if (name == key) return map;
+    return std::nullopt;
 }
 
 // The options of a texture map statement (MTL spec, "Texture map statements") and how many values each
-// takes; -o, -s and -t take one to three numbers. None is supported: all are reported as ignored.
+// takes; -o, -s and -t take one to three numbers. We read -bm of normal maps and -imfchan of scalar
+// maps; every other option is reported as ignored.
 int mapOptionValues(std::string_view option, bool* variable) {
     static const std::pair<std::string_view, int> kOptions[] = {
         {"-blendu", 1}, {"-blendv", 1},  {"-bm", 1}, {"-boost", 1},  {"-cc", 1},
@@ -85,25 +102,46 @@ int mapOptionValues(std::string_view option, bool* variable) {
     return 0;  // unknown: the option alone
 }
 
-// "map_Kd [options] file": records the file (the rest of the line after the options, so that names
-// with blanks work; backslash separators, as some Windows exporters write them, become '/') in `given`,
-// reports the options as ignored, and returns false if no file name is left.
-bool mapStatement(std::string_view code, const std::vector<std::string_view>& words, int line,
-                  MtlRepairs* repairs, MtlGiven* given) {
+// "map_X [options] file": records the file (the rest of the line after the options, so that names
+// with blanks work; backslash separators, as some Windows exporters write them, become '/') and the
+// options we read in `map`, reports the others as ignored, and returns false if no file name is left.
+bool mapStatement(std::string_view code, const std::vector<std::string_view>& words, int line, MtlMap kind,
+                  MtlRepairs* repairs, MtlMapStatement* map) {
+    const bool normal = kind == MtlMap::Norm || kind == MtlMap::Bump;
+    const bool scalar = kind == MtlMap::Pr || kind == MtlMap::Pm || kind == MtlMap::D;
+    MtlMapStatement out;
     size_t i = 1;
     while (i < words.size() && words[i].size() > 1 && words[i][0] == '-') {
+        std::string_view option = words[i];
         bool variable = false;
-        int values = mapOptionValues(words[i], &variable);
-        repairs->mapOptions.add(words[i], line);
+        int values = mapOptionValues(option, &variable);
         ++i;
+        bool read = false;
+        if (option == "-bm" && normal && i < words.size()) {
+            std::optional<double> scale = parseReal(words[i]);
+            read = scale && std::isfinite(float(*scale));
+            if (read) out.bumpScale = float(*scale);
+        } else if (option == "-imfchan" && scalar && i < words.size()) {
+            read =
+                words[i] == "r" || words[i] == "g" || words[i] == "b" || words[i] == "m" || words[i] == "l";
+            if (read) out.channel = words[i][0];
+        }
+        if (!read) {
+            repairs->mapOptions.add(option, line);
+            std::string statement(words[0] == "bump" || words[0] == "map_bump" ? "map_Bump" : words[0]);
+            if (std::find(repairs->optionStatements.begin(), repairs->optionStatements.end(), statement) ==
+                repairs->optionStatements.end())
+                repairs->optionStatements.push_back(statement);
+        }
         for (int v = 0; v < values && i < words.size(); ++v, ++i)
             if (variable && v > 0 && !parseReal(words[i])) break;
     }
     if (i >= words.size()) return false;
     std::string file(trimBlanks(code.substr(size_t(words[i].data() - code.data()))));
     std::replace(file.begin(), file.end(), '\\', '/');
-    given->diffuseMap = file;
-    given->diffuseMapLine = line;
+    out.file = file;
+    out.line = line;
+    *map = out;
     return true;
 }
 
@@ -143,6 +181,8 @@ std::string colorStatement(const std::vector<std::string_view>& words, int line,
         out += ' ' + spelled;
     }
     if (keyword == "Kd") given->kd = true;
+    if (keyword == "Ke") given->ke = true;
+    if (keyword == "Ks") given->ks = true;
     return out;
 }
 
@@ -187,7 +227,7 @@ std::string scalarStatement(const std::vector<std::string_view>& words, int line
         // Optical glasses have Abbe numbers between about 17 and 95; 0 means no dispersion.
         repairs->clamped.add(keyword, line);
         spelled = *value < 10.0 ? "10" : "100";
-    } else if ((keyword == "Pr" || keyword == "Pm") && (*value < 0.0 || *value > 1.0)) {
+    } else if ((keyword == "Pr" || keyword == "Pm" || keyword == "d") && (*value < 0.0 || *value > 1.0)) {
         repairs->clamped.add(keyword, line);
         spelled = *value < 0.0 ? "0" : "1";
     }
@@ -196,6 +236,7 @@ std::string scalarStatement(const std::vector<std::string_view>& words, int line
     if (keyword == "Pr") given->pr = true;
     if (keyword == "Pm") given->pm = true;
     if (keyword == "Vd") given->vd = true;
+    if (keyword == "d") given->d = true;
     return out + ' ' + spelled;
 }
 
@@ -228,9 +269,11 @@ std::string sanitizeMtl(std::string_view text, const std::string& name, std::vec
         } else if (isScalarStatement(words[0])) {
             out += scalarStatement(words, lines.number(), &repairs, current);
         } else {
-            if (words[0] == "map_Kd" &&
-                !mapStatement(line.substr(0, line.find('#')), words, lines.number(), &repairs, current))
-                repairs.malformed.add(words[0], lines.number());
+            if (std::optional<MtlMap> map = mapOf(words[0])) {
+                if (!mapStatement(line.substr(0, line.find('#')), words, lines.number(), *map, &repairs,
+                                  &current->maps[size_t(*map)]))
+                    repairs.malformed.add(words[0], lines.number());
+            }
             if (!isKnownStatement(words[0])) {
                 auto seen = std::find_if(repairs.unknown.begin(), repairs.unknown.end(),
                                          [&](const auto& u) { return u.first == words[0]; });

@@ -1,12 +1,17 @@
 #include "scene/obj_parse.h"
 
+#include <algorithm>
+#include <array>
+#include <cmath>
 #include <filesystem>
 #include <map>
+#include <optional>
 #include <set>
 
 #include "core/error.h"
 #include "core/log.h"
 #include "image/rgba8_image.h"
+#include "scene/material_maps.h"
 #include "scene/mtl.h"
 #include "scene/obj_mesh.h"
 #include "scene/obj_scan.h"
@@ -25,14 +30,15 @@ std::string quotedList(const std::vector<std::string>& names) {
     return out;
 }
 
-// A map_Kd statement of a library, with what is needed to find its file and to name it in messages.
+// A texture map statement of a library, with what is needed to find its file(s) and to name them in
+// messages.
 struct TextureRef {
     std::string libraryFile;  // as the mtllib statement gave it (relative to the OBJ)
     std::string libraryName;  // as the lookup named it (for messages)
     MtlTexture texture;
 };
 
-// Every material of every library the file names, in order; their diffuseTexture indexes `textures`.
+// Every material of every library the file names, in order; their *Texture fields index `textures`.
 // Missing or unreadable libraries are warned about (and their materials will be undefined, so faces
 // using them fall back to the default).
 std::vector<Material> loadLibraries(const ObjScan& scan, const std::string& name, const MtlLookup& lookup,
@@ -67,7 +73,8 @@ std::vector<Material> loadLibraries(const ObjScan& scan, const std::string& name
             std::vector<MtlTexture> maps;
             std::vector<Material> more = parseMtl(library->bytes, library->name, &maps);
             for (Material& m : more)
-                if (m.diffuseTexture >= 0) m.diffuseTexture += static_cast<int32_t>(textures->size());
+                for (int32_t* index : textureSlots(m))
+                    if (*index >= 0) *index += static_cast<int32_t>(textures->size());
             for (const MtlTexture& map : maps) textures->push_back({file, library->name, map});
             materials.insert(materials.end(), more.begin(), more.end());
         }
@@ -123,58 +130,181 @@ std::vector<bool> usedMaterials(const Scene& scene) {
     return used;
 }
 
-// Loads the textures of the materials some triangle uses (each file once) into scene->textures and
-// points the materials at them; unused materials lose theirs, so that an unused broken map costs nothing.
-// A texture file is relative to its MTL library. A texture that is missing or not an image gets one
-// warning naming the library, line, material and file, and the magenta and black checker in its place
-// (image/rgba8_image.h); the materials showing it get Kd 1, so the checker shows as it is whatever their
-// Kd was (a missing texture's colour is lost anyway, and a tinted checker is harder to recognise).
+// The path of a texture file relative to the OBJ (or absolute), from its name relative to the library.
+std::string texturePath(const TextureRef& ref, const std::string& file) {
+    fs::path f(file);
+    return (f.is_absolute() ? f : fs::path(ref.libraryFile).parent_path() / f).lexically_normal().string();
+}
+
+// The image in `file` (relative to ref's library), named by `statement` and `line` in errors: throws
+// fp::Error naming the library, line and file if it is missing or not an image.
+Rgba8Image loadMapFile(const TextureRef& ref, const std::string& file, const std::string& statement, int line,
+                       const MtlLookup& lookup) {
+    std::string where = ref.libraryName + ":" + std::to_string(line) + ": " + statement + " ";
+    std::optional<LibraryFile> bytes = lookup(texturePath(ref, file));
+    if (!bytes) {
+        fs::path f(file);
+        fs::path lookedFor = f.is_absolute() ? f : fs::path(ref.libraryName).parent_path() / f;
+        throw Error(where + "texture '" + file + "' not found or unreadable (looked for " +
+                    lookedFor.string() + ")");
+    }
+    try {
+        return decodeRgba8(bytes->bytes, bytes->name);
+    } catch (const Error& e) {
+        throw Error(where + e.what());
+    }
+}
+
+// One channel of an 8-bit texel as a scalar map reads it (mtl.h: -imfchan): r, g, b, m (the alpha), or
+// the luminance (Rec. 709 weights on the codes, rounded: a grey file's value).
+uint8_t channelCode(const uint8_t* texel, char channel) {
+    switch (channel) {
+        case 'r':
+            return texel[0];
+        case 'g':
+            return texel[1];
+        case 'b':
+            return texel[2];
+        case 'm':
+            return texel[3];
+        default:
+            return uint8_t(std::lround(0.2126 * texel[0] + 0.7152 * texel[1] + 0.0722 * texel[2]));
+    }
+}
+
+bool isGreyscale(const Rgba8Image& image) {
+    if (image.fileChannels <= 2) return true;
+    for (size_t i = 0; i + 3 < image.texels.size(); i += 4)
+        if (image.texels[i] != image.texels[i + 1] || image.texels[i] != image.texels[i + 2]) return false;
+    return true;
+}
+
+// map_Pr and map_Pm combined into one metallic-roughness texture: G from the first (255 without), B
+// from the second (255 without), at the larger of their sizes (nearest texel when they differ).
+Rgba8Image metallicRoughnessTexture(const Rgba8Image* roughness, char roughnessChannel,
+                                    const Rgba8Image* metallic, char metallicChannel) {
+    Rgba8Image out;
+    for (const Rgba8Image* image : {roughness, metallic})
+        if (image) {
+            out.width = std::max(out.width, image->width);
+            out.height = std::max(out.height, image->height);
+        }
+    out.texels.assign(size_t(out.width) * size_t(out.height) * 4, 255);
+    auto code = [&](const Rgba8Image* image, char channel, int x, int y) -> uint8_t {
+        if (!image) return 255;
+        int sx = int(int64_t(x) * image->width / out.width),
+            sy = int(int64_t(y) * image->height / out.height);
+        return channelCode(&image->texels[(size_t(sy) * size_t(image->width) + size_t(sx)) * 4], channel);
+    };
+    for (int y = 0; y < out.height; ++y)
+        for (int x = 0; x < out.width; ++x) {
+            uint8_t* texel = &out.texels[(size_t(y) * size_t(out.width) + size_t(x)) * 4];
+            texel[0] = 0;
+            texel[1] = code(roughness, roughnessChannel, x, y);
+            texel[2] = code(metallic, metallicChannel, x, y);
+        }
+    return out;
+}
+
+// Loads the textures of the materials some triangle uses (each file, as each kind of map, once) into
+// scene->textures and points the materials at them; unused materials lose theirs, so that an unused
+// broken map costs nothing. Texture files are relative to their MTL library. A texture that is missing
+// or not an image gets one warning naming the library, line, material and file; a colour map (map_Kd,
+// map_Ke, map_Ks) then shows the magenta and black checker (image/rgba8_image.h), with Kd 1 for map_Kd
+// so that it shows as it is whatever Kd was (a missing texture's colour is lost anyway, and a tinted
+// checker is harder to recognise), while any other map is ignored (a checker of normals, roughness or
+// coverage would not look like one). A map_Bump or bump of a greyscale file is a height map: warned
+// about and dropped.
 void loadTextures(const std::vector<TextureRef>& refs, const MtlLookup& lookup, Scene* scene) {
     std::vector<bool> used = usedMaterials(*scene);
-    std::map<std::string, int32_t> loaded;  // by path relative to the OBJ
+    std::map<std::string, int32_t> loaded;  // by kind, paths relative to the OBJ and channels; -1: refused
     std::set<int32_t> checkers;             // scene->textures that stand in for a file
     for (size_t m = 0; m < scene->materials.size(); ++m) {
-        Material& material = scene->materials[m];
-        int32_t& index = material.diffuseTexture;
-        if (index < 0) continue;
-        if (!used[m]) {
-            index = -1;
-            continue;
-        }
-        const TextureRef& ref = refs[static_cast<size_t>(index)];
-        fs::path file(ref.texture.file);
-        std::string path = (file.is_absolute() ? file : fs::path(ref.libraryFile).parent_path() / file)
-                               .lexically_normal()
-                               .string();
-        auto [it, added] = loaded.emplace(path, static_cast<int32_t>(scene->textures.size()));
-        index = it->second;
-        if (!added) continue;
-        std::string problem;
-        std::optional<LibraryFile> bytes = lookup(path);
-        if (!bytes) {
-            fs::path lookedFor = file.is_absolute() ? file : fs::path(ref.libraryName).parent_path() / file;
-            problem = "texture '" + ref.texture.file + "' not found or unreadable (looked for " +
-                      lookedFor.string() + ")";
-        } else {
-            try {
-                scene->textures.push_back({bytes->name, decodeRgba8(bytes->bytes, bytes->name)});
+        for (int32_t* slot : textureSlots(scene->materials[m])) {
+            int32_t& index = *slot;
+            if (index < 0) continue;
+            if (!used[m]) {
+                index = -1;
                 continue;
-            } catch (const Error& e) {
-                problem = e.what();
             }
+            const TextureRef& ref = refs[static_cast<size_t>(index)];
+            const MtlTexture& t = ref.texture;
+            std::string key = std::to_string(int(t.kind)) + "|" + std::string(1, t.channel) + "|" +
+                              (t.file.empty() ? "" : texturePath(ref, t.file)) + "|" +
+                              std::string(1, t.metallicChannel) + "|" +
+                              (t.metallicFile.empty() ? "" : texturePath(ref, t.metallicFile));
+            auto [it, added] = loaded.emplace(key, static_cast<int32_t>(scene->textures.size()));
+            index = it->second;
+            if (!added) continue;
+            Texture texture;
+            texture.name = t.file.empty() ? t.metallicFile : t.file;
+            try {
+                switch (t.kind) {
+                    case MtlTextureKind::Color:
+                        texture.image = loadMapFile(ref, t.file, t.statement, t.line, lookup);
+                        break;
+                    case MtlTextureKind::Normal:
+                        texture.image = loadMapFile(ref, t.file, t.statement, t.line, lookup);
+                        if (isGreyscale(texture.image)) {
+                            warn(ref.libraryName + ":" + std::to_string(t.line) + ": " + t.statement + " '" +
+                                 t.file +
+                                 "' is a greyscale image, a height (bump) map: height maps are not supported "
+                                 "(only tangent-space normal maps), ignored");
+                            it->second = index = -1;
+                            continue;
+                        }
+                        break;
+                    case MtlTextureKind::Alpha: {
+                        texture.image = loadMapFile(ref, t.file, t.statement, t.line, lookup);
+                        // Without -imfchan: the file's alpha channel if it has one, else its luminance.
+                        const bool hasAlpha =
+                            texture.image.fileChannels == 2 || texture.image.fileChannels == 4;
+                        const char channel = t.channel ? t.channel : hasAlpha ? 'm' : 'l';
+                        for (size_t i = 0; i + 3 < texture.image.texels.size(); i += 4)
+                            texture.image.texels[i + 3] = channelCode(&texture.image.texels[i], channel);
+                        break;
+                    }
+                    case MtlTextureKind::MetallicRoughness: {
+                        std::optional<Rgba8Image> roughness, metallic;
+                        if (!t.file.empty()) roughness = loadMapFile(ref, t.file, "map_Pr", t.line, lookup);
+                        if (!t.metallicFile.empty())
+                            metallic = loadMapFile(ref, t.metallicFile, "map_Pm", t.metallicLine, lookup);
+                        if (roughness && metallic &&
+                            (roughness->width != metallic->width || roughness->height != metallic->height))
+                            warn(ref.libraryName + ":" + std::to_string(t.metallicLine) + ": map_Pm '" +
+                                 t.metallicFile + "' and map_Pr '" + t.file +
+                                 "' differ in size; combined at the larger size (nearest texels)");
+                        texture.image =
+                            metallicRoughnessTexture(roughness ? &*roughness : nullptr, t.channel,
+                                                     metallic ? &*metallic : nullptr, t.metallicChannel);
+                        if (roughness && metallic) texture.name = t.file + " + " + t.metallicFile;
+                        break;
+                    }
+                }
+            } catch (const Error& e) {
+                // loadMapFile's message starts "library:line: statement"; the material goes after the line.
+                std::string what = e.what();
+                size_t line = what.find(": ", ref.libraryName.size());
+                what.insert(line == std::string::npos ? 0 : line + 2,
+                            "material '" + scene->materials[m].name + "': ");
+                if (t.kind != MtlTextureKind::Color) {
+                    warn(what + "; ignoring the map");
+                    it->second = index = -1;
+                    continue;
+                }
+                warn(what + "; showing a magenta and black checker instead");
+                checkers.insert(index);
+                texture = {"missing texture " + texturePath(ref, t.file), missingTextureChecker()};
+            }
+            scene->textures.push_back(std::move(texture));
         }
-        warn(ref.libraryName + ":" + std::to_string(ref.texture.line) + ": material '" + material.name +
-             "': map_Kd " + problem + "; showing a magenta and black checker instead");
-        checkers.insert(index);
-        scene->textures.push_back({"missing texture " + path, missingTextureChecker()});
     }
     for (Material& material : scene->materials)
         if (checkers.count(material.diffuseTexture)) material.diffuse = glm::vec3(1.0f);
 }
 
 // Triangles without texture coordinates cannot look a texture up: they get a copy of their material
-// without it, whose Kd is multiplied by the texture's mean linear colour (so the surface keeps the
-// texture's average albedo). One warning counts them.
+// without its maps (withoutMaps). One warning counts them.
 void untextureFacesWithoutTexcoords(const std::vector<int>& noTexcoordLine, const std::string& name,
                                     Scene* scene) {
     std::map<uint32_t, uint32_t> copyOf;
@@ -183,14 +313,9 @@ void untextureFacesWithoutTexcoords(const std::vector<int>& noTexcoordLine, cons
     for (size_t i = 0; i < scene->triangles.size(); ++i) {
         Triangle& t = scene->triangles[i];
         int line = noTexcoordLine[i];
-        if (line == 0 || scene->materials[t.material].diffuseTexture < 0) continue;
+        if (line == 0 || !scene->materials[t.material].hasTextures()) continue;
         auto [it, added] = copyOf.emplace(t.material, static_cast<uint32_t>(scene->materials.size()));
-        if (added) {
-            Material copy = scene->materials[t.material];
-            copy.diffuse *= meanLinearColor(scene->textures[static_cast<size_t>(copy.diffuseTexture)].image);
-            copy.diffuseTexture = -1;
-            scene->materials.push_back(copy);
-        }
+        if (added) scene->materials.push_back(withoutMaps(scene->materials[t.material], scene->textures));
         t.material = it->second;
         if (line != lastLine) faces.add(line);  // a polygon's triangles count once
         lastLine = line;
@@ -198,7 +323,8 @@ void untextureFacesWithoutTexcoords(const std::vector<int>& noTexcoordLine, cons
     // A material left to no triangle needs no texture (the renderer then compiles no lookups).
     std::vector<bool> used = usedMaterials(*scene);
     for (size_t m = 0; m < used.size(); ++m)
-        if (!used[m]) scene->materials[m].diffuseTexture = -1;
+        if (!used[m])
+            for (int32_t* slot : textureSlots(scene->materials[m])) *slot = -1;
     faces.report(name, "gave", "face",
                  "of textured materials without texture coordinates (vt) Kd times the texture's mean colour");
 }

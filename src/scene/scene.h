@@ -19,10 +19,19 @@ namespace fp {
 // The surface models. Each has its own file of formulas in glsl/common/bsdf.glsl.
 enum class MaterialType : uint32_t {
     Diffuse = 0,     // Lambertian: Kd
-    Conductor = 1,   // GGX microfacet metal: F0 = Ks (or Kd when metallic), roughness Pr
+    Conductor = 1,   // GGX microfacet metal: F0 = Ks, roughness Pr
     Plastic = 2,     // GGX dielectric coat (ior Ni) over a Lambertian base Kd
     Dielectric = 3,  // glass: exact Fresnel, refraction (ior Ni, tint Tf), smooth or GGX-rough (Pr)
+    // glTF 2.0's metallic-roughness model (MTL Pm): metallic * Conductor(F0 = base colour) +
+    // (1 - metallic) * Plastic(white coat of index ior over a Lambertian base colour), one roughness.
+    MetallicRoughness = 4,
 };
+constexpr uint32_t kMaterialTypeCount = 5;
+
+// How a material's alpha (coverage) is used, as glTF 2.0's material.alphaMode: OPAQUE ignores it, MASK
+// shows the surface where alpha >= alphaCutoff and nothing elsewhere, BLEND shows it with probability
+// alpha (stochastic opacity: rays pass through the rest, camera, bounce and shadow rays alike).
+enum class AlphaMode : uint32_t { Opaque = 0, Mask = 1, Blend = 2 };
 
 struct Material {
     std::string name = "default";
@@ -36,10 +45,53 @@ struct Material {
     // MTL Vd (our extension): the Abbe number of a dispersive glass, 0 for none. Ni is then the index at
     // the Fraunhofer d line (587.6 nm) and the index follows Cauchy's equation n = A + B / lambda^2.
     float abbeNumber = 0.0f;
-    // MTL map_Kd: index into Scene::textures, or -1. The texture's linear colour at the hit point
-    // multiplies `diffuse` wherever a model uses it (Lambertian reflectance, the plastic's base).
+    // MetallicRoughness: glTF metallicFactor, MTL Pm, in [0, 1]. `diffuse` is the base colour
+    // (glTF baseColorFactor.rgb), `roughness` glTF's roughnessFactor and `ior` the coat's index (1.5).
+    float metallic = 0.0f;
+
+    // Coverage, for every type (glTF baseColorFactor.a and alphaMode/alphaCutoff; MTL d and map_d).
+    float alpha = 1.0f;  // in [0, 1]
+    AlphaMode alphaMode = AlphaMode::Opaque;
+    float alphaCutoff = 0.5f;  // MASK only
+    // glTF doubleSided. False: the camera does not see the back face (glTF's back-face culling; every
+    // other ray meets both sides: glsl/common/opacity.glsl); OBJ surfaces are double-sided. Emission is
+    // one-sided (the front face) either way.
+    bool doubleSided = true;
+
+    // Texture maps: indices into Scene::textures, or -1. Each multiplies the factor it belongs to
+    // (glTF's rule, and the MTL spec's for map_Kd), bilinear, repeating, at the triangle's uv.
+    // Colour maps (diffuse, emission, specular) are sRGB-encoded; the others are linear.
+    // diffuseTexture: MTL map_Kd, glTF baseColorTexture (rgb): multiplies `diffuse` wherever a model
+    // uses it (Lambertian reflectance, the plastic's base, the metallic-roughness base colour).
     int32_t diffuseTexture = -1;
+    // glTF metallicRoughnessTexture: roughness *= G, metallic *= B (MTL map_Pr / map_Pm are combined
+    // into one such texture). Roughness applies to every type that has one.
+    int32_t metallicRoughnessTexture = -1;
+    int32_t emissionTexture = -1;  // glTF emissiveTexture, MTL map_Ke: multiplies `emission`
+    // glTF normalTexture, MTL norm/map_Bump (a normal map): a tangent-space normal in rgb * 2 - 1, x and
+    // y scaled by normalScale (glTF normalTexture.scale), relative to the triangle's tangent frame
+    // (Scene::tangents, or computed from the uvs).
+    int32_t normalTexture = -1;
+    float normalScale = 1.0f;
+    // Its A channel (linear) multiplies `alpha`: glTF points it at baseColorTexture, MTL map_d gets a
+    // texture whose A holds the map's coverage.
+    int32_t alphaTexture = -1;
+    int32_t specularTexture = -1;  // MTL map_Ks: multiplies `specular` (Conductor F0, Plastic coat tint)
+
     bool isEmissive() const { return emission.x > 0.0f || emission.y > 0.0f || emission.z > 0.0f; }
+    bool hasAlpha() const { return alphaMode != AlphaMode::Opaque; }
+    // Whether traversal must look at this material's hits (alpha or back-face culling).
+    bool needsOpacityTest() const { return hasAlpha() || !doubleSided; }
+    // Every texture index it holds, -1 for the unused ones.
+    std::array<int32_t, 6> textureIndices() const {
+        return {diffuseTexture, metallicRoughnessTexture, emissionTexture, normalTexture,
+                alphaTexture,   specularTexture};
+    }
+    bool hasTextures() const {
+        for (int32_t t : textureIndices())
+            if (t >= 0) return true;
+        return false;
+    }
 };
 
 struct Triangle {
@@ -157,9 +209,10 @@ struct PunctualLight {
     float outerConeAngle = 0.78539816f;
 };
 
-// A colour texture (MTL map_Kd). Texels are kept as the file stores them, 8-bit sRGB-encoded (what
-// colour maps hold); the renderer decodes them with the exact sRGB curve before filtering, so nothing is
-// lost to an early conversion and the GPU copy is a quarter of a float one.
+// A texture map. Texels are kept as the file stores them, 8-bit codes; the renderer decodes colour maps
+// (sRGB-encoded) with the exact sRGB curve before filtering, and reads the others (roughness, normals,
+// coverage) as code / 255, so nothing is lost to an early conversion and the GPU copy is a quarter of a
+// float one.
 struct Texture {
     std::string name;  // the file it came from, for messages
     Rgba8Image image;
@@ -168,8 +221,12 @@ struct Texture {
 struct Scene {
     std::vector<Triangle> triangles;
     std::vector<Material> materials;  // never empty once loaded
-    std::vector<Texture> textures;    // what Material::diffuseTexture indexes
-    std::optional<Camera> camera;     // from a scene file; absent for a bare OBJ
+    std::vector<Texture> textures;    // what Material's *Texture fields index
+    // Optional per-vertex tangents of normal-mapped triangles, one array per triangle (empty: computed
+    // from positions and uvs when packing): xyz the tangent (the direction of increasing u), w = +-1
+    // the bitangent's sign, bitangent = w cross(n, tangent), as glTF's TANGENT attribute.
+    std::vector<std::array<glm::vec4, 3>> tangents;
+    std::optional<Camera> camera;  // from a scene file; absent for a bare OBJ
     RenderDefaults defaults;
     Environment environment;
     std::vector<PunctualLight> punctualLights;  // from a scene file's "lights" (scene/punctual_light.h)

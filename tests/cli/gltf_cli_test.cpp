@@ -126,13 +126,15 @@ std::string objVec(const char* tag, glm::vec3 v) {
 }
 
 TEST_F(GltfCli, CornellLikeBoxRendersTheSameImageAsTheEquivalentObj) {
+    // Both formats give the one metallic-roughness model: metallic 0, roughness 1 (glTF's default).
     const char* mtl =
-        "newmtl white\nKd 0.73 0.73 0.73\n"
-        "newmtl red\nKd 0.63 0.065 0.05\n"
-        "newmtl green\nKd 0.14 0.45 0.091\n"
-        "newmtl lamp\nKd 0 0 0\nKe 16 12 4\n";
+        "newmtl white\nKd 0.73 0.73 0.73\nPm 0\nPr 1\n"
+        "newmtl red\nKd 0.63 0.065 0.05\nPm 0\nPr 1\n"
+        "newmtl green\nKd 0.14 0.45 0.091\nPm 0\nPr 1\n"
+        "newmtl lamp\nKd 0 0 0\nKe 16 12 4\nPm 0\nPr 1\n";
     auto gltfMaterial = [](double r, double g, double b) {
-        return json{{"pbrMetallicRoughness", {{"baseColorFactor", {r, g, b, 1.0}}, {"metallicFactor", 0.0}}}};
+        return json{{"pbrMetallicRoughness", {{"baseColorFactor", {r, g, b, 1.0}}, {"metallicFactor", 0.0}}},
+                    {"doubleSided", true}};  // as OBJ faces are
     };
 
     // The OBJ: the same triangles in the same order (walls, block, lamp), each quad as (0 1 2) (0 2 3).

@@ -222,9 +222,11 @@ TEST(PackScene, TexcoordsInLeafOrderAndTheTextureTable) {
         for (size_t i = 0; i < s.textures[size_t(t)].image.texels.size(); ++i)
             EXPECT_EQ(p.textureTexels[4 * size_t(p.textureTable[size_t(t)].x) + i],
                       s.textures[size_t(t)].image.texels[i]);
-    // Each material's fifth texel names its texture.
+    // Each material's maps texel names its texture first.
     for (size_t m = 0; m < 3; ++m)
-        EXPECT_EQ(p.materials[m * layout::kMaterialTexels + 4].x, float(s.materials[m].diffuseTexture)) << m;
+        EXPECT_EQ(p.materials[m * layout::kMaterialTexels + layout::kMaterialMapsTexel].x,
+                  float(s.materials[m].diffuseTexture))
+            << m;
     EXPECT_EQ(p.textureBytes(), 8 * p.texcoords.size() + p.textureTexels.size() + 16 * 2);
     EXPECT_EQ(p.bytes(), packScene(randomScene(200, 5), bvh).bytes() + p.textureBytes());
 }
@@ -237,6 +239,157 @@ TEST(PackScene, UntexturedScenesAllocateNoTextureData) {
     EXPECT_TRUE(p.texcoords.empty());
     EXPECT_TRUE(p.textureTexels.empty());
     EXPECT_EQ(p.textureBytes(), 0u);
+}
+
+// Every field of a material lands in the texel and channel layout.h documents, the triangles carry
+// their material's alpha and single-sided flags, and the packed scene says which kinds of map and
+// whether opacity tests are needed (the renderer's SURFACE_MAPS and SURFACE_OPACITY).
+TEST(PackScene, MaterialTexelsFollowTheLayout) {
+    Scene s = texturedScene(30);  // two textures, materials 0 and 2 textured by map_Kd
+    Material& m = s.materials[2];
+    m.type = MaterialType::MetallicRoughness;
+    m.diffuse = glm::vec3(0.1f, 0.2f, 0.3f);
+    m.emission = glm::vec3(4.0f, 5.0f, 6.0f);
+    m.specular = glm::vec3(0.7f, 0.8f, 0.9f);
+    m.transmission = glm::vec3(0.4f);
+    m.roughness = 0.25f;
+    m.ior = 1.4f;
+    m.metallic = 0.75f;
+    m.alpha = 0.5f;
+    m.alphaMode = AlphaMode::Mask;
+    m.alphaCutoff = 0.3f;
+    m.doubleSided = false;
+    m.normalScale = 0.6f;
+    m.metallicRoughnessTexture = 1;
+    m.emissionTexture = 0;
+    m.normalTexture = 1;
+    m.alphaTexture = 0;
+    m.specularTexture = 1;
+    m.diffuseTexture = -1;
+    PackedScene p = packScene(s, buildFor(s));
+    ASSERT_EQ(p.materials.size(), 3u * layout::kMaterialTexels);
+    const glm::vec4* t = &p.materials[2 * layout::kMaterialTexels];
+    EXPECT_EQ(t[0], glm::vec4(0.1f, 0.2f, 0.3f, 4.0f));  // type 4: MetallicRoughness
+    EXPECT_EQ(t[1], glm::vec4(4.0f, 5.0f, 6.0f, 0.25f));
+    EXPECT_EQ(t[2], glm::vec4(0.7f, 0.8f, 0.9f, 1.4f));
+    EXPECT_EQ(t[3], glm::vec4(0.4f, 0.4f, 0.4f, 0.0f));
+    EXPECT_EQ(t[layout::kMaterialMapsTexel], glm::vec4(-1.0f, 1.0f, 0.0f, 1.0f));
+    EXPECT_EQ(t[layout::kMaterialAlphaTexel], glm::vec4(0.0f, 0.5f, 0.3f, 1.0f));  // mode 1: Mask
+    EXPECT_EQ(t[layout::kMaterialExtraTexel], glm::vec4(0.75f, 0.6f, 1.0f, 0.0f));
+    EXPECT_EQ(p.surfaceMaps, layout::kDiffuseMapBit | layout::kRoughnessMapBit | layout::kEmissionMapBit |
+                                 layout::kNormalMapBit | layout::kAlphaMapBit | layout::kSpecularMapBit);
+    EXPECT_TRUE(p.opacity);
+    Bvh bvh = buildFor(s);
+    p = packScene(s, bvh);
+    for (size_t i = 0; i < s.triangles.size(); ++i) {
+        const float flags = p.triangles[i * layout::kTriangleTexels + 2].w;
+        const bool third = s.triangles[bvh.primIndex[i]].material == 2;
+        EXPECT_EQ(flags, third ? float(layout::kTriangleAlphaFlag + layout::kTriangleSingleSidedFlag) : 0.0f);
+    }
+    // Normal maps bring the tangents: three per triangle.
+    EXPECT_EQ(p.tangents.size(), s.triangles.size() * layout::kTangentTexels);
+
+    // Without the extras: no opacity, no tangents, and a plain material's extra texels are the defaults.
+    m = Material{};
+    p = packScene(s, buildFor(s));
+    EXPECT_FALSE(p.opacity);
+    EXPECT_EQ(p.surfaceMaps, layout::kDiffuseMapBit);
+    EXPECT_TRUE(p.tangents.empty());
+    t = &p.materials[2 * layout::kMaterialTexels];
+    EXPECT_EQ(t[layout::kMaterialMapsTexel], glm::vec4(-1.0f));
+    EXPECT_EQ(t[layout::kMaterialAlphaTexel], glm::vec4(-1.0f, 1.0f, 0.5f, 0.0f));
+    EXPECT_EQ(t[layout::kMaterialExtraTexel], glm::vec4(0.0f, 1.0f, -1.0f, 0.0f));
+    for (size_t i = 0; i < s.triangles.size(); ++i)
+        EXPECT_EQ(p.triangles[i * layout::kTriangleTexels + 2].w, 0.0f);
+}
+
+// A metallic-roughness material at its ends without maps that change that is packed as the model it
+// equals (shaderMaterial), every other material as it is.
+TEST(PackScene, MetallicRoughnessAtItsEndsIsPackedAsTheConductorOrThePlastic) {
+    Material metal;
+    metal.type = MaterialType::MetallicRoughness;
+    metal.diffuse = glm::vec3(0.9f, 0.6f, 0.3f);
+    metal.metallic = 1.0f;
+    metal.roughness = 0.3f;
+    metal.normalTexture = 0;  // maps that do not change the model do not matter
+    Material m = shaderMaterial(metal);
+    EXPECT_EQ(m.type, MaterialType::Conductor);
+    EXPECT_EQ(m.specular, metal.diffuse) << "F0 = the base colour";
+    EXPECT_EQ(m.roughness, 0.3f);
+    EXPECT_EQ(m.normalTexture, 0);
+    Material dielectric = metal;
+    dielectric.metallic = 0.0f;
+    dielectric.diffuseTexture = 1;
+    m = shaderMaterial(dielectric);
+    EXPECT_EQ(m.type, MaterialType::Plastic);
+    EXPECT_EQ(m.specular, glm::vec3(1.0f)) << "a white coat";
+    EXPECT_EQ(m.diffuse, metal.diffuse);
+    EXPECT_EQ(m.diffuseTexture, 1) << "the base colour map multiplies the plastic's Kd as it did the base";
+    // Stays the blend: in between, a metallic-roughness map, a metal's base colour map.
+    Material between = metal, mapped = metal, texturedMetal = metal;
+    between.metallic = 0.5f;
+    mapped.metallicRoughnessTexture = 2;
+    texturedMetal.diffuseTexture = 1;
+    for (const Material& other : {between, mapped, texturedMetal})
+        EXPECT_EQ(shaderMaterial(other).type, MaterialType::MetallicRoughness);
+    // And in the packed scene.
+    Scene s = randomScene(10, 3);
+    s.materials[0] = metal;
+    s.materials[0].normalTexture = -1;
+    PackedScene p = packScene(s, buildFor(s));
+    EXPECT_EQ(p.materials[0], glm::vec4(metal.diffuse, float(MaterialType::Conductor)));
+    EXPECT_EQ(p.materials[2], glm::vec4(metal.diffuse, 1.5f));  // Ks = F0, ior
+}
+
+// A triangle's tangent is dp/du in its plane and its sign says where dp/dv lies (Lengyel 2001): checked
+// on a triangle whose uvs are a rotated, mirrored and scaled copy of its positions, where both
+// derivatives are known exactly.
+TEST(PackScene, TangentsFromPositionsAndUvs) {
+    Triangle t;
+    t.p = {glm::vec3(0.0f), glm::vec3(2.0f, 0.0f, 0.0f), glm::vec3(0.0f, 0.0f, -3.0f)};
+    t.n = {glm::vec3(0.0f, 1.0f, 0.0f), glm::vec3(0.0f, 1.0f, 0.0f), glm::vec3(0.0f, 1.0f, 0.0f)};
+    // u grows along +x (2 units per unit of u), v along -z: dp/du = (2, 0, 0), dp/dv = (0, 0, -3).
+    t.uv = {glm::vec2(0.0f), glm::vec2(1.0f, 0.0f), glm::vec2(0.0f, 1.0f)};
+    glm::vec4 tangent = triangleTangent(t);
+    EXPECT_NEAR(glm::distance(glm::vec3(tangent), glm::vec3(1.0f, 0.0f, 0.0f)), 0.0f, 1e-6f);
+    // cross(n, t) = (0, 1, 0) x (1, 0, 0) = (0, 0, -1): along dp/dv, so the sign is +1.
+    EXPECT_EQ(tangent.w, 1.0f);
+    // Mirror v: dp/dv = (0, 0, 3) now points against cross(n, t).
+    t.uv = {glm::vec2(0.0f, 1.0f), glm::vec2(1.0f, 1.0f), glm::vec2(0.0f, 0.0f)};
+    tangent = triangleTangent(t);
+    EXPECT_NEAR(glm::distance(glm::vec3(tangent), glm::vec3(1.0f, 0.0f, 0.0f)), 0.0f, 1e-6f);
+    EXPECT_EQ(tangent.w, -1.0f);
+    // u along the triangle's second edge, rotated in the plane: dp/du = (0, 0, -3) / 1.
+    t.uv = {glm::vec2(0.0f), glm::vec2(0.0f, 1.0f), glm::vec2(1.0f, 0.0f)};
+    tangent = triangleTangent(t);
+    EXPECT_NEAR(glm::distance(glm::vec3(tangent), glm::vec3(0.0f, 0.0f, -1.0f)), 0.0f, 1e-6f);
+    // Degenerate uvs still give a unit tangent in the plane.
+    t.uv = {glm::vec2(0.5f), glm::vec2(0.5f), glm::vec2(0.5f)};
+    tangent = triangleTangent(t);
+    EXPECT_NEAR(glm::length(glm::vec3(tangent)), 1.0f, 1e-6f);
+    EXPECT_NEAR(tangent.y, 0.0f, 1e-6f);
+}
+
+// Tangents a loader gives (glTF's TANGENT) are packed as given, in leaf order; without them each
+// triangle's own is repeated at its three vertices.
+TEST(PackScene, GivenTangentsArePackedInLeafOrder) {
+    Scene s = texturedScene(40);
+    s.materials[0].normalTexture = 0;
+    Bvh bvh = buildFor(s);
+    PackedScene p = packScene(s, bvh);
+    ASSERT_EQ(p.tangents.size(), 40u * layout::kTangentTexels);
+    for (size_t i = 0; i < 40; ++i)
+        for (int k = 0; k < 3; ++k)
+            EXPECT_EQ(p.tangents[i * 3 + size_t(k)], triangleTangent(s.triangles[bvh.primIndex[i]]));
+    for (size_t i = 0; i < 40; ++i)
+        s.tangents.push_back({glm::vec4(float(i), 0.0f, 0.0f, 1.0f), glm::vec4(0.0f, float(i), 0.0f, -1.0f),
+                              glm::vec4(0.0f, 0.0f, float(i), 1.0f)});
+    p = packScene(s, bvh);
+    for (size_t i = 0; i < 40; ++i)
+        for (int k = 0; k < 3; ++k)
+            EXPECT_EQ(p.tangents[i * 3 + size_t(k)], s.tangents[bvh.primIndex[i]][size_t(k)]);
+    s.tangents.pop_back();
+    EXPECT_THROW(packScene(s, bvh), Error);
 }
 
 TEST(PackScene, MismatchedBvhIsRejected) {

@@ -53,6 +53,9 @@ TEST(BsdfChiSquare, Plastic) {
 TEST(BsdfChiSquare, Dielectric) {
     checkModel(MaterialType::Dielectric);
 }
+TEST(BsdfChiSquare, MetallicRoughness) {
+    checkModel(MaterialType::MetallicRoughness);
+}
 
 // The p-values come from our own incomplete gamma function: check it against closed forms. With k
 // degrees of freedom, P(X >= x) is exp(-x/2) for k = 2, exp(-x/2) (1 + x/2) for k = 4, and

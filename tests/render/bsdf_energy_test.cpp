@@ -51,6 +51,11 @@ TEST(BsdfEnergy, AlbedoIsAtMostOne) {
     Material whitePlastic = makeMaterial(MaterialType::Plastic, 0.6f);
     whitePlastic.diffuse = glm::vec3(1.0f);  // the worst case: a white base under a white coat
     cases.push_back({"plastic r=0.6 Kd=1", whitePlastic, 1.5f});
+    for (float metallic : {0.0f, 0.5f, 1.0f}) {  // white metallic-roughness: the worst case again
+        Material white = makeMetallicRoughness(metallic, 0.5f);
+        white.diffuse = glm::vec3(1.0f);
+        cases.push_back({"metallic-roughness m=" + std::to_string(metallic) + " r=0.5 base=1", white, 1.5f});
+    }
     std::vector<float> angles = incidentAngles();
     angles.push_back(89.0f);
     for (size_t c = 0; c < cases.size(); ++c) {
@@ -111,6 +116,65 @@ TEST(BsdfEnergy, GgxConductorAlbedoMatchesNumericalIntegration) {
     // less than the shader estimate's standard errors (5e-5 and more).
     EXPECT_NEAR(ggxConductorAlbedo(1.0, 0.04, 1000), reference[0][0], 1e-5);
     EXPECT_NEAR(ggxConductorAlbedo(double(incidentDirection(80.0f).z), 0.04, 1000), reference[0][2], 1e-5);
+}
+
+// What is analytic about the metallic-roughness model's albedo E(mu_o) with a white base colour (1):
+// - metal (metallic 1), smooth: Schlick's Fresnel from F0 = 1 is 1 at every angle, so every sample
+//   reflects with weight exactly 1: E = 1, a white non-absorbing mirror;
+// - metal, rough: the GGX conductor's single-scattering albedo, below 1 by what masking-shadowing
+//   removes (numerical integration of the formulas here: ggxConductorAlbedo);
+// - dielectric (metallic 0), smooth: the coat reflects F(mu_o) (exact Fresnel, index 1.5), and the base
+//   (albedo 1) returns (1 - F(mu_o)) times the cosine-weighted mean of 1 - F(mu_i) over the hemisphere,
+//   1 - 2 int_0^1 F(mu) mu dmu, a one-dimensional integral: E = F(mu_o) + (1 - F(mu_o))(1 - 2 int F mu);
+//   below 1 (light the coat reflects back inside is lost: the model has no internal reflection);
+// - in between, the blend of the two: E = metallic E_metal + (1 - metallic) E_dielectric.
+// The shader's mean weights must match these within five standard errors (the mirror case exactly).
+TEST(BsdfEnergy, MetallicRoughnessAlbedoWhereItIsAnalytic) {
+    BsdfProbe& probe = bsdfProbe();
+    const double ior = 1.5;
+    // 2 int_0^1 F(mu) mu dmu by the midpoint rule (F is smooth; 20000 points are exact to ~1e-9).
+    double internal = 0.0;
+    const int n = 20000;
+    for (int k = 0; k < n; ++k) {
+        double mu = (k + 0.5) / n;
+        internal += 2.0 * fresnelDielectricReference(mu, ior) * mu / n;
+    }
+    auto dielectric = [&](double mu) {
+        double f = fresnelDielectricReference(mu, ior);
+        return f + (1.0 - f) * (1.0 - internal);
+    };
+    for (size_t a = 0; a < incidentAngles().size(); ++a) {
+        const glm::vec3 wo = incidentDirection(incidentAngles()[a]);
+        const double mu = double(wo.z);
+        struct Case {
+            float metallic, roughness;
+            double expected;
+        };
+        const Case cases[] = {{1.0f, 0.0f, 1.0},
+                              {1.0f, 0.5f, ggxConductorAlbedo(mu, 0.25)},
+                              {0.0f, 0.0f, dielectric(mu)},
+                              {0.5f, 0.0f, 0.5 * 1.0 + 0.5 * dielectric(mu)}};
+        for (const Case& c : cases) {
+            Material m = makeMetallicRoughness(c.metallic, c.roughness);
+            m.diffuse = glm::vec3(1.0f);
+            probe.setMaterial(m);
+            Albedo e = albedo(
+                probe.sample(wo, 1.5f, uint32_t(5000 + 10 * a) + uint32_t(c.metallic * 7), kSampleCount),
+                1.5f);
+            char what[128];
+            std::snprintf(what, sizeof what, "metallic %.1f roughness %.1f theta_o %.0f", double(c.metallic),
+                          double(c.roughness), double(incidentAngles()[a]));
+            std::printf("  %-42s albedo %.6f +- %.1e  analytic %.6f\n", what, e.mean.x, e.standardError.x,
+                        c.expected);
+            for (int ch = 0; ch < 3; ++ch)
+                EXPECT_NEAR(e.mean[ch], c.expected, 5.0 * e.standardError[ch] + 1e-5)
+                    << what << " channel " << ch;
+            if (c.metallic == 1.0f && c.roughness == 0.0f) {
+                EXPECT_EQ(e.maxWeight, 1.0) << what;
+                EXPECT_EQ(e.standardError.x, 0.0) << what << ": every sample weighs exactly 1";
+            }
+        }
+    }
 }
 
 // The double-precision D and Lambda above pass Heitz's weak white furnace test: with G1 in place of G2

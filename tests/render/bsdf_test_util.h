@@ -7,11 +7,13 @@
 // pool sparse bins, and compare with Pearson's chi-square at a significance corrected for the number of
 // tests (Bonferroni here; Mitsuba uses the nearly identical Sidak correction).
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <cstdlib>
 #include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -22,6 +24,7 @@
 #include "gl/shader_source.h"
 #include "gpu/layout_defines.h"
 #include "pack/layout.h"
+#include "pack/pack.h"
 #include "render_test_util.h"
 #include "scene/scene.h"
 
@@ -134,16 +137,14 @@ class BsdfProbe {
     BsdfProbe(const BsdfProbe&) = delete;
     BsdfProbe& operator=(const BsdfProbe&) = delete;
 
-    // The material under test, packed as src/pack/layout.h describes (and src/pack/pack.cpp writes); the
-    // fourth texel's w, the Cauchy coefficient of a dispersive glass, is 0: one index for all wavelengths;
-    // the fifth says "no texture".
+    // The material under test, packed as src/pack/pack.cpp packs it; the fourth texel's w, the Cauchy
+    // coefficient of a dispersive glass, is 0: one index for all wavelengths.
     void setMaterial(const Material& m) {
-        const glm::vec4 texels[layout::kMaterialTexels] = {
-            glm::vec4(m.diffuse, float(m.type)), glm::vec4(m.emission, m.roughness),
-            glm::vec4(m.specular, m.ior), glm::vec4(m.transmission, 0.0f),
-            glm::vec4(-1.0f, 0.0f, 0.0f, 0.0f)};
+        Material packed = m;
+        packed.abbeNumber = 0.0f;
+        const std::array<glm::vec4, layout::kMaterialTexels> texels = packMaterial(packed);
         glBindBuffer(GL_TEXTURE_BUFFER, materialBuffer_);
-        glBufferSubData(GL_TEXTURE_BUFFER, 0, sizeof(texels), texels);
+        glBufferSubData(GL_TEXTURE_BUFFER, 0, sizeof(texels), texels.data());
     }
 
     // `count` samples of bsdfSample(material, wo, u, eta), sample k from fragment (k % kWidth, k / kWidth).
@@ -289,7 +290,18 @@ inline Material makeMaterial(MaterialType type, float roughness) {
         case MaterialType::Dielectric:
             m.transmission = glm::vec3(1.0f, 0.8f, 0.6f);
             break;
+        case MaterialType::MetallicRoughness:
+            m.diffuse = glm::vec3(0.9f, 0.6f, 0.3f);  // the base colour: the metal's F0, the base's albedo
+            m.metallic = 0.5f;
+            break;
     }
+    return m;
+}
+
+// glTF's metallic-roughness model at (metallic, roughness).
+inline Material makeMetallicRoughness(float metallic, float roughness) {
+    Material m = makeMaterial(MaterialType::MetallicRoughness, roughness);
+    m.metallic = metallic;
     return m;
 }
 
@@ -309,6 +321,13 @@ inline std::vector<BsdfCase> samplingCases() {
         cases.push_back({name("dielectric", r, " eta=1.5"), makeMaterial(MaterialType::Dielectric, r), 1.5f});
         cases.push_back(
             {name("dielectric", r, " eta=1/1.5"), makeMaterial(MaterialType::Dielectric, r), 1.0f / 1.5f});
+    }
+    // The blend at several (metallic, roughness); metallic 0 and 1 are the plastic and the conductor
+    // (bsdf_metallic_roughness_test.cpp), metallic 0.5 with roughness 0 mixes two delta lobes with the base.
+    for (auto [metallic, r] : {std::pair{0.5f, 0.3f}, {0.2f, 0.6f}, {0.8f, 0.2f}, {0.5f, 0.0f}}) {
+        std::ostringstream what;
+        what << "metallic-roughness m=" << metallic << " r=" << r;
+        cases.push_back({what.str(), makeMetallicRoughness(metallic, r), 1.5f});
     }
     return cases;
 }
@@ -701,6 +720,15 @@ inline double plasticReference(glm::dvec3 wo, glm::dvec3 wi, double alpha, bool 
              fresnelDielectricReference(glm::dot(wo, h), ior) / (4.0 * wo.z * wi.z);
     }
     return f * wi.z;
+}
+
+// glTF's metallic-roughness model as bsdf.glsl's header describes it, in double precision and one
+// channel: metallic times the GGX conductor with F0 = base, plus (1 - metallic) times the plastic with a
+// white coat of index ior over the Lambertian base.
+inline double metallicRoughnessReference(glm::dvec3 wo, glm::dvec3 wi, double alpha, bool rough, double ior,
+                                         double base, double metallic) {
+    double conductor = rough ? ggxConductorReference(wo, wi, alpha, base).value : 0.0;
+    return metallic * conductor + (1.0 - metallic) * plasticReference(wo, wi, alpha, rough, ior, base, 1.0);
 }
 
 // The density of choosing GGX reflection from wo: a visible normal, then the Jacobian 1 / (4 wo.h).

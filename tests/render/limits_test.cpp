@@ -2,8 +2,8 @@
 #include <gtest/gtest.h>
 
 #include "core/error.h"
-#include "pack/layout.h"
 #include "gpu/scene_textures.h"
+#include "pack/layout.h"
 #include "render_test_util.h"
 
 namespace fp::test {
@@ -35,7 +35,7 @@ TEST(Limits, BvhNodesOverTheBufferTextureLimitAreAClearError) {
     AabbArray bounds = {scene.triangles[0].bounds()};
     PackedScene packed = packScene(scene, buildBinnedSah(bounds));
     ASSERT_EQ(packed.nodes.size(), size_t(layout::kNodeTexels));
-    EXPECT_NO_THROW(SceneTextures(packed, 5));  // the one material takes 5
+    EXPECT_NO_THROW(SceneTextures(packed, size_t(layout::kMaterialTexels)));  // the one material's
     try {
         SceneTextures textures(packed, 3);
         FAIL() << "expected an error";

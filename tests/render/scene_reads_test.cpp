@@ -14,6 +14,7 @@
 #include "render_test_util.h"
 #include "scene/builtin_scene.h"
 #include "scene/load.h"
+#include "surface_maps_scene.h"
 
 namespace fp::test {
 namespace {
@@ -29,6 +30,12 @@ void expectTheSameBothWays(const Scene& scene, const Camera& camera) {
         Accumulation b = renderScene(fetches, camera, integrator, 24, 4, 5, 7);
         expectBitIdentical(a, b, integratorName(integrator));
     }
+}
+
+// Every kind of texture map (the tangents are an image too), coverage and single-sided surfaces.
+TEST(SceneReads, ImageLoadAndTexelFetchRenderTheSameMapsAndCoverage) {
+    ensureGlContext();
+    expectTheSameBothWays(everyMapScene(), everyMapCamera());
 }
 
 TEST(SceneReads, ImageLoadAndTexelFetchRenderTheSameCornellBox) {
@@ -75,16 +82,16 @@ TEST(SceneReads, ImageLoadAndTexelFetchRenderTheSameEnvironmentMap) {
 }
 
 // Every texture read as an image needs its image unit, whether or not the scene has it, so a context
-// with room for the five scene buffers but not the optional four reads everything with texelFetch.
+// with room for the five scene buffers but not the optional five reads everything with texelFetch.
 TEST(SceneReads, ImagesNeedUnitsForEveryTextureReadAsAnImage) {
     // llvmpipe (Mesa 22.3)
     EXPECT_EQ(imageUnitShortfall({192, 32, 280, 8}), "");
-    // Just enough: image units 0 to 9, nine images and eight draw buffers.
-    EXPECT_EQ(imageUnitShortfall({10, 9, 17, 8}), "");
-    // One short of each: no unit 9 (the environment CDFs), eight images, or too small a shared budget.
-    EXPECT_NE(imageUnitShortfall({9, 32, 280, 8}), "");
-    EXPECT_NE(imageUnitShortfall({192, 8, 280, 8}), "");
-    EXPECT_NE(imageUnitShortfall({192, 32, 16, 8}), "");
+    // Just enough: image units 0 to 10, ten images and eight draw buffers.
+    EXPECT_EQ(imageUnitShortfall({11, 10, 18, 8}), "");
+    // One short of each: no unit 10 (the environment CDFs), nine images, or too small a shared budget.
+    EXPECT_NE(imageUnitShortfall({10, 32, 280, 8}), "");
+    EXPECT_NE(imageUnitShortfall({192, 9, 280, 8}), "");
+    EXPECT_NE(imageUnitShortfall({192, 32, 17, 8}), "");
     // The minimums of GL 4.2.
     EXPECT_NE(imageUnitShortfall({8, 8, 8, 8}), "");
 }

@@ -269,6 +269,10 @@ TEST_P(ShadingNormalFurnace, IntegratorsAgreeAndNothingIsNegative) {
     m.specular = glm::vec3(1.0f);
     m.diffuse = glm::vec3(0.0f);
     m.ior = 1.5f;
+    if (p.type == MaterialType::MetallicRoughness) {  // half metal, half plastic, a light base colour
+        m.diffuse = glm::vec3(0.8f);
+        m.metallic = 0.5f;
+    }
     scene.materials.push_back(m);
     appendSphere(scene, glm::vec3(0.0f), 1.0f, 4, 6, 0, true);
     scene.environment.color = glm::vec3(1.0f);
@@ -302,13 +306,13 @@ TEST_P(ShadingNormalFurnace, IntegratorsAgreeAndNothingIsNegative) {
     expectSameImage(bdpt, nee, 3, 0.02f, name + ": bdpt against nee");
 }
 
-INSTANTIATE_TEST_SUITE_P(Spheres, ShadingNormalFurnace,
-                         ::testing::Values(FurnaceSphere{"glossyConductor", MaterialType::Conductor, 0.3f},
-                                           FurnaceSphere{"roughGlass", MaterialType::Dielectric, 0.3f},
-                                           FurnaceSphere{"smoothGlass", MaterialType::Dielectric, 0.0f}),
-                         [](const ::testing::TestParamInfo<FurnaceSphere>& p) {
-                             return std::string(p.param.name);
-                         });
+INSTANTIATE_TEST_SUITE_P(
+    Spheres, ShadingNormalFurnace,
+    ::testing::Values(FurnaceSphere{"glossyConductor", MaterialType::Conductor, 0.3f},
+                      FurnaceSphere{"roughGlass", MaterialType::Dielectric, 0.3f},
+                      FurnaceSphere{"smoothGlass", MaterialType::Dielectric, 0.0f},
+                      FurnaceSphere{"metallicRoughness", MaterialType::MetallicRoughness, 0.3f}),
+    [](const ::testing::TestParamInfo<FurnaceSphere>& p) { return std::string(p.param.name); });
 
 // ---- 7. a hundred thousand emitters ----
 

@@ -82,7 +82,7 @@ TEST(GltfLoader, TexturedBoxFromDataUris) {
     EXPECT_EQ(scene.textures[0].image.texels, kTexels);
     ASSERT_EQ(scene.materials.size(), 1u);
     EXPECT_EQ(scene.materials[0].name, "checker");
-    EXPECT_EQ(scene.materials[0].type, MaterialType::Diffuse);
+    EXPECT_EQ(scene.materials[0].type, MaterialType::MetallicRoughness);
     EXPECT_EQ(scene.materials[0].diffuseTexture, 0);
     EXPECT_FALSE(scene.camera.has_value());
     Box box;

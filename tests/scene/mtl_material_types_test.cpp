@@ -1,5 +1,6 @@
-// MTL statements -> Diffuse, Conductor, Plastic, Dielectric: every rule of mtl.h with a snippet, the
-// sanitising of the statements the rules read, and the warnings about statements we do not read.
+// MTL statements -> Diffuse, Conductor, Plastic, Dielectric, MetallicRoughness: every rule of mtl.h with a
+// snippet, the texture maps and their options, coverage, the sanitising of the statements the rules
+// read, and the warnings about statements we do not read.
 #include <gtest/gtest.h>
 
 #include "scene/builtin_scene.h"
@@ -128,23 +129,69 @@ TEST(MtlTypes, DissolveNeverSelectsGlass) {
     EXPECT_EQ(quiet("Kd 0.5 0.5 0.5\nd 0.5\nTr 0.5\n").type, MaterialType::Diffuse);
 }
 
+// d is coverage (alpha), for every type: below 1 (or with map_d) the material is BLEND, otherwise it
+// stays opaque. Tr is ignored (exporters disagree on its meaning), before or after d.
+TEST(MtlTypes, DissolveIsCoverage) {
+    Material m = quiet("Kd 0.5\nd 0.25\n");
+    EXPECT_EQ(m.alphaMode, AlphaMode::Blend);
+    EXPECT_EQ(m.alpha, 0.25f);
+    Material opaque = quiet("Kd 0.5\nd 1\n");
+    EXPECT_EQ(opaque.alphaMode, AlphaMode::Opaque);
+    EXPECT_EQ(opaque.alpha, 1.0f);
+    for (std::string body : {"Kd 0.5\nTr 1\n", "Kd 0.5\nTr 0.3\n", "Kd 0.5\nTr 0\n"}) {
+        Material tr = quiet(body);
+        EXPECT_EQ(tr.alphaMode, AlphaMode::Opaque) << body;
+        EXPECT_EQ(tr.alpha, 1.0f) << body;
+    }
+    EXPECT_EQ(quiet("Kd 0.5\nTr 0.9\nd 0.5\n").alpha, 0.5f);
+    EXPECT_EQ(quiet("Kd 0.5\nd 0.5\nTr 0.9\n").alpha, 0.5f);
+    // Coverage for glass and metals too.
+    EXPECT_EQ(quiet("illum 4\nd 0.5\n").alphaMode, AlphaMode::Blend);
+    EXPECT_EQ(quiet("Kd 1\nPm 1\nd 0.5\n").alphaMode, AlphaMode::Blend);
+    // A map of it makes the material BLEND whatever d says (it multiplies d).
+    Parsed mapped = parse("newmtl m\nKd 0.5\nmap_d mask.png\n");
+    ASSERT_EQ(mapped.materials.size(), 1u);
+    EXPECT_EQ(mapped.materials[0].alphaMode, AlphaMode::Blend);
+    EXPECT_EQ(mapped.materials[0].alpha, 1.0f);
+    EXPECT_EQ(mapped.materials[0].alphaTexture, 0);
+    ASSERT_EQ(mapped.textures.size(), 1u);
+    EXPECT_EQ(mapped.textures[0].kind, MtlTextureKind::Alpha);
+    EXPECT_EQ(mapped.textures[0].file, "mask.png");
+    // Clamped and checked as the other scalars.
+    EXPECT_EQ(warned("Kd 0.5\nd 1.5\n", "clamped 1 d value to [0, 1]").alpha, 1.0f);
+    EXPECT_EQ(warned("Kd 0.5\nd nan\n", "ignored 1 d statement with a NaN").alphaMode, AlphaMode::Opaque);
+}
+
 TEST(MtlTypes, GlassWinsOverMetalAndSpecular) {
     EXPECT_EQ(quiet("illum 4\nPm 1\nKs 1 1 1\n").type, MaterialType::Dielectric);
     EXPECT_EQ(quiet("Tf 0.9 0.9 0.9\nPm 1\n").type, MaterialType::Dielectric);
 }
 
-// ---- rule 2: Conductor from Pm ----
+// ---- rule 2: MetallicRoughness from Pm or map_Pm ----
 
-TEST(MtlTypes, MetallicIsConductorWithKdAsF0) {
+TEST(MtlTypes, MetallicIsMetallicRoughnessWithKdAsBaseColour) {
     Material gold = quiet("Kd 1 0.78 0.34\nKs 0.1 0.1 0.1\nPm 1\nPr 0.3\n");
-    EXPECT_EQ(gold.type, MaterialType::Conductor);
-    EXPECT_VEC3_NEAR(gold.specular, glm::vec3(1.0f, 0.78f, 0.34f));  // Kd, not Ks
+    EXPECT_EQ(gold.type, MaterialType::MetallicRoughness);
+    EXPECT_VEC3_NEAR(gold.diffuse, glm::vec3(1.0f, 0.78f, 0.34f));  // Kd, not Ks
+    EXPECT_EQ(gold.metallic, 1.0f);
     EXPECT_FLOAT_EQ(gold.roughness, 0.3f);
+    EXPECT_EQ(gold.ior, 1.5f);
     EXPECT_EQ(quiet("Kd 0.9 0.9 0.9\nPm 1\n").roughness, 0.5f) << "no Pr gives 0.5";
-    EXPECT_EQ(quiet("Kd 0.9 0.9 0.9\nPm 0.5\n").type, MaterialType::Conductor);
-    // Below 0.5 the material is not metallic: no warning, Ks decides as if Pm were absent.
-    EXPECT_EQ(quiet("Kd 0.9 0.9 0.9\nPm 0.49\n").type, MaterialType::Diffuse);
-    EXPECT_EQ(quiet("Kd 0.9 0.9 0.9\nKs 0.5 0.5 0.5\nPm 0.3\n").type, MaterialType::Plastic);
+    // Any Pm: the blend, or the dielectric end of the model (Ks is not part of it).
+    for (float pm : {0.0f, 0.3f, 0.5f, 0.75f}) {
+        Material m = quiet("Kd 0.9 0.9 0.9\nKs 0.5 0.5 0.5\nNi 1.45\nPm " + std::to_string(pm) + "\n");
+        EXPECT_EQ(m.type, MaterialType::MetallicRoughness) << pm;
+        EXPECT_FLOAT_EQ(m.metallic, pm);
+        EXPECT_FLOAT_EQ(m.ior, 1.45f) << "the coat's index, as a plastic's";
+    }
+    EXPECT_EQ(quiet("Kd 0.9\nPm 0\nNi 1\n").ior, 1.5f) << "Ni 1 means nothing on an opaque material";
+    // map_Pm alone selects the model too, its factor 1; map_Pr alone makes the roughness factor 1.
+    Parsed mapped = parse("newmtl m\nKd 0.9\nmap_Pm metal.png\nmap_Pr rough.png\n");
+    ASSERT_EQ(mapped.materials.size(), 1u);
+    EXPECT_TRUE(mapped.warnings.empty()) << joined(mapped.warnings);
+    EXPECT_EQ(mapped.materials[0].type, MaterialType::MetallicRoughness);
+    EXPECT_EQ(mapped.materials[0].metallic, 1.0f);
+    EXPECT_EQ(mapped.materials[0].roughness, 1.0f);
 }
 
 // ---- rule 3: Conductor from illum 5 ----
@@ -155,8 +202,8 @@ TEST(MtlTypes, FresnelMirrorIsConductorWithKs) {
     EXPECT_VEC3_NEAR(mirror.specular, glm::vec3(0.95f, 0.9f, 0.8f));
     EXPECT_EQ(mirror.roughness, 0.0f) << "a mirror, whatever Ns says";
     EXPECT_FLOAT_EQ(quiet("Ks 1 1 1\nPr 0.1\nillum 5\n").roughness, 0.1f);
-    // A Pm statement means the PBR convention: Pm below 0.5 said "not a metal".
-    EXPECT_EQ(quiet("Ks 1 1 1\nPm 0\nillum 5\n").type, MaterialType::Plastic);
+    // A Pm statement means the PBR convention, which wins over illum 5.
+    EXPECT_EQ(quiet("Ks 1 1 1\nPm 0\nillum 5\n").type, MaterialType::MetallicRoughness);
     EXPECT_EQ(quiet("Kd 0.5 0.5 0.5\nillum 5\n").type, MaterialType::Diffuse);
 }
 
@@ -191,7 +238,7 @@ TEST(MtlTypes, IllumZeroAndOneSwitchSpecularOff) {
     // The spec's models 0 and 1 have no Ks term.
     EXPECT_EQ(quiet("Ks 1 1 1\nillum 0\n").type, MaterialType::Diffuse);
     EXPECT_EQ(quiet("Ks 1 1 1\nillum 1\n").type, MaterialType::Diffuse);
-    EXPECT_EQ(quiet("Ks 1 1 1\nillum 1\nPm 1\n").type, MaterialType::Conductor) << "Pm ignores illum";
+    EXPECT_EQ(quiet("Ks 1 1 1\nillum 1\nPm 1\n").type, MaterialType::MetallicRoughness) << "Pm ignores illum";
 }
 
 // ---- rule 5 and emission ----
@@ -209,7 +256,7 @@ TEST(MtlTypes, EverythingElseIsDiffuse) {
 TEST(MtlTypes, EmissionKeptForEveryType) {
     const std::pair<std::string, MaterialType> cases[] = {
         {"Kd 0.5 0.5 0.5\n", MaterialType::Diffuse},
-        {"Kd 0.5 0.5 0.5\nPm 1\n", MaterialType::Conductor},
+        {"Kd 0.5 0.5 0.5\nPm 1\n", MaterialType::MetallicRoughness},
         {"Ks 0.5 0.5 0.5\nillum 5\n", MaterialType::Conductor},
         {"Ks 0.5 0.5 0.5\n", MaterialType::Plastic},
         {"illum 4\n", MaterialType::Dielectric},
@@ -259,7 +306,8 @@ TEST(MtlTypes, RoughnessAndMetallicClamped) {
     Material pr = warned("Ks 1 1 1\nPr 1.5\n", "clamped 1 Pr value to [0, 1] (first at line 3)");
     EXPECT_EQ(pr.roughness, 1.0f);
     Material pm = warned("Kd 0.5\nPm 7\nPr -1\n", "clamped 2 Pm/Pr values to [0, 1] (first at line 3)");
-    EXPECT_EQ(pm.type, MaterialType::Conductor);
+    EXPECT_EQ(pm.type, MaterialType::MetallicRoughness);
+    EXPECT_EQ(pm.metallic, 1.0f);
     EXPECT_EQ(pm.roughness, 0.0f);
 }
 
@@ -338,12 +386,133 @@ TEST(MtlTypes, UnknownStatementsWarnedOncePerName) {
 
 TEST(MtlTypes, HarmlessStatementsAcceptedSilently) {
     Material m = quiet(
-        "Ka 1 1 1\nd 1\nTr 0\nsharpness 60\nPs 0\nPc 0\nPcr 0\naniso 0\nanisor 0\nnorm n.png\n"
-        "bump -bm 0.5 b.png\ndisp d.png\ndecal c.png\nrefl -type sphere r.png\nmap_Ka a.png\n"
-        "map_Ks s.png\nmap_Ns n.png\nmap_bump b.png\nmap_Bump b.png\nmap_d d.png\nmap_Disp d.png\n"
-        "map_Pr r.png\nmap_Pm m.png\nmap_Ke e.png\nKd 0.5\nKs 0\nKe 0\nTf 0\nNi 1.5\nNs 10\nillum 2\n"
-        "Pr 0.5\nPm 0\n");
+        "Ka 1 1 1\nd 1\nTr 0\nsharpness 60\nPs 0\nPc 0\nPcr 0\naniso 0\nanisor 0\n"
+        "disp d.png\ndecal c.png\nrefl -type sphere r.png\nmap_Ka a.png\nmap_Ns n.png\nmap_Disp d.png\n"
+        "Kd 0.5\nKs 0\nKe 0\nTf 0\nNi 1.5\nNs 10\nillum 2\nPr 0.5\n");
     EXPECT_EQ(m.type, MaterialType::Diffuse);
+    EXPECT_FALSE(m.hasTextures());
+    EXPECT_EQ(m.alphaMode, AlphaMode::Opaque);
+}
+
+// ---- texture maps ----
+
+// Every map statement we read, each on a type that uses it: its file and line for the loader, its kind,
+// and the value it multiplies, 1 where the map comes alone (Ke with map_Ke, Ks with map_Ks).
+TEST(MtlTypes, TextureMapsOfEveryKind) {
+    Parsed p = parse(
+        "newmtl plastic\nKd 0.5\nmap_Kd kd.png\nmap_Ks ks.png\nmap_Ke ke.png\nmap_Pr pr.png\n"
+        "map_d d.png\nnorm n.png\n"
+        "newmtl pbr\nKd 0.2\nPm 0.5\nKe 2 2 2\nmap_Ke ke.png\nmap_Pm pm.png\n");
+    EXPECT_TRUE(p.warnings.empty()) << joined(p.warnings);
+    ASSERT_EQ(p.materials.size(), 2u);
+    const Material& a = p.materials[0];
+    EXPECT_EQ(a.type, MaterialType::Plastic);
+    EXPECT_EQ(a.specular, glm::vec3(1.0f)) << "map_Ks without Ks: Ks 1";
+    EXPECT_EQ(a.emission, glm::vec3(1.0f)) << "map_Ke without Ke: Ke 1";
+    EXPECT_EQ(a.roughness, 1.0f) << "map_Pr without Pr: roughness 1";
+    EXPECT_EQ(a.alphaMode, AlphaMode::Blend);
+    ASSERT_EQ(p.textures.size(), 8u);
+    auto expectMap = [&p](int32_t index, const char* file, int line, MtlTextureKind kind,
+                          const char* statement) {
+        ASSERT_GE(index, 0) << file;
+        const MtlTexture& t = p.textures[size_t(index)];
+        EXPECT_EQ(t.file, file);
+        EXPECT_EQ(t.line, line) << file;
+        EXPECT_EQ(t.kind, kind) << file;
+        EXPECT_EQ(t.statement, statement) << file;
+    };
+    expectMap(a.diffuseTexture, "kd.png", 3, MtlTextureKind::Color, "map_Kd");
+    expectMap(a.specularTexture, "ks.png", 4, MtlTextureKind::Color, "map_Ks");
+    expectMap(a.emissionTexture, "ke.png", 5, MtlTextureKind::Color, "map_Ke");
+    expectMap(a.metallicRoughnessTexture, "pr.png", 6, MtlTextureKind::MetallicRoughness, "map_Pr");
+    EXPECT_TRUE(p.textures[size_t(a.metallicRoughnessTexture)].metallicFile.empty());
+    expectMap(a.alphaTexture, "d.png", 7, MtlTextureKind::Alpha, "map_d");
+    expectMap(a.normalTexture, "n.png", 8, MtlTextureKind::Normal, "norm");
+    const Material& b = p.materials[1];
+    EXPECT_EQ(b.type, MaterialType::MetallicRoughness);
+    EXPECT_EQ(b.emission, glm::vec3(2.0f)) << "the map multiplies Ke";
+    EXPECT_EQ(b.metallic, 0.5f) << "the map multiplies Pm";
+    expectMap(b.emissionTexture, "ke.png", 13, MtlTextureKind::Color, "map_Ke");
+    const MtlTexture& mr = p.textures[size_t(b.metallicRoughnessTexture)];
+    EXPECT_EQ(mr.kind, MtlTextureKind::MetallicRoughness);
+    EXPECT_TRUE(mr.file.empty()) << "no map_Pr";
+    EXPECT_EQ(mr.metallicFile, "pm.png");
+    EXPECT_EQ(mr.metallicLine, 14);
+}
+
+// norm, map_Bump, map_bump and bump name a tangent-space normal map; -bm scales it; norm wins.
+TEST(MtlTypes, NormalMapStatementsAndTheirScale) {
+    Parsed p = parse(
+        "newmtl a\nnorm -bm 0.5 n.png\nnewmtl b\nmap_Bump -bm 2 b.png\nnewmtl c\nbump c.png\n"
+        "newmtl d\nmap_bump d.png\nnewmtl e\nbump e.png\nnorm e_normal.png\nmap_Bump e2.png\n");
+    EXPECT_TRUE(p.warnings.empty()) << joined(p.warnings);
+    ASSERT_EQ(p.materials.size(), 5u);
+    const char* files[] = {"n.png", "b.png", "c.png", "d.png", "e_normal.png"};
+    const float scales[] = {0.5f, 2.0f, 1.0f, 1.0f, 1.0f};
+    for (size_t i = 0; i < 5; ++i) {
+        const Material& m = p.materials[i];
+        ASSERT_GE(m.normalTexture, 0) << i;
+        EXPECT_EQ(p.textures[size_t(m.normalTexture)].file, files[i]);
+        EXPECT_EQ(p.textures[size_t(m.normalTexture)].kind, MtlTextureKind::Normal);
+        EXPECT_EQ(m.normalScale, scales[i]) << i;
+        EXPECT_EQ(m.type, MaterialType::Diffuse);
+    }
+    EXPECT_EQ(p.textures[size_t(p.materials[1].normalTexture)].statement, "map_Bump");
+    EXPECT_EQ(p.textures[size_t(p.materials[2].normalTexture)].statement, "map_Bump") << "bump is map_Bump";
+}
+
+// map_Pr and map_Pm read one channel each (-imfchan r, g, b, m or l; luminance by default), so that one
+// packed file serves both, as glTF's metallicRoughness texture does; the options we do not read are
+// warned about once per file, naming every statement that had them.
+TEST(MtlTypes, ScalarMapsReadTheChannelImfchanNames) {
+    Parsed p = parse(
+        "newmtl orm\nKd 1\nPm 1\nmap_Pr -imfchan g orm.png\nmap_Pm -imfchan b orm.png\n"
+        "newmtl cut\nKd 1\nmap_d -imfchan r mask.png\n"
+        "newmtl odd\nKd 1\nPm 1\nmap_Pr -imfchan z r.png\nmap_Kd -bm 2 k.png\n");
+    ASSERT_EQ(p.materials.size(), 3u);
+    const MtlTexture& orm = p.textures[size_t(p.materials[0].metallicRoughnessTexture)];
+    EXPECT_EQ(orm.file, "orm.png");
+    EXPECT_EQ(orm.channel, 'g');
+    EXPECT_EQ(orm.metallicFile, "orm.png");
+    EXPECT_EQ(orm.metallicChannel, 'b');
+    EXPECT_EQ(p.textures[size_t(p.materials[1].alphaTexture)].channel, 'r');
+    EXPECT_EQ(p.textures[size_t(p.materials[2].metallicRoughnessTexture)].channel, 0) << "z: not supported";
+    ASSERT_EQ(p.warnings.size(), 1u) << joined(p.warnings);
+    EXPECT_EQ(p.warnings[0],
+              "t.mtl: ignored 2 map_Pr/map_Kd -imfchan/-bm options (textures repeat, unscaled and unshifted) "
+              "(first at line 12)");
+}
+
+// A map on a type that does not use it is dropped, with one warning per statement and file.
+TEST(MtlTypes, MapsOnTypesThatDoNotUseThemAreIgnoredWithAWarning) {
+    Parsed p = parse(
+        "newmtl pbr\nKd 1\nPm 1\nmap_Ks s.png\nnewmtl lambert\nKd 0.5\nmap_Pr r.png\n"
+        "newmtl glass\nillum 4\nmap_Pm m.png\nmap_Pr r.png\nnewmtl off\nKd 0.5\nillum 1\nmap_Ks t.png\n");
+    ASSERT_EQ(p.materials.size(), 4u);
+    ASSERT_EQ(p.warnings.size(), 3u) << joined(p.warnings);
+    EXPECT_EQ(p.warnings[0],
+              "t.mtl: ignored map_Ks of 2 materials (only plastics and illum 5 metals have a Ks) (first at "
+              "line 4)");
+    EXPECT_EQ(p.warnings[1],
+              "t.mtl: ignored map_Pr of 1 Lambertian material (no roughness) (first at line 7)");
+    EXPECT_EQ(p.warnings[2],
+              "t.mtl: ignored map_Pm of 1 glass material (glass is not metallic) (first at line 10)");
+    EXPECT_EQ(p.materials[0].specularTexture, -1);
+    EXPECT_EQ(p.materials[1].metallicRoughnessTexture, -1);
+    EXPECT_EQ(p.materials[1].type, MaterialType::Diffuse);
+    // The glass keeps its map_Pr (a rough glass's roughness), without the metallic part.
+    EXPECT_EQ(p.materials[2].type, MaterialType::Dielectric);
+    ASSERT_GE(p.materials[2].metallicRoughnessTexture, 0);
+    EXPECT_EQ(p.textures[size_t(p.materials[2].metallicRoughnessTexture)].file, "r.png");
+    EXPECT_TRUE(p.textures[size_t(p.materials[2].metallicRoughnessTexture)].metallicFile.empty());
+    EXPECT_EQ(p.materials[3].specularTexture, -1);
+}
+
+TEST(MtlTypes, MapWithoutFileIsMalformed) {
+    Material m = warned("Kd 0.3\nnorm -bm 2\nmap_d\n", "ignored 2 malformed norm/map_d statements");
+    EXPECT_EQ(m.normalTexture, -1);
+    EXPECT_EQ(m.alphaTexture, -1);
+    EXPECT_EQ(m.alphaMode, AlphaMode::Opaque);
 }
 
 TEST(MtlTypes, DiffuseTextureNamesItsFileAndLineAndMultipliesKd) {
@@ -393,20 +562,23 @@ TEST(MtlTypes, TextureWithoutFileIsMalformed) {
 
 TEST(MtlTypes, TextureOnMetalOrGlassIsIgnoredWithAWarning) {
     Parsed p = parse(
-        "newmtl gold\nKd 1 0.8 0.3\nPm 1\nmap_Kd g.png\nnewmtl glass\nillum 7\nmap_Kd x.png\n"
-        "newmtl plastic\nKd 0.5\nKs 0.04\nmap_Kd p.png\n");
+        "newmtl mirror\nKs 1 0.8 0.3\nillum 5\nmap_Kd g.png\nnewmtl glass\nillum 7\nmap_Kd x.png\n"
+        "newmtl plastic\nKd 0.5\nKs 0.04\nmap_Kd p.png\nnewmtl gold\nKd 1 0.8 0.3\nPm 1\nmap_Kd au.png\n");
     ASSERT_EQ(p.warnings.size(), 1u) << joined(p.warnings);
-    EXPECT_EQ(
-        p.warnings[0],
-        "t.mtl: ignored map_Kd of 2 metal or glass materials (only Lambertian and plastic materials have a "
-        "diffuse colour) (first at line 4)");
-    ASSERT_EQ(p.materials.size(), 3u);
+    EXPECT_EQ(p.warnings[0],
+              "t.mtl: ignored map_Kd of 2 metal or glass materials (only Lambertian, plastic and "
+              "metallic-roughness materials have a diffuse colour) (first at line 4)");
+    ASSERT_EQ(p.materials.size(), 4u);
     EXPECT_EQ(p.materials[0].diffuseTexture, -1);
     EXPECT_EQ(p.materials[1].diffuseTexture, -1);
     EXPECT_EQ(p.materials[2].type, MaterialType::Plastic);
     EXPECT_EQ(p.materials[2].diffuseTexture, 0);
-    ASSERT_EQ(p.textures.size(), 1u);
+    // A metallic-roughness metal's base colour is its F0: the map multiplies it.
+    EXPECT_EQ(p.materials[3].type, MaterialType::MetallicRoughness);
+    EXPECT_EQ(p.materials[3].diffuseTexture, 1);
+    ASSERT_EQ(p.textures.size(), 2u);
     EXPECT_EQ(p.textures[0].file, "p.png");
+    EXPECT_EQ(p.textures[1].file, "au.png");
 }
 
 }  // namespace

@@ -210,6 +210,120 @@ TEST(ObjTexture, NonFiniteTexcoordsAreRepairedAsNone) {
     EXPECT_EQ(scene.materials[scene.triangles[0].material].diffuseTexture, -1);
 }
 
+// The other maps, as their kind makes them (mtl.h): map_d's coverage goes to A (the file's alpha, else
+// its luminance, or the channel -imfchan names), map_Pr and map_Pm are combined into G and B (255 where
+// one is missing; at the larger size, nearest texels, with a warning), a normal map is kept as it is.
+TEST(ObjTexture, MapsAreLoadedAsTheirKind) {
+    test::TempDir dir;
+    dir.write("mats/grey.png", test::pngBytes(2, 1, 1, {10, 200}));
+    dir.write("mats/rgba.png", test::pngBytes(1, 1, 4, {100, 150, 200, 77}));
+    dir.write("mats/rgb.png", test::pngBytes(2, 1, 3, {255, 0, 0, 0, 255, 0}));
+    dir.write("mats/rough.png", test::pngBytes(2, 2, 1, {1, 2, 3, 4}));
+    dir.write("mats/normal.png", test::pngBytes(1, 1, 3, {128, 128, 255}));
+    dir.write("mats/a.mtl",
+              "newmtl tex\nKd 1\nmap_d grey.png\n"
+              "newmtl b\nKd 1\nmap_d rgba.png\n"
+              "newmtl c\nKd 1\nmap_d rgb.png\n"
+              "newmtl d\nKd 1\nmap_d -imfchan b rgba.png\n"
+              "newmtl e\nKd 1\nPm 1\nmap_Pr rough.png\nmap_Pm -imfchan g rgb.png\n"
+              "newmtl f\nKd 1\nmap_Pr rough.png\nKs 1\nmap_Bump normal.png\n");
+    std::string faces;
+    for (const char* m : {"tex", "b", "c", "d", "e", "f"})
+        faces += std::string("usemtl ") + m + "\nf 1/1 2/2 3/3\n";
+    WarningCapture capture;
+    Scene scene = loadObj(dir.write("model.obj", kQuad + faces));
+    ASSERT_EQ(capture.messages().size(), 1u) << test::joined(capture);
+    EXPECT_CONTAINS_ALL(capture.messages()[0],
+                        "a.mtl:17: map_Pm 'rgb.png' and map_Pr 'rough.png' differ in size");
+    auto texels = [&](const std::string& name) -> std::vector<uint8_t> {
+        for (const Material& m : scene.materials)
+            if (m.name == name) {
+                int32_t t = m.alphaTexture >= 0 ? m.alphaTexture : m.metallicRoughnessTexture;
+                return scene.textures[size_t(t)].image.texels;
+            }
+        return {};
+    };
+    EXPECT_EQ(texels("tex"), (std::vector<uint8_t>{10, 10, 10, 10, 200, 200, 200, 200}))
+        << "grey: A = the grey";
+    EXPECT_EQ(texels("b"), (std::vector<uint8_t>{100, 150, 200, 77})) << "the file's alpha";
+    // No alpha: the luminance, 0.2126 * 255 = 54.2 and 0.7152 * 255 = 182.4, rounded.
+    EXPECT_EQ(texels("c"), (std::vector<uint8_t>{255, 0, 0, 54, 0, 255, 0, 182}));
+    EXPECT_EQ(texels("d"), (std::vector<uint8_t>{100, 150, 200, 200})) << "-imfchan b";
+    // 2x2 from the 2x2 roughness (G) and the 2x1 metallic's green channel (B), nearest texel.
+    EXPECT_EQ(texels("e"),
+              (std::vector<uint8_t>{0, 1, 0, 255, 0, 2, 255, 255, 0, 3, 0, 255, 0, 4, 255, 255}));
+    for (const Material& m : scene.materials)
+        if (m.name == "f") {
+            // A plastic's roughness map without map_Pm: B = 255; the RGB normal map as it is.
+            EXPECT_EQ(scene.textures[size_t(m.metallicRoughnessTexture)].image.texels,
+                      (std::vector<uint8_t>{0, 1, 255, 255, 0, 2, 255, 255, 0, 3, 255, 255, 0, 4, 255, 255}));
+            ASSERT_GE(m.normalTexture, 0);
+            EXPECT_EQ(scene.textures[size_t(m.normalTexture)].image.texels,
+                      (std::vector<uint8_t>{128, 128, 255, 255}));
+        }
+}
+
+// The MTL spec's bump is a height map, which we do not support: a greyscale file named by map_Bump or
+// bump is refused with one warning naming it, and the material keeps its shading normals. The same
+// file as a colour map is loaded as usual.
+TEST(ObjTexture, GreyscaleBumpMapsAreHeightMapsAndIgnored) {
+    test::TempDir dir;
+    dir.write("mats/height.png", test::pngBytes(2, 1, 1, {10, 200}));
+    dir.write("mats/a.mtl",
+              "newmtl tex\nmap_Kd height.png\nbump -bm 0.3 height.png\nnewmtl b\nmap_Bump height.png\n");
+    WarningCapture capture;
+    Scene scene = loadObj(dir.write("model.obj", kQuad + "f 1/1 2/2 3/3\nusemtl b\nf 1/1 3/3 4/4\n"));
+    ASSERT_EQ(capture.messages().size(), 1u) << test::joined(capture);
+    EXPECT_CONTAINS_ALL(capture.messages()[0], "a.mtl:3: map_Bump 'height.png' is a greyscale image",
+                        "height maps are not supported");
+    for (const Material& m : scene.materials) EXPECT_EQ(m.normalTexture, -1) << m.name;
+    ASSERT_EQ(scene.textures.size(), 1u);
+    EXPECT_EQ(scene.materials[scene.triangles[0].material].diffuseTexture, 0);
+}
+
+// A missing map other than map_Kd is named by its statement and material: a colour map (map_Ke) shows
+// the checker, any other (map_Pm) is ignored and the factor alone counts.
+TEST(ObjTexture, MissingMapNamesItsStatementAndMaterial) {
+    test::TempDir dir;
+    dir.write("mats/a.mtl", "newmtl tex\nKd 1\nPm 1\nmap_Pm metal.png\nKe 1\nmap_Ke glow.png\n");
+    std::string obj = dir.write("model.obj", kQuad + "f 1/1 2/2 3/3\n");
+    WarningCapture capture;
+    Scene scene = loadObj(obj);
+    std::string warnings = test::joined(capture);
+    EXPECT_CONTAINS_ALL(warnings,
+                        dir.path("mats/a.mtl") + ":4: material 'tex': map_Pm texture 'metal.png' not found",
+                        "; ignoring the map",
+                        dir.path("mats/a.mtl") + ":6: material 'tex': map_Ke texture 'glow.png' not found",
+                        "; showing a magenta and black checker instead");
+    const Material& m = scene.materials[scene.triangles[0].material];
+    EXPECT_EQ(m.metallicRoughnessTexture, -1);
+    EXPECT_EQ(m.metallic, 1.0f);
+    ASSERT_GE(m.emissionTexture, 0);
+    EXPECT_EQ(scene.textures[size_t(m.emissionTexture)].image.texels, missingTextureChecker().texels);
+}
+
+// Faces without vt on a material with maps: every map gives way to its mean (Ke times the emission
+// map's mean colour, roughness and metallic times the means of G and B, alpha times the mean of A) and
+// the normal map is dropped.
+TEST(ObjTexture, FacesWithoutTexcoordsGetEveryMapsMean) {
+    test::TempDir dir;
+    dir.write("mats/orm.png", test::pngBytes(2, 1, 4, {0, 51, 102, 255, 0, 153, 204, 0}));
+    dir.write("mats/n.png", test::pngBytes(1, 1, 3, {200, 128, 230}));
+    dir.write("mats/a.mtl",
+              "newmtl tex\nKd 1\nPm 0.5\nPr 0.5\nKe 2\nmap_Pr -imfchan g orm.png\nmap_Pm -imfchan b orm.png\n"
+              "map_d orm.png\nmap_Ke orm.png\nnorm n.png\n");
+    WarningCapture capture;
+    Scene scene = loadObj(dir.write("model.obj", kQuad + "f 1 2 3\n"));
+    ASSERT_EQ(scene.triangles.size(), 1u);
+    const Material& m = scene.materials[scene.triangles[0].material];
+    EXPECT_FALSE(m.hasTextures());
+    EXPECT_NEAR(m.roughness, 0.5f * (51 + 153) / 510.0f, 1e-6f);
+    EXPECT_NEAR(m.metallic, 0.5f * (102 + 204) / 510.0f, 1e-6f);
+    EXPECT_NEAR(m.alpha, 0.5f, 1e-6f);
+    EXPECT_EQ(m.alphaMode, AlphaMode::Blend);
+    EXPECT_NEAR(m.emission.g, 2.0f * 0.5f * (srgbDecode(0.2f) + srgbDecode(0.6f)), 1e-5f);
+}
+
 TEST(ObjTexture, SceneFilesLoadTexturesThroughTheirMesh) {
     test::TempDir dir;
     dir.write("mesh/mats/a.mtl", "newmtl tex\nmap_Kd tex.png\n");

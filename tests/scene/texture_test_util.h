@@ -20,6 +20,17 @@ inline std::string pngBytes(int width, int height, const std::vector<uint8_t>& r
     return out;
 }
 
+// A PNG of `channels` (1 grey, 2 grey + alpha, 3 RGB, 4 RGBA) bytes per texel, as file bytes.
+inline std::string pngBytes(int width, int height, int channels, const std::vector<uint8_t>& texels) {
+    std::string out;
+    auto append = [](void* context, void* data, int size) {
+        static_cast<std::string*>(context)->append(static_cast<const char*>(data), size_t(size));
+    };
+    if (!stbi_write_png_to_func(append, &out, width, height, channels, texels.data(), width * channels))
+        return "";
+    return out;
+}
+
 // A checker of two colours: texel (x, y) is `a` where x + y is even, else `b` (alpha 255).
 using Rgb8 = std::array<uint8_t, 3>;
 
