@@ -38,7 +38,9 @@ const char* kBenchAbout =
     "With --suite it measures a fixed set of scenes instead, each with an exact triangle count: the\n"
     "built-in Cornell box (32), a tessellated sphere in a lit room (sphere-1k, sphere-100k, sphere-1m:\n"
     "1000, 100000 and 1000000 triangles in all), and 100000 random overlapping triangles in the same room\n"
-    "(soup-100k, the worst case for a BVH). Each gets its BVH build time and SAH cost, GPU bytes per\n"
+    "(soup-100k, the worst case for a BVH); sphere-1m-glb is sphere-1m written to a temporary .glb and\n"
+    "loaded from it, as a user's file (its load stage is the glTF loader's). Each gets its BVH build time\n"
+    "and SAH cost, GPU bytes per\n"
     "triangle, time to first frame and the throughput figures, then one summary table. --with-bunny adds\n"
     "the Stanford bunny, fetched at run time with `npm pack bunny` into a temporary directory (skipped\n"
     "with a note when npm or the network is missing).\n"
@@ -80,8 +82,7 @@ std::vector<OptionGroup> benchOptions() {
            {"--max-triangles", "", "N", "with --suite: skip the scenes with more than N triangles"},
            {"--scenes", "", "A,B,...",
             "with --suite: only these scenes (cornell, sphere-1k, bunny, sphere-100k,\nsoup-100k, "
-            "sphere-1m), "
-            "in the suite's order"},
+            "sphere-1m, sphere-1m-glb), in the suite's order"},
            {"--with-bunny", "", "", "with --suite: add the Stanford bunny (needs npm and the network)"},
            {"--native", "", "",
             "also measure the native reference (fragpath_native: one thread of scalar C++,\nthe same "

@@ -6,12 +6,15 @@
 #include <filesystem>
 #include <functional>
 #include <memory>
+#include <optional>
 
 #include "bench/bench_native.h"
+#include "bench/glb_writer.h"
 #include "core/error.h"
 #include "core/file.h"
 #include "gl/context.h"
 #include "scene/builtin_scene.h"
+#include "scene/load.h"
 #include "scene/procedural.h"
 
 namespace fp::bench {
@@ -29,6 +32,7 @@ struct SuiteScene {
     std::string name;
     long long triangles = 0;  // exact; 0 for the bunny, which is known only once fetched
     std::function<Scene()> make;
+    bool native = true;  // whether the native reference can render it (Lambertian materials only)
 };
 
 std::vector<SuiteScene> suiteScenes() {
@@ -39,6 +43,10 @@ std::vector<SuiteScene> suiteScenes() {
         {"sphere-100k", 100000, [] { return benchmarkSphereScene(100000); }},
         {"soup-100k", 100000, [] { return randomTriangleSoup(100000, 1); }},
         {"sphere-1m", 1000000, [] { return benchmarkSphereScene(1000000); }},
+        // sphere-1m written to a .glb before it is measured (glb_writer.h), then loaded from it as a user's
+        // file would be: its load stage is the glTF loader's. Its materials are glTF's metallic-roughness
+        // model (at metallic 0 and roughness 1), which the native reference does not have.
+        {"sphere-1m-glb", 1000000, nullptr, false},
     };
 }
 
@@ -76,8 +84,8 @@ std::string failureLine(const fs::path& file) {
 // A temporary directory that removes itself.
 class TempDir {
   public:
-    TempDir() {
-        std::string pattern = (fs::temp_directory_path() / "fragpath-bunny-XXXXXX").string();
+    explicit TempDir(const char* name = "fragpath-bunny-XXXXXX") {
+        std::string pattern = (fs::temp_directory_path() / name).string();
         if (!mkdtemp(pattern.data())) throw Error("cannot create a temporary directory in " + pattern);
         path_ = pattern;
     }
@@ -124,7 +132,7 @@ std::string fetchBunny() {
 struct Measured {
     std::string name;
     SceneMeasurement m;
-    std::optional<double> fetchSeconds;
+    std::optional<double> fetchSeconds, writeSeconds;
     std::optional<NativeMeasurement> native;
 };
 
@@ -245,7 +253,7 @@ int runSuite(const SuiteOptions& options) {
     for (const SuiteScene& s : scenes) {
         std::function<Scene()> make = s.make;
         long long triangles = s.triangles;
-        std::optional<double> fetchSeconds;
+        std::optional<double> fetchSeconds, writeSeconds;
         if (s.name == "bunny") {
             // Whatever goes wrong fetching or reading it, the bunny is skipped with a note: it is the one
             // scene that depends on the network.
@@ -270,6 +278,20 @@ int runSuite(const SuiteOptions& options) {
             skipped.push_back({s.name, reason});
             continue;
         }
+        std::optional<TempDir> glbDir;
+        if (s.name == "sphere-1m-glb") {
+            auto writeStart = SteadyClock::now();
+            glbDir.emplace("fragpath-glb-XXXXXX");
+            std::string glb = (glbDir->path() / "sphere-1m.glb").string();
+            Scene sphere = benchmarkSphereScene(1000000);
+            writeGlb(sphere, glb);
+            writeSeconds = secondsSince(writeStart);
+            make = [glb, camera = sphere.camera] {
+                Scene scene = loadScene(glb);
+                scene.camera = camera;  // the view of sphere-1m (a .glb written without one)
+                return scene;
+            };
+        }
         std::printf("\n== %s ==\n", s.name.c_str());
         std::fflush(stdout);  // so that a long scene shows which one it is
         SceneMeasurement m = measureScene(make, options.settings);
@@ -278,14 +300,18 @@ int runSuite(const SuiteOptions& options) {
                         " triangles and has " + std::to_string(m.stats.triangles));
         if (fetchSeconds)
             std::printf("fetched          in %.3f s with npm (not in the first frame)\n", *fetchSeconds);
+        if (writeSeconds)
+            std::printf("written          as a .glb in %.3f s (not in the first frame)\n", *writeSeconds);
         printMeasurement(m, m.sceneFirstFrameSeconds(), std::nullopt);
         std::optional<NativeMeasurement> native;
-        if (options.native) {
+        if (options.native && !s.native) {
+            std::printf("native           not measured: the native reference has no glTF materials\n");
+        } else if (options.native) {
             native = measureNative(make, options.settings);
             printNative(*native, m);
         }
         std::fflush(stdout);
-        measured.push_back({s.name, std::move(m), fetchSeconds, std::move(native)});
+        measured.push_back({s.name, std::move(m), fetchSeconds, writeSeconds, std::move(native)});
     }
     printSummary(measured, options, environment);
     if (!measured.empty()) printCornellShares(measured);
@@ -300,6 +326,7 @@ int runSuite(const SuiteOptions& options) {
             nlohmann::json scene = measurementJson(e.m, e.m.sceneFirstFrameSeconds());
             scene["name"] = e.name;
             if (e.fetchSeconds) scene["fetch_seconds"] = *e.fetchSeconds;
+            if (e.writeSeconds) scene["write_seconds"] = *e.writeSeconds;
             if (e.native) scene["native"] = nativeJson(*e.native, e.m);
             if (std::optional<CornellShare> share = cornellShare(e, measured)) {
                 scene["share_of_cornell"] = share->gpu;

@@ -12,13 +12,13 @@ namespace {
 using Names = std::vector<std::string>;
 
 TEST(BenchSuite, ScenesRunSmallestFirstWithTheBunnyAmongThem) {
-    EXPECT_EQ(suiteSceneNames(),
-              (Names{"cornell", "sphere-1k", "bunny", "sphere-100k", "soup-100k", "sphere-1m"}));
+    EXPECT_EQ(suiteSceneNames(), (Names{"cornell", "sphere-1k", "bunny", "sphere-100k", "soup-100k",
+                                        "sphere-1m", "sphere-1m-glb"}));
 }
 
 TEST(BenchSuite, DefaultIsEverySceneButTheBunny) {
     EXPECT_EQ(selectSuiteScenes({}, false),
-              (Names{"cornell", "sphere-1k", "sphere-100k", "soup-100k", "sphere-1m"}));
+              (Names{"cornell", "sphere-1k", "sphere-100k", "soup-100k", "sphere-1m", "sphere-1m-glb"}));
     EXPECT_EQ(selectSuiteScenes({}, true), suiteSceneNames());
 }
 
