@@ -155,12 +155,13 @@ PackedScene packScene(const Scene& scene, const Bvh& bvh) {
         out.triangles.emplace_back(t.p[1] - t.p[0], pmf[i]);
         out.triangles.emplace_back(t.p[2] - t.p[0], triangleFlags[t.material]);
         if (tangents) {
-            if (scene.tangents.empty()) {
+            const std::array<glm::vec4, 3>* given =
+                scene.tangents.empty() ? nullptr : &scene.tangents[bvh.primIndex[i]];
+            if (!given || (*given)[0].w == 0.0f || (*given)[1].w == 0.0f || (*given)[2].w == 0.0f) {
                 glm::vec4 tangent = triangleTangent(t);
                 for (int v = 0; v < 3; ++v) out.tangents.push_back(tangent);
             } else {
-                for (const glm::vec4& tangent : scene.tangents[bvh.primIndex[i]])
-                    out.tangents.push_back(tangent);
+                for (const glm::vec4& tangent : *given) out.tangents.push_back(tangent);
             }
         }
         for (const glm::vec3& normal : t.n) out.normals.emplace_back(normal, 0.0f);

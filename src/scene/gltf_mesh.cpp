@@ -135,6 +135,27 @@ void appendPrimitive(const tinygltf::Model& model, const MeshInstance& instance,
     }
     uint32_t material = materials.use(primitive.material, !uv.empty());
 
+    // TANGENT (xyz the direction of increasing u, w the bitangent's sign), for a normal map: in world
+    // space by the linear part, w turned with a mirroring transform (cross(M n, M t) = det(M) M cross(n,
+    // t) for orthogonal M). glTF's bitangent points up the image, as ours (increasing v once flipped)
+    // does, so w is taken as it is. Without it, or with a zero-length or non-finite one, the packer
+    // computes each triangle's own.
+    std::vector<glm::vec4> tangents;
+    auto tangent = primitive.attributes.find("TANGENT");
+    if (tangent != primitive.attributes.end() && scene->materials[material].normalTexture >= 0) {
+        AccessorData data(model, tangent->second, "TANGENT of " + where, name);
+        data.require(TINYGLTF_TYPE_VEC4, {TINYGLTF_COMPONENT_TYPE_FLOAT}, false, "VEC4 of FLOAT");
+        sameCount(data);
+        tangents.resize(vertexCount);
+        for (size_t i = 0; i < vertexCount; ++i) {
+            glm::dvec3 t(data.real(i, 0), data.real(i, 1), data.real(i, 2));
+            double w = data.real(i, 3);
+            glm::vec3 unit;
+            if (finite(t) && std::isfinite(w) && unitVector(linear * t, &unit))
+                tangents[i] = glm::vec4(unit, (w < 0.0) != flip ? -1.0f : 1.0f);
+        }
+    }
+
     std::optional<AccessorData> indices;
     if (primitive.indices >= 0) {
         indices.emplace(model, primitive.indices, "indices of " + where, name);
@@ -195,6 +216,13 @@ void appendPrimitive(const tinygltf::Model& model, const MeshInstance& instance,
             if (!uv.empty()) tri.uv[k] = uv[corner[k]];
         }
         tri.material = material;
+        if (!tangents.empty()) {
+            // Earlier triangles without tangents get triples of w = 0: computed when packing.
+            scene->tangents.resize(scene->triangles.size());
+            scene->tangents.push_back({tangents[corner[0]], tangents[corner[1]], tangents[corner[2]]});
+        } else if (!scene->tangents.empty()) {
+            scene->tangents.emplace_back();
+        }
         scene->triangles.push_back(tri);
     }
 }

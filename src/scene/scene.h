@@ -223,8 +223,9 @@ struct Scene {
     std::vector<Material> materials;  // never empty once loaded
     std::vector<Texture> textures;    // what Material's *Texture fields index
     // Optional per-vertex tangents of normal-mapped triangles, one array per triangle (empty: computed
-    // from positions and uvs when packing): xyz the tangent (the direction of increasing u), w = +-1
-    // the bitangent's sign, bitangent = w cross(n, tangent), as glTF's TANGENT attribute.
+    // from positions and uvs when packing; so is a triangle with a w of 0): xyz the tangent (the
+    // direction of increasing u), w = +-1 the bitangent's sign, bitangent = w cross(n, tangent), as
+    // glTF's TANGENT attribute.
     std::vector<std::array<glm::vec4, 3>> tangents;
     std::optional<Camera> camera;  // from a scene file; absent for a bare OBJ
     RenderDefaults defaults;

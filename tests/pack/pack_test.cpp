@@ -370,8 +370,8 @@ TEST(PackScene, TangentsFromPositionsAndUvs) {
     EXPECT_NEAR(tangent.y, 0.0f, 1e-6f);
 }
 
-// Tangents a loader gives (glTF's TANGENT) are packed as given, in leaf order; without them each
-// triangle's own is repeated at its three vertices.
+// Tangents a loader gives (glTF's TANGENT) are packed as given, in leaf order; without them, or where a
+// triple has a w of 0, each triangle's own is repeated at its three vertices.
 TEST(PackScene, GivenTangentsArePackedInLeafOrder) {
     Scene s = texturedScene(40);
     s.materials[0].normalTexture = 0;
@@ -388,6 +388,14 @@ TEST(PackScene, GivenTangentsArePackedInLeafOrder) {
     for (size_t i = 0; i < 40; ++i)
         for (int k = 0; k < 3; ++k)
             EXPECT_EQ(p.tangents[i * 3 + size_t(k)], s.tangents[bvh.primIndex[i]][size_t(k)]);
+    // A triple with a w of 0 was not given (a glTF primitive without TANGENT): computed.
+    s.tangents[7][1].w = 0.0f;
+    p = packScene(s, bvh);
+    for (size_t i = 0; i < 40; ++i)
+        for (int k = 0; k < 3; ++k)
+            EXPECT_EQ(p.tangents[i * 3 + size_t(k)], bvh.primIndex[i] == 7
+                                                         ? triangleTangent(s.triangles[7])
+                                                         : s.tangents[bvh.primIndex[i]][size_t(k)]);
     s.tangents.pop_back();
     EXPECT_THROW(packScene(s, bvh), Error);
 }

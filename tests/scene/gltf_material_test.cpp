@@ -240,6 +240,42 @@ TEST(GltfMaterial, MapsAreTheModelsTexturesAndGlassTakesTheirMeans) {
     EXPECT_EQ(all.find("unused"), std::string::npos) << all;
 }
 
+// TANGENT reaches Scene::tangents for normal-mapped primitives, in world space: the tangent through
+// the node's linear transform, w turned by a mirroring one (whose winding flip also reorders the
+// corners); a normal-mapped primitive without TANGENT gets w = 0 (computed when packing), and a
+// primitive without a normal map keeps none.
+TEST(GltfMaterial, TangentsOfNormalMappedPrimitivesInWorldSpace) {
+    GltfBuilder b;
+    int flat = addTexture(b, test::checkerTexels(1, 1, {128, 128, 255}, {128, 128, 255}), 1, 1);
+    int mapped = b.material({{"pbrMetallicRoughness", pbr(0, 1)}, {"normalTexture", {{"index", flat}}}});
+    int plain = b.material({{"pbrMetallicRoughness", pbr(0, 1)}});
+    auto withTangents = [&](int material) {
+        json p = quadPrimitive(b, material);
+        p["attributes"]["TANGENT"] = b.vec4({{1, 0, 0, 1}, {1, 0, 0, 1}, {0, 1, 0, -1}, {0, 1, 0, -1}});
+        return p;
+    };
+    b.mesh(json::array({withTangents(mapped), quadPrimitive(b, mapped), withTangents(plain)}));
+    // Mirrored in x, then turned a quarter about z: x -> -x -> -y... (rotation applies after scale).
+    const double s = std::sqrt(0.5);
+    b.node({{"mesh", 0}, {"scale", {-1, 1, 1}}, {"rotation", {0, 0, s, s}}});
+    b.scene({0});
+    test::TempDir dir;
+    Scene scene = loadScene(dir.write("m.gltf", b.gltf()));
+    ASSERT_EQ(scene.triangles.size(), 6u);
+    ASSERT_EQ(scene.tangents.size(), 6u);
+    // The quad's first triangle is corners (0, 1, 2), reordered (0, 2, 1) by the mirror. Tangent (1, 0,
+    // 0) mirrors to (-1, 0, 0) and turns to (0, -1, 0); (0, 1, 0) turns to (-1, 0, 0); w flips sign.
+    const std::array<glm::vec4, 3>& first = scene.tangents[0];
+    auto near = [](const glm::vec4& x, const glm::vec4& y) {
+        return glm::all(glm::lessThan(glm::abs(x - y), glm::vec4(1e-6f)));
+    };
+    EXPECT_TRUE(near(first[0], {0, -1, 0, -1})) << first[0].x << " " << first[0].y << " " << first[0].w;
+    EXPECT_TRUE(near(first[1], {-1, 0, 0, 1})) << first[1].x << " " << first[1].y << " " << first[1].w;
+    EXPECT_TRUE(near(first[2], {0, -1, 0, -1})) << first[2].x << " " << first[2].y << " " << first[2].w;
+    for (size_t t = 2; t < 6; ++t)
+        for (const glm::vec4& tangent : scene.tangents[t]) EXPECT_EQ(tangent.w, 0.0f) << "triangle " << t;
+}
+
 TEST(GltfMaterial, TexturedMaterialWithoutItsTexcoordsGetsTheMeanColour) {
     GltfBuilder b;
     int checker = addTexture(b, test::checkerTexels(2, 2, {255, 0, 0}, {0, 0, 255}), 2, 2);

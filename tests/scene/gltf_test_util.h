@@ -65,6 +65,7 @@ class GltfBuilder {
 
     int vec3(const std::vector<glm::vec3>& v) { return accessor(raw(v), kFloat, v.size(), "VEC3"); }
     int vec2(const std::vector<glm::vec2>& v) { return accessor(raw(v), kFloat, v.size(), "VEC2"); }
+    int vec4(const std::vector<glm::vec4>& v) { return accessor(raw(v), kFloat, v.size(), "VEC4"); }
     int indices16(const std::vector<uint16_t>& v) {
         return accessor(raw(v), kUnsignedShort, v.size(), "SCALAR");
     }
