@@ -18,7 +18,11 @@ struct Hit {
     float t;
     int triangle;  // -1: nothing hit
     vec2 uv;       // barycentrics of v1 and v2
+    int instance;  // the first node of the instance's transform pair (pack/layout.h), -1: world triangle
 };
+
+// The instance the traversal is in (INSTANCE_NODES_START scenes), for the hits it records.
+int gInstance = -1;
 
 #include "common/opacity.glsl"
 
@@ -89,7 +93,7 @@ bool intersectLeaves(Ray ray, uvec4 first, uvec4 count, bool anyHit, inout Hit h
             // Alpha and back-face culling: a hit the surface does not cover is no hit at all.
             if (tri.flags != 0.0 && !coversHit(ray, tri, int(i), uv)) continue;
 #endif
-            hit = Hit(t, int(i), uv);
+            hit = Hit(t, int(i), uv, gInstance);
             if (anyHit) return true;
         }
     }
@@ -111,19 +115,46 @@ void orderPair(inout float ta, inout uint la, inout float tb, inout uint lb) {
 // parent: one node visit tests four boxes, the leaf children hit are intersected at once, and the
 // interior children hit are visited nearest first (a five-comparison sorting network, no branches:
 // on llvmpipe every branch costs the whole SIMD group).
-bool traverse(Ray ray, float tMax, bool anyHit, out Hit hit) {
-    hit = Hit(tMax, -1, vec2(0.0));
+// 1 / d per axis, tiny components made tiny numbers instead of zeros, so that no 0 * inf = NaN reaches
+// the slab test.
+vec3 safeInverse(vec3 d) { return 1.0 / mix(d, vec3(1e-20), lessThan(abs(d), vec3(1e-20))); }
+
+#ifdef INSTANCE_NODES_START
+// A stack entry no node can have: "leave the instance" (interior links are below 2^31).
+const uint kLeaveInstance = 0xFFFFFFFFu;
+#endif
+
+bool traverse(Ray worldRay, float tMax, bool anyHit, out Hit hit) {
+    hit = Hit(tMax, -1, vec2(0.0), -1);
     gRayCount += 1.0;
     gNodesVisited = 0;
     gTrianglesTested = 0;
-    // Tiny direction components become tiny numbers instead of zeros, so that no 0 * inf = NaN
-    // reaches the slab test.
-    vec3 safeDir = mix(ray.dir, vec3(1e-20), lessThan(abs(ray.dir), vec3(1e-20)));
-    vec3 invDir = 1.0 / safeDir;
+#ifdef SURFACE_OPACITY
+    gCameraTrace = isCameraRay(worldRay);
+#endif
+    Ray ray = worldRay;
+    vec3 invDir = safeInverse(ray.dir);
     uint stack[BVH_STACK_SIZE];
     int size = 0;
     uint node = 0u;
+#ifdef INSTANCE_NODES_START
+    // Two levels (pack/layout.h): a link to an instance's node pair moves the ray into the instance's
+    // space (the direction not renormalised, so that t means the same in both) until the entry below
+    // the instance's subtree, kLeaveInstance, brings it back.
+    vec3 worldInvDir = invDir;
+    gInstance = -1;
+#endif
     while (true) {
+#ifdef INSTANCE_NODES_START
+        if (node >= INSTANCE_NODES_START) {
+            int base = int(node) * NODE_TEXELS;
+            ray = Ray(transformRows(base, worldRay.origin, 1.0), transformRows(base, worldRay.dir, 0.0));
+            invDir = safeInverse(ray.dir);
+            gInstance = int(node);
+            stack[size++] = kLeaveInstance;
+            node = nodeTexel(base + 3).x;  // the root of its mesh's BVH
+        }
+#endif
         ++gNodesVisited;
         int base = int(node) * NODE_TEXELS;  // one 64-byte node, laid out as layout.h says
         uvec4 link = nodeTexel(base + NODE_LINK_TEXEL);  // child links
@@ -155,6 +186,15 @@ bool traverse(Ray ray, float tMax, bool anyHit, out Hit hit) {
         } else {
             if (size == 0) break;
             node = stack[--size];
+#ifdef INSTANCE_NODES_START
+            if (node == kLeaveInstance) {
+                ray = worldRay;
+                invDir = worldInvDir;
+                gInstance = -1;
+                if (size == 0) break;
+                node = stack[--size];
+            }
+#endif
         }
     }
     return hit.triangle >= 0;

@@ -40,18 +40,19 @@ float coverageHash(Ray ray, int i) {
 // camera's view: light and every other ray meet both of its sides, so that such a wall still casts
 // shadows and holds light in, and visibility stays symmetric, which bidirectional estimators need (a
 // surface that let light through one way only would be seen differently by light subpaths). Camera
-// rays are the rays from the pinhole (camera.glsl isCameraRay); bdpt's joins of light vertices to the
+// rays are the rays from the lens (camera.glsl isCameraRay, asked of the world ray); bdpt's joins of light vertices to the
 // eye are traced the other way and say so with gTowardTheEye, and check the joined vertex's own side
 // (light_trace.frag.glsl).
 bool isCameraRay(Ray ray);
 bool gTowardTheEye = false;
+bool gCameraTrace = false;  // whether the traversal under way is of a camera ray (set from the world ray)
 
 // Whether the hit of `ray` at barycentrics b of triangle i (whose flags are not 0) counts.
 bool coversHit(Ray ray, TriangleData tri, int i, vec2 b) {
     int flags = int(tri.flags);
     if ((flags & TRIANGLE_SINGLE_SIDED_FLAG) != 0) {
         bool front = dot(cross(tri.e1, tri.e2), ray.dir) < 0.0;
-        if (gTowardTheEye ? front : !front && isCameraRay(ray)) return false;
+        if (gTowardTheEye ? front : !front && gCameraTrace) return false;
     }
     if ((flags & TRIANGLE_ALPHA_FLAG) == 0) return true;
     float coverage = materialCoverage(tri.material, i, b);

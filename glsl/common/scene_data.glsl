@@ -58,3 +58,18 @@ vec3 fetchShadingNormal(int i, vec2 uv) {
 vec3 materialEmission(int m) { return materialTexel(m * MATERIAL_TEXELS + 1).rgb; }
 
 #include "common/luminance.glsl"
+
+#ifdef INSTANCE_NODES_START
+// Point or direction (w = 0) p through the 3 x 4 transform whose rows start at node texel `base` (an
+// instance's node pair, pack/layout.h).
+vec3 transformRows(int base, vec3 p, float w) {
+    vec4 r0 = uintBitsToFloat(nodeTexel(base)), r1 = uintBitsToFloat(nodeTexel(base + 1)),
+         r2 = uintBitsToFloat(nodeTexel(base + 2));
+    return vec3(dot(r0.xyz, p) + w * r0.w, dot(r1.xyz, p) + w * r1.w, dot(r2.xyz, p) + w * r2.w);
+}
+
+// The hit being shaded's instance (surface.glsl placeInInstance): gInstanceLinear takes its tangents to
+// the world, gInstanceNormals (the inverse transpose) its normals.
+mat3 gInstanceLinear = mat3(1.0);
+mat3 gInstanceNormals = mat3(1.0);
+#endif

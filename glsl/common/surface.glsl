@@ -60,9 +60,31 @@ void applyTextureMaps(inout Surface s, Hit hit, vec3 ns) {
 }
 #endif
 
+#ifdef INSTANCE_NODES_START
+// The instance a hit is in, from its node pair (pack/layout.h): tri (stored in the mesh's space) placed
+// in the world by object-to-world (the pair's second node), and the matrices for the rest of the hit's
+// frame (scene_data.glsl). Identity for world triangles.
+void placeInInstance(inout TriangleData tri, int instance) {
+    gInstanceLinear = mat3(1.0);
+    gInstanceNormals = mat3(1.0);
+    if (instance < 0) return;
+    int toObject = instance * NODE_TEXELS, toWorld = toObject + NODE_TEXELS;
+    tri.v0 = transformRows(toWorld, tri.v0, 1.0);
+    tri.e1 = transformRows(toWorld, tri.e1, 0.0);
+    tri.e2 = transformRows(toWorld, tri.e2, 0.0);
+    gInstanceLinear = transpose(mat3(uintBitsToFloat(nodeTexel(toWorld).xyz), uintBitsToFloat(nodeTexel(toWorld + 1).xyz),
+                                     uintBitsToFloat(nodeTexel(toWorld + 2).xyz)));
+    gInstanceNormals = mat3(uintBitsToFloat(nodeTexel(toObject).xyz), uintBitsToFloat(nodeTexel(toObject + 1).xyz),
+                            uintBitsToFloat(nodeTexel(toObject + 2).xyz));
+}
+#endif
+
 Surface surfaceAt(Ray ray, Hit hit) {
     ++gSurfacesShaded;
     TriangleData tri = fetchTriangle(hit.triangle);
+#ifdef INSTANCE_NODES_START
+    placeInInstance(tri, hit.instance);
+#endif
     Surface s;
     // From the barycentrics, not ray.origin + t dir, whose error grows with the ray's length and origin.
     s.position = tri.v0 + hit.uv.x * tri.e1 + hit.uv.y * tri.e2;
@@ -71,6 +93,9 @@ Surface surfaceAt(Ray ray, Hit hit) {
     s.frontFace = dot(n, ray.dir) < 0.0;
     s.geometricNormal = s.frontFace ? n : -n;
     vec3 ns = fetchShadingNormal(hit.triangle, hit.uv);
+#ifdef INSTANCE_NODES_START
+    ns = normalize(gInstanceNormals * ns);
+#endif
     s.shadingNormal = dot(ns, s.geometricNormal) < 0.0 ? -ns : ns;
     orthonormalBasis(s.shadingNormal, s.tangent, s.bitangent);
     s.materialIndex = tri.material;

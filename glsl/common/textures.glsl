@@ -98,6 +98,9 @@ vec4 tangentTexel(int i) { return SCENE_TEXEL(uTangents, i); }
 vec3 normalMapped(int t, float scale, int i, vec2 b, vec2 uv, vec3 n) {
     vec4 tw = (1.0 - b.x - b.y) * tangentTexel(i * TANGENT_TEXELS) + b.x * tangentTexel(i * TANGENT_TEXELS + 1) +
               b.y * tangentTexel(i * TANGENT_TEXELS + 2);
+#ifdef INSTANCE_NODES_START
+    tw.xyz = gInstanceLinear * tw.xyz;  // an instance's tangents are in its mesh's space (surface.glsl)
+#endif
     vec3 tangent = tw.xyz - n * dot(n, tw.xyz);
     if (!(dot(tangent, tangent) > 1e-12)) return n;
     tangent = normalize(tangent);

@@ -49,6 +49,9 @@ std::string formatRenderStats(const RenderStats& stats) {
     text += formatText("renderer         %s\n", stats.renderer.c_str());
     text += formatText("scene            %s\n", stats.scene.c_str());
     text += formatText("triangles        %u (%u emissive)\n", s.triangles, s.emitters);
+    if (s.instances > 0)
+        text += formatText("instances        %u: %u triangles stored, %u drawn\n", s.instances,
+                           s.storedTriangles, s.triangles);
     if (s.punctualLights > 0) text += formatText("punctual lights  %u\n", s.punctualLights);
     text += formatText(
         "bvh              %u nodes, %u leaves, depth %u, leaf size %u..%u (mean %.2f), SAH cost %.2f\n",
@@ -121,6 +124,8 @@ nlohmann::json renderStatsJson(const RenderStats& stats) {
         {"scene", stats.scene},
         {"output", stats.output},
         {"triangles", s.triangles},
+        {"stored_triangles", s.storedTriangles},
+        {"instances", s.instances},
         {"emitters", s.emitters},
         {"punctual_lights", s.punctualLights},
         {"bvh", bvh},

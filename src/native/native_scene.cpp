@@ -9,6 +9,7 @@
 #include "core/error.h"
 #include "pack/layout.h"
 #include "pack/light_strategy.h"
+#include "scene/instancing.h"
 #include "scene/light_selection.h"
 
 namespace fp::native {
@@ -32,7 +33,9 @@ std::optional<std::string> unsupportedFeature(const fp::Scene& scene) {
     return std::nullopt;
 }
 
-Scene buildScene(const fp::Scene& scene, const BvhBuildOptions& options) {
+namespace {
+
+Scene buildFlatScene(const fp::Scene& scene, const BvhBuildOptions& options) {
     if (scene.triangles.empty()) throw Error(scene.source + ": the native reference needs triangles");
     if (auto why = unsupportedFeature(scene)) throw Error(scene.source + ": " + *why);
     Scene out;
@@ -82,6 +85,14 @@ Scene buildScene(const fp::Scene& scene, const BvhBuildOptions& options) {
                     " levels deep, more than the native reference's stack holds");
 
     return out;
+}
+
+}  // namespace
+
+Scene buildScene(const fp::Scene& scene, const BvhBuildOptions& options) {
+    // One level: instances become world triangles (the two-level BVH is the GPU renderer's own).
+    return scene.instances.empty() ? buildFlatScene(scene, options)
+                                   : buildFlatScene(flattenInstances(scene), options);
 }
 
 }  // namespace fp::native

@@ -46,6 +46,19 @@
 //                                            on cornell, sphere-100k and sphere-1m; the exact boxes of
 //                                            112-byte nodes took 57.8-61.1; docs/optimisation-log.md,
 //                                            entry 21).
+//                                            With instances (scene/instancing.h), two levels
+//                                            (the renderer then compiles INSTANCES): node 0 is the root
+//                                            of a top level over the instances (and the world
+//                                            triangles as one more, untransformed), whose leaves are
+//                                            interior links to instance node pairs; then the world
+//                                            triangles' BVH and each mesh's, with node and triangle
+//                                            indices of the whole buffers; then, from node
+//                                            INSTANCE_NODES_START, two nodes per instance: the first
+//                                            holds the rows of its world-to-object transform (3 x 4,
+//                                            float bits) and then (root of its BVH, 0, 0, 0), the second
+//                                            the rows of object-to-world and (0, 0, 0, 0). Triangles are
+//                                            stored once, in object space: the world's, then each
+//                                            mesh's, in leaf order. Rays enter an instance in its space.
 //  materials     RGBA32F    7 per material   (Kd.rgb, type) (Ke.rgb, roughness) (Ks.rgb, ior) (Tf.rgb, B)
 //                                            (diffuse map, metallic-roughness map, emission map, normal map)
 //                                            (alpha map, alpha, alpha cutoff, alpha mode)

@@ -7,6 +7,7 @@
 #include "bvh/wide_bvh.h"
 #include "core/error.h"
 #include "pack/layout.h"
+#include "scene/instancing.h"
 #include "scene/light_selection.h"
 #include "scene/punctual_light.h"
 #include "scene/spectrum.h"
@@ -81,10 +82,10 @@ size_t PackedScene::geometryBytes() const {
 namespace {
 
 // Texture coordinates in leaf order, and every texture's texels with its table entry (pack/layout.h).
-void packTextures(const Scene& scene, const Bvh& bvh, PackedScene* out) {
-    out->texcoords.reserve(bvh.primIndex.size() * layout::kTexcoordTexels);
-    for (uint32_t prim : bvh.primIndex)
-        for (const glm::vec2& uv : scene.triangles[prim].uv) out->texcoords.push_back(uv);
+void packTextures(const Scene& scene, const std::vector<const Triangle*>& ordered, PackedScene* out) {
+    out->texcoords.reserve(ordered.size() * layout::kTexcoordTexels);
+    for (const Triangle* t : ordered)
+        for (const glm::vec2& uv : t->uv) out->texcoords.push_back(uv);
     size_t texels = 0;
     for (const Texture& t : scene.textures) texels += size_t(t.image.width) * size_t(t.image.height);
     // The table holds offsets as signed 32-bit integers.
@@ -100,14 +101,115 @@ void packTextures(const Scene& scene, const Bvh& bvh, PackedScene* out) {
     }
 }
 
+// A wide BVH's nodes quantised into out->nodes from node `nodeBase` on, its interior links moved by
+// nodeBase and its leaves' triangle ranges by triangleBase (a mesh's BVH among others: pack/layout.h).
+void appendNodes(WideBvh wide, uint32_t nodeBase, uint32_t triangleBase, PackedScene* out) {
+    for (WideBvhNode& node : wide.nodes)
+        for (int c = 0; c < node.childCount; ++c)
+            node.first[c] += node.count[c] > 0 ? triangleBase : nodeBase;
+    out->nodes.resize(size_t(nodeBase + wide.nodes.size()) * layout::kNodeTexels);
+    for (size_t i = 0; i < wide.nodes.size(); ++i) {
+        layout::QuantisedNode q = layout::quantiseNode(wide.nodes[i]);
+        std::copy(q.begin(), q.end(), &out->nodes[(nodeBase + i) * layout::kNodeTexels]);
+    }
+}
+
+// The rows of an affine transform's upper 3 x 4 as uint bits, then (root, 0, 0, 0): half of an instance's
+// node pair (pack/layout.h).
+void appendTransformNode(const glm::mat4& m, uint32_t root, PackedScene* out) {
+    for (int r = 0; r < 3; ++r)
+        out->nodes.push_back(glm::floatBitsToUint(glm::vec4(m[0][r], m[1][r], m[2][r], m[3][r])));
+    out->nodes.push_back(glm::uvec4(root, 0u, 0u, 0u));
+}
+
+// The two-level BVH of a scene with instances (pack/layout.h): the top level over the instances (and
+// the world triangles as one more, untransformed), then the world triangles' BVH, each mesh's, and each
+// instance's pair of transform nodes. Returns the depth a traversal can reach.
+uint32_t packTwoLevel(const Scene& scene, const Bvh& bvh, const std::vector<Bvh>& meshBvhs,
+                      const std::vector<uint32_t>& meshTriangleBase, PackedScene* out) {
+    struct Entry {
+        uint32_t bvh;  // 0: the world triangles' BVH; m + 1: mesh m's
+        glm::mat4 objectToWorld;
+    };
+    std::vector<Entry> entries;
+    AabbArray bounds;
+    if (!scene.triangles.empty()) {
+        entries.push_back({0, glm::mat4(1.0f)});
+        bounds.push_back(bvh.nodes[0].bounds);
+    }
+    for (const Instance& instance : scene.instances) {
+        entries.push_back({instance.mesh + 1, instance.objectToWorld});
+        bounds.push_back(instanceBounds(scene, instance));
+    }
+    BvhBuildOptions topOptions;
+    topOptions.maxLeafSize = 1;  // each leaf is one instance, which its link names
+    topOptions.threadCount = 1;
+    Bvh top = buildBinnedSah(bounds, topOptions);
+    WideBvh topWide = collapseToWide(top);
+    std::vector<WideBvh> levels;
+    levels.push_back(scene.triangles.empty() ? WideBvh{} : collapseToWide(bvh));
+    for (const Bvh& mesh : meshBvhs) levels.push_back(collapseToWide(mesh));
+    std::vector<uint32_t> root(levels.size());
+    uint32_t next = uint32_t(topWide.nodes.size()), depth = 0;
+    for (size_t k = 0; k < levels.size(); ++k) {
+        root[k] = next;
+        next += uint32_t(levels[k].nodes.size());
+        depth = std::max(depth, levels[k].depth);
+    }
+    const uint32_t instanceNodes = next;
+    // The top level's leaves become links to their instance's node pair.
+    for (WideBvhNode& node : topWide.nodes)
+        for (int c = 0; c < node.childCount; ++c)
+            if (node.count[c] > 0) {
+                node.first[c] = instanceNodes + 2 * top.primIndex[node.first[c]];
+                node.count[c] = 0;
+            }
+    appendNodes(topWide, 0, 0, out);
+    for (size_t k = 0; k < levels.size(); ++k)
+        appendNodes(levels[k], root[k], k == 0 ? 0 : meshTriangleBase[k - 1], out);
+    for (const Entry& e : entries) {
+        appendTransformNode(glm::inverse(e.objectToWorld), root[e.bvh], out);
+        appendTransformNode(e.objectToWorld, 0, out);
+    }
+    out->instanceCount = uint32_t(entries.size());
+    out->instanceNodeStart = instanceNodes;
+    out->nodeCount = uint32_t(out->nodes.size() / layout::kNodeTexels);
+    return topWide.depth + 1 + depth;
+}
+
 }  // namespace
 
-PackedScene packScene(const Scene& scene, const Bvh& bvh) {
+PackedScene packScene(const Scene& scene, const Bvh& bvh, const std::vector<Bvh>& meshBvhs) {
     PackedScene out;
-    const size_t n = bvh.primIndex.size();
-    if (n != scene.triangles.size() || n == 0 || bvh.nodes.empty())
+    const size_t worldTriangles = bvh.primIndex.size();
+    if (worldTriangles != scene.triangles.size() || (worldTriangles > 0 && bvh.nodes.empty()) ||
+        meshBvhs.size() != (scene.instances.empty() ? 0 : scene.meshes.size()))
         throw Error("internal: BVH does not match the scene's " + std::to_string(scene.triangles.size()) +
                     " triangles");
+    validateInstances(scene);
+    // Every triangle stored, in leaf order: the world triangles', then each mesh's.
+    std::vector<const Triangle*> ordered;
+    std::vector<const std::array<glm::vec4, 3>*> orderedTangents;
+    auto add = [&](const std::vector<Triangle>& triangles,
+                   const std::vector<std::array<glm::vec4, 3>>& tangents, const Bvh& tree) {
+        if (!tangents.empty() && tangents.size() != triangles.size())
+            throw Error("internal: " + std::to_string(tangents.size()) + " tangent triples for " +
+                        std::to_string(triangles.size()) + " triangles");
+        for (uint32_t prim : tree.primIndex) {
+            ordered.push_back(&triangles[prim]);
+            orderedTangents.push_back(tangents.empty() ? nullptr : &tangents[prim]);
+        }
+    };
+    add(scene.triangles, scene.tangents, bvh);
+    std::vector<uint32_t> meshTriangleBase;
+    for (size_t m = 0; m < meshBvhs.size(); ++m) {
+        if (meshBvhs[m].primIndex.size() != scene.meshes[m].triangles.size())
+            throw Error("internal: BVH does not match instanced mesh " + std::to_string(m));
+        meshTriangleBase.push_back(uint32_t(ordered.size()));
+        add(scene.meshes[m].triangles, scene.meshes[m].tangents, meshBvhs[m]);
+    }
+    const size_t n = ordered.size();
+    if (n == 0) throw Error("internal: a scene without triangles");
     if (n >= layout::kMaxFloatIndex || scene.materials.size() >= layout::kMaxFloatIndex)
         throw Error(scene.source + ": " + std::to_string(n) + " triangles and " +
                     std::to_string(scene.materials.size()) + " materials; the GPU layout addresses at most " +
@@ -115,9 +217,11 @@ PackedScene packScene(const Scene& scene, const Bvh& bvh) {
     out.triangleCount = uint32_t(n);
 
     // Emitters and their selection probabilities, proportional to emitted power (luminance * area).
+    // (Emitters are world triangles: instancing.h.)
     EmitterPmfs emitters = emitterPmfs(scene, bvh.primIndex.data(), bvh.primIndex.size());
     out.totalLightPower = float(emitters.totalPower);
-    const std::vector<float>& pmf = emitters.pmf;
+    std::vector<float> pmf = emitters.pmf;
+    pmf.resize(n, 0.0f);
 
     bool textured = false;
     std::vector<float> triangleFlags(scene.materials.size(), 0.0f);
@@ -141,22 +245,18 @@ PackedScene packScene(const Scene& scene, const Bvh& bvh) {
         for (const glm::vec4& texel : packMaterial(shaderMaterial(m))) out.materials.push_back(texel);
     }
     const bool tangents = (out.surfaceMaps & layout::kNormalMapBit) != 0;
-    if (tangents && !scene.tangents.empty() && scene.tangents.size() != scene.triangles.size())
-        throw Error("internal: " + std::to_string(scene.tangents.size()) + " tangent triples for " +
-                    std::to_string(scene.triangles.size()) + " triangles");
 
     out.triangles.reserve(n * layout::kTriangleTexels);
     out.normals.reserve(n * layout::kNormalTexels);
     if (tangents) out.tangents.reserve(n * layout::kTangentTexels);
     float cdf = 0.0f;
     for (size_t i = 0; i < n; ++i) {
-        const Triangle& t = scene.triangles[bvh.primIndex[i]];
+        const Triangle& t = *ordered[i];
         out.triangles.emplace_back(t.p[0], float(t.material));
         out.triangles.emplace_back(t.p[1] - t.p[0], pmf[i]);
         out.triangles.emplace_back(t.p[2] - t.p[0], triangleFlags[t.material]);
         if (tangents) {
-            const std::array<glm::vec4, 3>* given =
-                scene.tangents.empty() ? nullptr : &scene.tangents[bvh.primIndex[i]];
+            const std::array<glm::vec4, 3>* given = orderedTangents[i];
             if (!given || (*given)[0].w == 0.0f || (*given)[1].w == 0.0f || (*given)[2].w == 0.0f) {
                 glm::vec4 tangent = triangleTangent(t);
                 for (int v = 0; v < 3; ++v) out.tangents.push_back(tangent);
@@ -202,15 +302,15 @@ PackedScene packScene(const Scene& scene, const Bvh& bvh) {
         }
     }
 
-    if (textured) packTextures(scene, bvh, &out);
+    if (textured) packTextures(scene, ordered, &out);
 
-    WideBvh wide = collapseToWide(bvh);
-    out.nodeCount = uint32_t(wide.nodes.size());
-    out.bvhDepth = wide.depth;
-    out.nodes.resize(size_t(out.nodeCount) * layout::kNodeTexels);
-    for (uint32_t i = 0; i < out.nodeCount; ++i) {
-        layout::QuantisedNode q = layout::quantiseNode(wide.nodes[i]);
-        std::copy(q.begin(), q.end(), &out.nodes[size_t(i) * layout::kNodeTexels]);
+    if (scene.instances.empty()) {
+        WideBvh wide = collapseToWide(bvh);
+        out.bvhDepth = wide.depth;
+        appendNodes(std::move(wide), 0, 0, &out);
+        out.nodeCount = uint32_t(out.nodes.size() / layout::kNodeTexels);
+    } else {
+        out.bvhDepth = packTwoLevel(scene, bvh, meshBvhs, meshTriangleBase, &out);
     }
     return out;
 }

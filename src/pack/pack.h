@@ -29,6 +29,10 @@ struct PackedScene {
     // lightCount: entries of the light-selection cdf (emitter triangles, then punctual lights: layout.h);
     // punctualCount of them are punctual lights.
     uint32_t triangleCount = 0, nodeCount = 0, lightCount = 0, punctualCount = 0;
+    // Scenes with instances (pack/layout.h): the top level's entries (the instances, and the world
+    // triangles as one more when there are any) and the node where their transform pairs start; 0 and
+    // 0 otherwise.
+    uint32_t instanceCount = 0, instanceNodeStart = 0;
     uint32_t bvhDepth = 0;         // deepest (wide) node, root = 0: the traversal stack grows with it
     float totalLightPower = 0.0f;  // sum over lights of their power / pi (scene/light_selection.h)
 
@@ -60,6 +64,8 @@ glm::vec4 triangleTangent(const Triangle& t);
 // Throws fp::Error if the scene cannot be addressed by the layout (over 2^24 triangles or materials,
 // 2^31 texture texels, or a BVH node over 2^40 across: pack/quantised_node.h), or has a punctual light
 // that validatePunctualLight refuses.
-PackedScene packScene(const Scene& scene, const Bvh& bvh);
+// `bvh` is over the world triangles; a scene with instances also needs `meshBvhs`, one per
+// Scene::meshes entry over its triangles (empty without instances).
+PackedScene packScene(const Scene& scene, const Bvh& bvh, const std::vector<Bvh>& meshBvhs = {});
 
 }  // namespace fp

@@ -67,6 +67,17 @@ std::string renderFingerprint(const Scene& scene, const RenderSettings& settings
         f.value(t.n);
         f.value(t.material);
     }
+    // Instances (none in most scenes: their fingerprint is the one they had before instancing).
+    for (const InstancedMesh& mesh : scene.meshes)
+        for (const Triangle& t : mesh.triangles) {
+            f.value(t.p);
+            f.value(t.n);
+            f.value(t.material);
+        }
+    for (const Instance& instance : scene.instances) {
+        f.value(instance.mesh);
+        f.value(instance.objectToWorld);
+    }
     for (const Material& m : scene.materials) {
         f.value(m.type);
         f.value(m.diffuse);

@@ -31,6 +31,15 @@ Renderer::Renderer(const Scene& scene, ShaderLibrary shaders, const BvhBuildOpti
     bounds.reserve(scene.triangles.size());
     for (const Triangle& t : scene.triangles) bounds.push_back(t.bounds());
     Bvh bvh = buildBinnedSah(bounds, bvhOptions);
+    // Instanced meshes get a BVH each, in their own space (the top level is built when packing).
+    std::vector<Bvh> meshBvhs;
+    if (!scene.instances.empty())
+        for (const InstancedMesh& mesh : scene.meshes) {
+            AabbArray meshBounds;
+            meshBounds.reserve(mesh.triangles.size());
+            for (const Triangle& t : mesh.triangles) meshBounds.push_back(t.bounds());
+            meshBvhs.push_back(buildBinnedSah(meshBounds, bvhOptions));
+        }
     stats_.bvhBuildSeconds = secondsSince(start);
     stats_.bvhBuildCpuSeconds = processCpuSeconds() - cpuStart;
     stats_.bvhBuildThreads = buildThreadCount(bvhOptions);
@@ -40,8 +49,11 @@ Renderer::Renderer(const Scene& scene, ShaderLibrary shaders, const BvhBuildOpti
 
     start = SteadyClock::now();
     closeEmitters_ = emittersFaceCloseSurfaces(scene, bvh);
-    PackedScene packed = packScene(scene, bvh);
-    stats_.triangles = packed.triangleCount;
+    PackedScene packed = packScene(scene, bvh, meshBvhs);
+    stats_.triangles = uint32_t(scene.triangleCount());
+    stats_.storedTriangles = packed.triangleCount;
+    stats_.instances = uint32_t(scene.instances.size());
+    instanceNodeStart_ = packed.instanceNodeStart;
     stats_.emitters = packed.lightCount - packed.punctualCount;
     stats_.punctualLights = packed.punctualCount;
     stats_.gpuBytes = packed.bytes();
@@ -101,6 +113,9 @@ std::unique_ptr<Program> Renderer::compile(Integrator integrator, const char* fr
     }
     // Only scenes with alpha or single-sided materials test hits during traversal (common/opacity.glsl).
     if (surfaceOpacity_) defines.emplace_back("SURFACE_OPACITY", "1");
+    // Only scenes with instances traverse two levels (glsl/common/intersect.glsl).
+    if (instanceNodeStart_ > 0)
+        defines.emplace_back("INSTANCE_NODES_START", std::to_string(instanceNodeStart_) + "u");
     // Only scenes with point, spot or directional lights compile their sampling (glsl/common/lights.glsl).
     defines.emplace_back("PUNCTUAL_LIGHTS", punctualCount_ > 0 ? "1" : "0");
     auto vec3Literal = [](const glm::vec3& v) {

@@ -19,7 +19,9 @@
 namespace fp {
 
 struct SceneStats {
-    uint32_t triangles = 0, emitters = 0;
+    uint32_t triangles = 0, emitters = 0;  // triangles drawn: the world's and every instance's
+    uint32_t storedTriangles = 0;          // in the GPU buffers: each instanced mesh's once
+    uint32_t instances = 0;
     uint32_t punctualLights = 0;  // point, spot and directional lights that can be sampled (not black)
     BvhStats bvh;
     double bvhBuildSeconds = 0.0, uploadSeconds = 0.0;
@@ -91,13 +93,14 @@ class Renderer {
     SceneStats stats_;
     glm::vec3 environmentColor_{0.0f};
     float environmentRotation_ = 0.0f;
-    uint32_t materialTypes_ = 0;    // bit mask of the MaterialTypes in the scene
-    uint32_t lightCount_ = 0;       // entries of the light-selection cdf (pack/layout.h)
-    uint32_t punctualCount_ = 0;    // of them punctual lights: compile them in (PUNCTUAL_LIGHTS)
-    bool closeEmitters_ = false;    // LightSampling::Auto samples by solid angle (pack/light_strategy.h)
-    bool surfaceTextures_ = false;  // some material has a texture: compile the lookups in
-    int surfaceMaps_ = 0;           // which kinds of map (layout::MapBit): SURFACE_MAPS
-    bool surfaceOpacity_ = false;   // some material has alpha or is single-sided: SURFACE_OPACITY
+    uint32_t materialTypes_ = 0;      // bit mask of the MaterialTypes in the scene
+    uint32_t lightCount_ = 0;         // entries of the light-selection cdf (pack/layout.h)
+    uint32_t punctualCount_ = 0;      // of them punctual lights: compile them in (PUNCTUAL_LIGHTS)
+    uint32_t instanceNodeStart_ = 0;  // two-level BVH (INSTANCE_NODES_START); 0: one level
+    bool closeEmitters_ = false;      // LightSampling::Auto samples by solid angle (pack/light_strategy.h)
+    bool surfaceTextures_ = false;    // some material has a texture: compile the lookups in
+    int surfaceMaps_ = 0;             // which kinds of map (layout::MapBit): SURFACE_MAPS
+    bool surfaceOpacity_ = false;     // some material has alpha or is single-sided: SURFACE_OPACITY
     std::unique_ptr<SceneTextures> textures_;
     std::unique_ptr<EnvironmentTextures> environmentTextures_;  // only for an environment map
     std::unique_ptr<RenderTargets> targets_;

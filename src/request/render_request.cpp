@@ -6,6 +6,7 @@
 #include "core/log.h"
 #include "image/tone_map.h"
 #include "scene/builtin_scene.h"
+#include "scene/instancing.h"
 #include "scene/lighting.h"
 #include "scene/load.h"
 
@@ -45,6 +46,9 @@ std::vector<OptionGroup> requestOptionGroups(unsigned options, const FrontEndDef
         scene.options.push_back({"--strict", "", "",
                                  "every warning about repaired input (a missing texture, no light, ...)\nis "
                                  "an error: exit status 1 instead of a repaired render"});
+        scene.options.push_back({"--flatten-instances", "", "",
+                                 "store a glTF mesh that several nodes use once per node instead of\nonce "
+                                 "(one BVH over every triangle, no two-level traversal)"});
     }
     if (options & kIntegratorOption)
         path.options.push_back({"--integrator", "", "NAME",
@@ -183,11 +187,13 @@ RenderRequest::RenderRequest(const Args& args, const FrontEndDefaults& defaults)
         }
     }
     strict_ = args.has("--strict");
+    flattenInstances_ = args.has("--flatten-instances");
     setStrictWarnings(strict_);
 }
 
 Scene RenderRequest::loadScene() const {
     Scene scene = scenePath_ ? fp::loadScene(*scenePath_) : builtinCornellBox();
+    if (flattenInstances_ && !scene.instances.empty()) scene = flattenInstances(std::move(scene));
     switch (environment_) {
         case EnvironmentChoice::Default:
             lightIfUnlit(scene);

@@ -31,7 +31,7 @@ enum RequestOption : unsigned {
     kDisplayOptions = 1u << 7,    // --exposure, --tonemap
     kShaderOptions = 1u << 8,     // --shader-dir, --bvh-threads
     kBackendOption = 1u << 9,     // --backend NAME
-    kSceneOptions = 1u << 10,     // --environment none|default|FILE, --strict
+    kSceneOptions = 1u << 10,     // --environment none|default|FILE, --strict, --flatten-instances
 };
 constexpr unsigned kAllRequestOptions = (1u << 11) - 1;
 
@@ -108,6 +108,7 @@ class RenderRequest {
     EnvironmentChoice environment_ = EnvironmentChoice::Default;
     std::string environmentMap_;  // with EnvironmentChoice::Map
     bool strict_ = false;
+    bool flattenInstances_ = false;
 };
 
 }  // namespace fp

@@ -2,6 +2,7 @@
 #include <filesystem>
 #include <limits>
 #include <map>
+#include <set>
 
 #include <nlohmann/json.hpp>
 
@@ -120,15 +121,64 @@ void reportTallies(const MeshTallies& t, const std::string& name) {
              " with a zero-length NORMAL");
 }
 
+// Whether a node places its mesh without mirroring it (an instance must keep its triangles' winding:
+// instancing.h).
+bool keepsWinding(const MeshInstance& instance) {
+    return glm::determinant(glm::dmat3(instance.world)) > 0.0;
+}
+
+// Mesh `mesh`'s triangles in its own space, appended to scene->meshes as an InstancedMesh; its index,
+// or -1 (and nothing kept) if it has no triangle or one that emits light (emitters stay world triangles).
+int storeInstancedMesh(const tinygltf::Model& model, int mesh, int node, MaterialTable& materials,
+                       const std::string& name, Scene* scene, MeshTallies* tallies) {
+    std::vector<Triangle> world;
+    std::vector<std::array<glm::vec4, 3>> worldTangents;
+    std::swap(world, scene->triangles);
+    std::swap(worldTangents, scene->tangents);
+    MeshTallies own;
+    MeshInstance local{node, mesh, glm::dmat4(1.0)};
+    for (size_t p = 0; p < model.meshes[size_t(mesh)].primitives.size(); ++p)
+        appendPrimitive(model, local, p, materials, name, scene, &own);
+    InstancedMesh stored;
+    stored.name = model.meshes[size_t(mesh)].name.empty() ? "meshes[" + std::to_string(mesh) + "]"
+                                                          : model.meshes[size_t(mesh)].name;
+    std::swap(stored.triangles, scene->triangles);
+    std::swap(stored.tangents, scene->tangents);
+    std::swap(world, scene->triangles);
+    std::swap(worldTangents, scene->tangents);
+    for (const Triangle& t : stored.triangles)
+        if (scene->materials[t.material].isEmissive()) return -1;
+    if (stored.triangles.empty()) return -1;
+    tallies->notTriangles += own.notTriangles;
+    tallies->noPositions += own.noPositions;
+    tallies->morphTargets += own.morphTargets;
+    tallies->trailingVertices += own.trailingVertices;
+    tallies->degenerate += own.degenerate;
+    tallies->badNormals += own.badNormals;
+    scene->meshes.push_back(std::move(stored));
+    return int(scene->meshes.size()) - 1;
+}
+
 Scene buildScene(const tinygltf::Model& model, const std::string& name, const GltfLookup& lookup) {
     SceneGraph graph = walkScene(model, name);
-    // Flattening repeats a mesh for every node that uses it: refuse a scene that would not fit before
-    // allocating it.
-    uint64_t bound = 0;
+    // A mesh that two or more nodes place without mirroring it is stored once and instanced
+    // (scene/instancing.h); every other placement is flattened into world triangles.
+    std::map<int, int> uses;
     for (const MeshInstance& instance : graph.instances) {
         if (instance.mesh < 0 || size_t(instance.mesh) >= model.meshes.size())
             throw Error(name + ": nodes[" + std::to_string(instance.node) + "] refers to meshes[" +
                         std::to_string(instance.mesh) + "], which does not exist");
+        if (keepsWinding(instance)) ++uses[instance.mesh];
+    }
+    auto instanceable = [&](const MeshInstance& instance) {
+        return keepsWinding(instance) && uses[instance.mesh] >= 2;
+    };
+    // Flattening repeats a mesh for every node that uses it: refuse a scene whose stored triangles would
+    // not fit before allocating them.
+    uint64_t bound = 0;
+    std::set<int> counted;
+    for (const MeshInstance& instance : graph.instances) {
+        if (instanceable(instance) && !counted.insert(instance.mesh).second) continue;
         for (size_t p = 0; p < model.meshes[size_t(instance.mesh)].primitives.size(); ++p) {
             bound += std::min(triangleBound(model, instance.mesh, p, name), kMaxTriangles + 1);
             if (bound > kMaxTriangles)
@@ -142,10 +192,24 @@ Scene buildScene(const tinygltf::Model& model, const std::string& name, const Gl
     scene.source = name;
     MaterialTable materials(model, name, lookup, &scene);
     MeshTallies tallies;
-    for (const MeshInstance& instance : graph.instances)
+    std::map<int, int> stored;  // glTF mesh -> Scene::meshes index, -1: flattened after all
+    for (const MeshInstance& instance : graph.instances) {
+        if (instanceable(instance)) {
+            auto it = stored.find(instance.mesh);
+            if (it == stored.end())
+                it = stored
+                         .emplace(instance.mesh, storeInstancedMesh(model, instance.mesh, instance.node,
+                                                                    materials, name, &scene, &tallies))
+                         .first;
+            if (it->second >= 0) {
+                scene.instances.push_back({uint32_t(it->second), glm::mat4(instance.world)});
+                continue;
+            }
+        }
         for (size_t p = 0; p < model.meshes[size_t(instance.mesh)].primitives.size(); ++p)
             appendPrimitive(model, instance, p, materials, name, &scene, &tallies);
-    if (scene.triangles.empty())
+    }
+    if (scene.triangleCount() == 0)
         throw Error(name + ": no triangles to render (" +
                     (graph.instances.empty()
                          ? std::string("the scene places no mesh")

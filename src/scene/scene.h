@@ -218,8 +218,22 @@ struct Texture {
     Rgba8Image image;
 };
 
+// A mesh drawn in several places (a glTF mesh under several nodes), stored once in its own space and
+// placed by Scene::instances (scene/instancing.h). Its materials emit nothing: emitters are always
+// world triangles, which light sampling picks from.
+struct InstancedMesh {
+    std::string name;
+    std::vector<Triangle> triangles;                 // in the mesh's own space; never empty
+    std::vector<std::array<glm::vec4, 3>> tangents;  // as Scene::tangents, for these triangles
+};
+
+struct Instance {
+    uint32_t mesh = 0;              // index into Scene::meshes
+    glm::mat4 objectToWorld{1.0f};  // affine, with a positive determinant (no mirroring)
+};
+
 struct Scene {
-    std::vector<Triangle> triangles;
+    std::vector<Triangle> triangles;  // in world space; the instances' are in `meshes`
     std::vector<Material> materials;  // never empty once loaded
     std::vector<Texture> textures;    // what Material's *Texture fields index
     // Optional per-vertex tangents of normal-mapped triangles, one array per triangle (empty: computed
@@ -231,13 +245,13 @@ struct Scene {
     RenderDefaults defaults;
     Environment environment;
     std::vector<PunctualLight> punctualLights;  // from a scene file's "lights" (scene/punctual_light.h)
-    std::string source;                         // the file it came from, for messages
+    std::vector<InstancedMesh> meshes;          // what `instances` place (scene/instancing.h)
+    std::vector<Instance> instances;
+    std::string source;  // the file it came from, for messages
 
-    Aabb bounds() const {
-        Aabb b;
-        for (const Triangle& t : triangles) b.grow(t.bounds());
-        return b;
-    }
+    // World triangles and every instance's (scene/instancing.h).
+    Aabb bounds() const;
+    size_t triangleCount() const;
 };
 
 // A camera that frames the whole bounding box from the -z side looking along +z (as the Cornell box

@@ -3,13 +3,19 @@
 #include <algorithm>
 
 #include "pack/layout.h"
+#include "scene/instancing.h"
 
 namespace fp {
 
 std::optional<float> FocusPicker::focusDistanceAt(const Camera& camera, float aspect, glm::vec2 ndc) {
     if (!bvh_) {
-        triangles_.reserve(scene_.triangles.size());
+        triangles_.reserve(scene_.triangleCount());
         for (const Triangle& t : scene_.triangles) triangles_.push_back({t.p[0], t.p[1], t.p[2]});
+        for (const Instance& instance : scene_.instances)  // in the world, as the renderer sees them
+            for (const Triangle& local : scene_.meshes[instance.mesh].triangles) {
+                Triangle t = placedTriangle(local, instance.objectToWorld);
+                triangles_.push_back({t.p[0], t.p[1], t.p[2]});
+            }
         bvh_ = triangles_.empty()
                    ? Bvh{}
                    : buildBinnedSah(triangleBounds(triangles_), layout::bvhOptions(bvhThreads_));

@@ -478,3 +478,72 @@ TEST(PackScene, PunctualLightsFollowTheEmittersInTheCdf) {
 
 }  // namespace
 }  // namespace fp
+
+namespace fp {
+namespace {
+
+// The two-level layout (pack/layout.h): the top level's leaves link to instance node pairs holding the
+// world-to-object and object-to-world rows and the root of the mesh's BVH; each mesh's triangles are
+// stored once, after the world's, and only world triangles are emitters.
+TEST(PackScene, InstancesGetATwoLevelBvhWithTheirMeshesStoredOnce) {
+    Scene s = randomScene(30, 5);
+    for (Triangle& t : s.triangles) t.material = 0;
+    s.triangles[0].material = 1;  // one emitter, in the world
+    Scene meshSource = randomScene(20, 6);
+    s.meshes.push_back({"m", meshSource.triangles, {}});
+    for (Triangle& t : s.meshes[0].triangles) t.material = 0;
+    glm::mat4 a(1.0f), b(1.0f);
+    a[3] = glm::vec4(5, 0, 0, 1);
+    b[0][0] = 2.0f;
+    b[3] = glm::vec4(0, -5, 1, 1);
+    s.instances = {{0, a}, {0, b}};
+    AabbArray meshBounds;
+    for (const Triangle& t : s.meshes[0].triangles) meshBounds.push_back(t.bounds());
+    std::vector<Bvh> meshBvhs = {buildBinnedSah(meshBounds)};
+    PackedScene p = packScene(s, buildFor(s), meshBvhs);
+    EXPECT_EQ(p.triangleCount, 50u) << "30 world triangles and the mesh's 20, once";
+    EXPECT_EQ(p.instanceCount, 3u) << "two instances and the world";
+    ASSERT_GT(p.instanceNodeStart, 0u);
+    EXPECT_EQ(p.nodeCount, p.instanceNodeStart + 2 * p.instanceCount);
+    // Only the world's emitter is in the light cdf.
+    ASSERT_EQ(p.lightCount, 1u);
+    EXPECT_LT(p.lights[0].x, 30.0f);
+    // Each pair: world-to-object rows then the root; object-to-world rows. Entry order is the world's
+    // (identity), then the instances'.
+    auto rows = [&](uint32_t node) {
+        glm::mat4 m(1.0f);
+        for (int r = 0; r < 3; ++r) {
+            glm::vec4 row = glm::uintBitsToFloat(p.nodes[size_t(node) * layout::kNodeTexels + size_t(r)]);
+            for (int c = 0; c < 4; ++c) m[c][r] = row[c];
+        }
+        return m;
+    };
+    for (uint32_t k = 0; k < p.instanceCount; ++k) {
+        uint32_t node = p.instanceNodeStart + 2 * k;
+        glm::mat4 toWorld = k == 0 ? glm::mat4(1.0f) : s.instances[k - 1].objectToWorld;
+        EXPECT_EQ(rows(node + 1), toWorld) << "entry " << k;
+        glm::mat4 product = rows(node) * toWorld;
+        for (int c = 0; c < 4; ++c)
+            for (int r = 0; r < 4; ++r) EXPECT_NEAR(product[c][r], c == r ? 1.0f : 0.0f, 1e-6f);
+        uint32_t root = p.nodes[size_t(node) * layout::kNodeTexels + 3].x;
+        EXPECT_LT(root, p.instanceNodeStart);
+        EXPECT_GT(root, 0u) << "node 0 is the top level's root";
+        if (k == 2) {
+            EXPECT_EQ(root, p.nodes[size_t(node - 2) * layout::kNodeTexels + 3].x) << "one mesh, one BVH";
+        }
+    }
+    // Every leaf of the top level is a link to a pair (no triangle ranges at the top).
+    int links = 0;
+    for (int slot = 0; slot < 4; ++slot) {
+        uint32_t link = p.nodes[layout::kNodeLinkTexel][slot];
+        if (link == 0) continue;
+        EXPECT_EQ(link & layout::kLeafBit, 0u);
+        links += link >= p.instanceNodeStart;
+    }
+    EXPECT_EQ(links, 3) << "three entries fit in the root";
+    // A mesh BVH for every mesh is required.
+    EXPECT_THROW(packScene(s, buildFor(s)), Error);
+}
+
+}  // namespace
+}  // namespace fp

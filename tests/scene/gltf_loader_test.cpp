@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "gltf_test_util.h"
+#include "scene/instancing.h"
 #include "scene/load.h"
 #include "scene/scene_file.h"
 #include "scene_test_util.h"
@@ -160,7 +161,7 @@ TEST(GltfLoader, NodeHierarchyWithTrsAndMatrix) {
     b.node({{"mesh", tri}, {"translation", {0, 0, 5}}});
     // Mirrors x and moves by 10 along x, as a column-major matrix.
     b.node({{"mesh", tri}, {"matrix", {-1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 10, 0, 0, 1}}});
-    b.node({{"mesh", tri}});
+    b.node({{"mesh", triangleMesh(b)}});  // a mesh of its own: one used twice would be instanced
     b.node({{"mesh", slanted}, {"scale", {1, 2, 1}}});
     b.scene({0, 3, 4});
     WarningCapture capture;
@@ -263,7 +264,12 @@ TEST(GltfLoader, DefaultSceneAndMeshesUsedTwice) {
     b.doc["scenes"] = json::array({{{"nodes", {0}}}, {{"nodes", {1, 2}}}});
     b.doc["scene"] = 1;
     Scene scene = loadFile("scenes.gltf", b.gltf());
-    ASSERT_EQ(scene.triangles.size(), 2u);  // scene 1 only, its mesh placed twice
+    // Scene 1 only, its mesh placed twice: stored once and instanced (scene/instancing.h).
+    EXPECT_TRUE(scene.triangles.empty());
+    ASSERT_EQ(scene.meshes.size(), 1u);
+    ASSERT_EQ(scene.instances.size(), 2u);
+    scene = flattenInstances(scene);
+    ASSERT_EQ(scene.triangles.size(), 2u);
     EXPECT_EQ(scene.triangles[0].p[0], glm::vec3(0, 0, 7));
     EXPECT_EQ(scene.triangles[1].p[0], glm::vec3(0, 0, 9));
     b.doc.erase("scene");  // without "scene", the first
@@ -391,10 +397,10 @@ TEST(GltfLoader, ABadPunctualLightIsAClearError) {
 
 TEST(GltfLoader, UpperCaseFileExtensionAndAFileWithoutScenesRendersEveryRootNode) {
     GltfBuilder b;
-    int tri = triangleMesh(b);
-    b.node({{"mesh", tri}, {"children", {1}}});
-    b.node({{"mesh", tri}, {"translation", {0, 0, 1}}});
-    b.node({{"mesh", tri}, {"translation", {0, 0, 2}}});
+    // A mesh each: one mesh under several nodes would be instanced.
+    b.node({{"mesh", triangleMesh(b)}, {"children", {1}}});
+    b.node({{"mesh", triangleMesh(b)}, {"translation", {0, 0, 1}}});
+    b.node({{"mesh", triangleMesh(b)}, {"translation", {0, 0, 2}}});
     WarningCapture capture;
     Scene scene = loadFile("NOSCENE.GLB", b.glb());
     ASSERT_EQ(scene.triangles.size(), 3u);  // roots 0 and 2, and 0's child

@@ -275,17 +275,31 @@ TEST(GltfReject, BrokenGlbContainers) {
 }
 
 TEST(GltfReject, MoreTrianglesThanTheRendererTakesOnceInstancesAreFlattened) {
-    // 4096 triangles, placed by 4097 nodes: 2^24 + 4096 triangles, refused before they are made.
+    // 4096 triangles, placed by 4097 mirroring nodes (flattened, not instanced: instancing.h): 2^24 +
+    // 4096 triangles, refused before they are made.
     GltfBuilder b;
-    int p = b.vec3(std::vector<glm::vec3>(3 * 4096, glm::vec3(0.0f)));
+    std::vector<glm::vec3> positions;
+    for (int t = 0; t < 4096; ++t)
+        for (glm::vec3 v : {glm::vec3(0, 0, 0), glm::vec3(1, 0, 0), glm::vec3(0, 1, 0)})
+            positions.push_back(v + glm::vec3(0, 0, float(t)));
+    int p = b.vec3(positions);
     b.mesh(json::array({{{"attributes", {{"POSITION", p}}}}}));
     std::vector<int> roots;
-    for (int i = 0; i < 4097; ++i) roots.push_back(b.node({{"mesh", 0}}));
+    for (int i = 0; i < 4097; ++i) roots.push_back(b.node({{"mesh", 0}, {"scale", {-1, 1, 1}}}));
     b.scene(roots);
     auto start = std::chrono::steady_clock::now();
     EXPECT_CONTAINS_ALL(rejected("many.glb", b.glb()),
                         "many.glb: more than 16777215 triangles once its 4097 mesh instances are flattened");
     EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 5.0);
+
+    // Placed without mirroring, the mesh is stored once and instanced: the same 2^24 + 4096 triangles
+    // are drawn from 4096 stored.
+    for (json& node : b.doc["nodes"]) node.erase("scale");
+    test::TempDir dir;
+    Scene scene = loadScene(dir.write("many.glb", b.glb()));
+    EXPECT_EQ(scene.meshes.size(), 1u);
+    EXPECT_EQ(scene.instances.size(), 4097u);
+    EXPECT_EQ(scene.triangleCount(), 4097u * 4096u);
 }
 
 TEST(GltfReject, NothingToRender) {
