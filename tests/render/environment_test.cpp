@@ -13,23 +13,6 @@
 namespace fp::test {
 namespace {
 
-Scene sphereInFurnace(const Material& material, bool smooth) {
-    Scene scene;
-    scene.source = "sphere in a white furnace";
-    scene.materials.push_back(material);
-    scene.environment.color = glm::vec3(1.0f);
-    appendSphere(scene, glm::vec3(0.0f), 1.0f, 24, 48, 0, smooth);
-    return scene;
-}
-
-Camera outsideCamera() {
-    Camera c;
-    c.eye = glm::vec3(0.3f, 0.5f, -4.0f);
-    c.target = glm::vec3(0.0f);
-    c.fovY = 35.0f;
-    return c;
-}
-
 // The mean radiance over the pixels that see the sphere (not its silhouette) and its standard error;
 // the background pixels must show exactly the sky.
 struct SphereMean {

@@ -97,49 +97,6 @@ double gltfSpotFalloff(double cosTheta, double innerDegrees, double outerDegrees
     return t * t;
 }
 
-// The render against the expected per-pixel means: z-scores over blocks of `block` x `block` pixels
-// and for the whole image, each standard error widened by 1e-5 of the value for float rounding. A
-// noise-free block (nee at depth 1 under a directional light, or outside a spot's cone) must then match
-// to that rounding. Prints the figures.
-void expectImage(const Accumulation& acc, const std::vector<glm::dvec3>& expected, int block,
-                 const std::string& what) {
-    const Image mean = acc.mean(), variance = acc.varianceOfMean();
-    auto z = [&](int x0, int y0, int w, int h, int ch) {
-        double sum = 0.0, want = 0.0, var = 0.0;
-        for (int y = y0; y < y0 + h; ++y)
-            for (int x = x0; x < x0 + w; ++x) {
-                sum += double(mean.at(x, y)[ch]);
-                var += double(variance.at(x, y)[ch]);
-                want += expected[size_t(y) * size_t(acc.width) + size_t(x)][ch];
-            }
-        double count = double(w) * h, rounding = 1e-5 * std::abs(want / count);
-        double se = std::sqrt(var / (count * count) + rounding * rounding);
-        double difference = sum / count - want / count;
-        if (se == 0.0) return difference == 0.0 ? 0.0 : 1e9;
-        return difference / se;
-    };
-    double maxZ = 0.0, meanSquare = 0.0;
-    int blocks = 0;
-    for (int y = 0; y + block <= acc.height; y += block)
-        for (int x = 0; x + block <= acc.width; x += block)
-            for (int ch = 0; ch < 3; ++ch) {
-                double v = z(x, y, block, block, ch);
-                maxZ = std::max(maxZ, std::abs(v));
-                meanSquare += v * v;
-                ++blocks;
-            }
-    meanSquare /= blocks;
-    glm::dvec3 whole(z(0, 0, acc.width, acc.height, 0), z(0, 0, acc.width, acc.height, 1),
-                     z(0, 0, acc.width, acc.height, 2));
-    std::printf("  %s: %d block z: max |z| %.2f, mean square %.2f; whole image z %.2f %.2f %.2f\n",
-                what.c_str(), blocks, maxZ, meanSquare, whole.x, whole.y, whole.z);
-    EXPECT_LT(maxZ, 5.0) << what << ": a block differs from the closed form by more than the noise explains";
-    EXPECT_LT(meanSquare, 2.0) << what;
-    for (int ch = 0; ch < 3; ++ch)
-        EXPECT_LT(std::abs(whole[ch]), 5.0) << what << ": whole image, channel " << ch;
-    EXPECT_EQ(acc.droppedSamples(), 0u) << what;
-}
-
 // The relative spread of an expected image: the test means little on a flat one.
 double spread(const std::vector<glm::dvec3>& image) {
     double lo = 1e30, hi = 0.0;

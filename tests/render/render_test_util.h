@@ -107,6 +107,26 @@ inline Camera insideCamera() {
     return c;
 }
 
+// A unit sphere at the origin (24 rings x 48 segments, flat or smooth-shaded) of one material in a white
+// furnace: a uniform environment of radiance 1.
+inline Scene sphereInFurnace(const Material& material, bool smooth) {
+    Scene scene;
+    scene.source = "sphere in a white furnace";
+    scene.materials.push_back(material);
+    scene.environment.color = glm::vec3(1.0f);
+    appendSphere(scene, glm::vec3(0.0f), 1.0f, 24, 48, 0, smooth);
+    return scene;
+}
+
+// Looks at the unit sphere at the origin from 4 away on the -z side; the sphere fills about half of it.
+inline Camera outsideCamera() {
+    Camera c;
+    c.eye = glm::vec3(0.3f, 0.5f, -4.0f);
+    c.target = glm::vec3(0.0f);
+    c.fovY = 35.0f;
+    return c;
+}
+
 struct ImageEstimate {
     glm::vec3 mean{0.0f};           // average over pixels of the per-pixel estimates
     glm::vec3 standardError{0.0f};  // of that average, from the per-pixel sample variances
@@ -250,6 +270,49 @@ inline void expectSameImage(const Accumulation& a, const Accumulation& b, int bl
     EXPECT_LT(c.maxBlockZ, 5.0f) << what << ": a block differs by more than the noise explains";
     EXPECT_LT(c.blockZMeanSquare, 2.0) << what << ": block differences larger than the noise explains";
     EXPECT_EQ(a.droppedSamples() + b.droppedSamples(), 0u) << what;
+}
+
+// The render against the expected per-pixel means (rows top first, as Accumulation stores them):
+// z-scores over blocks of `block` x `block` pixels and for the whole image, each standard error widened
+// by 1e-5 of the value for float rounding. A noise-free block (nee at depth 1 under a directional light,
+// or outside a spot's cone) must then match to that rounding. Prints the figures.
+inline void expectImage(const Accumulation& acc, const std::vector<glm::dvec3>& expected, int block,
+                        const std::string& what) {
+    const Image mean = acc.mean(), variance = acc.varianceOfMean();
+    auto z = [&](int x0, int y0, int w, int h, int ch) {
+        double sum = 0.0, want = 0.0, var = 0.0;
+        for (int y = y0; y < y0 + h; ++y)
+            for (int x = x0; x < x0 + w; ++x) {
+                sum += double(mean.at(x, y)[ch]);
+                var += double(variance.at(x, y)[ch]);
+                want += expected[size_t(y) * size_t(acc.width) + size_t(x)][ch];
+            }
+        double count = double(w) * h, rounding = 1e-5 * std::abs(want / count);
+        double se = std::sqrt(var / (count * count) + rounding * rounding);
+        double difference = sum / count - want / count;
+        if (se == 0.0) return difference == 0.0 ? 0.0 : 1e9;
+        return difference / se;
+    };
+    double maxZ = 0.0, meanSquare = 0.0;
+    int blocks = 0;
+    for (int y = 0; y + block <= acc.height; y += block)
+        for (int x = 0; x + block <= acc.width; x += block)
+            for (int ch = 0; ch < 3; ++ch) {
+                double v = z(x, y, block, block, ch);
+                maxZ = std::max(maxZ, std::abs(v));
+                meanSquare += v * v;
+                ++blocks;
+            }
+    meanSquare /= blocks;
+    glm::dvec3 whole(z(0, 0, acc.width, acc.height, 0), z(0, 0, acc.width, acc.height, 1),
+                     z(0, 0, acc.width, acc.height, 2));
+    std::printf("  %s: %d block z: max |z| %.2f, mean square %.2f; whole image z %.2f %.2f %.2f\n",
+                what.c_str(), blocks, maxZ, meanSquare, whole.x, whole.y, whole.z);
+    EXPECT_LT(maxZ, 5.0) << what << ": a block differs from the closed form by more than the noise explains";
+    EXPECT_LT(meanSquare, 2.0) << what;
+    for (int ch = 0; ch < 3; ++ch)
+        EXPECT_LT(std::abs(whole[ch]), 5.0) << what << ": whole image, channel " << ch;
+    EXPECT_EQ(acc.droppedSamples(), 0u) << what;
 }
 
 // The shaders the GPU tests render with: the copy built into the binary, or the glsl/ directory the
