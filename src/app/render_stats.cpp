@@ -59,7 +59,7 @@ std::string formatRenderStats(const RenderStats& stats) {
         s.bvh.meanLeafSize, s.bvh.sahCost);
     text +=
         formatText("bvh build        %.3f s, %.3f CPU-s, threads %d (%.3g triangles/s)\n", s.bvhBuildSeconds,
-                   s.bvhBuildCpuSeconds, s.bvhBuildThreads, per(s.triangles, s.bvhBuildSeconds));
+                   s.bvhBuildCpuSeconds, s.bvhBuildThreads, per(s.storedTriangles, s.bvhBuildSeconds));
     text += formatText(
         "gpu memory       %zu bytes (%.1f per triangle; positions + BVH %.1f per triangle; textures %zu "
         "bytes)\n",
