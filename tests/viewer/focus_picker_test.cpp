@@ -48,6 +48,22 @@ TEST(FocusPicker, TheDepthAlongTheViewOfTheSurfaceUnderTheCursor) {
     EXPECT_NEAR(*picker.focusDistanceAt(c, aspect, {0.0f, 0.0f}), 12.0f, 1e-4f);
 }
 
+// Instances are where their transforms place them: the wall and the card as one mesh (made at depth 0
+// and 6 less), placed 6 further away than the world's copy would be, and nothing else.
+TEST(FocusPicker, InstancesAreWhereTheyArePlaced) {
+    Scene made = wallAndCard();
+    Scene scene;
+    scene.materials = made.materials;
+    scene.meshes.push_back({"wall and card", made.triangles, {}});
+    for (Triangle& t : scene.meshes[0].triangles)
+        for (glm::vec3& p : t.p) p.z -= 6.0f;
+    glm::mat4 placed(1.0f);
+    placed[3] = glm::vec4(0, 0, 12, 1);  // 6 back where they were, and 6 further
+    scene.instances.push_back({0, placed});
+    FocusPicker picker(scene, 1);
+    EXPECT_NEAR(*picker.focusDistanceAt(lookingAlongZ(), 1.5f, {0.0f, 0.0f}), 16.0f, 1e-4f);
+}
+
 TEST(FocusPicker, AnEmptySceneHasNothingToFocusOn) {
     Scene scene;
     FocusPicker picker(scene);
