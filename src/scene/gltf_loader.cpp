@@ -1,4 +1,5 @@
 // glTF files to Scenes: the preflight, tinygltf with our file access, and the conversion (gltf.h).
+#include <cmath>
 #include <filesystem>
 #include <limits>
 #include <map>
@@ -121,9 +122,13 @@ void reportTallies(const MeshTallies& t, const std::string& name) {
              " with a zero-length NORMAL");
 }
 
-// Whether a node places its mesh without mirroring it (an instance must keep its triangles' winding:
-// instancing.h).
+// Whether a node can place its mesh as an instance: without mirroring it (an instance must keep its
+// triangles' winding: instancing.h), and with a transform whose every entry is a float of magnitude
+// under 1e18 (others are flattened, where each vertex gets the loader's range check and message).
 bool keepsWinding(const MeshInstance& instance) {
+    for (int c = 0; c < 4; ++c)
+        for (int r = 0; r < 4; ++r)
+            if (!(std::abs(instance.world[c][r]) < 1e18)) return false;
     return glm::determinant(glm::dmat3(instance.world)) > 0.0;
 }
 
