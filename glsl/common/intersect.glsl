@@ -148,7 +148,11 @@ bool traverse(Ray worldRay, float tMax, bool anyHit, out Hit hit) {
 #ifdef INSTANCE_NODES_START
         if (node >= INSTANCE_NODES_START) {
             int base = int(node) * NODE_TEXELS;
-            ray = Ray(transformRows(base, worldRay.origin, 1.0), transformRows(base, worldRay.dir, 0.0));
+            vec4 r0 = uintBitsToFloat(nodeTexel(base)), r1 = uintBitsToFloat(nodeTexel(base + 1)),
+                 r2 = uintBitsToFloat(nodeTexel(base + 2));  // world-to-object, row by row
+            vec3 o = worldRay.origin, d = worldRay.dir;
+            ray = Ray(vec3(dot(r0.xyz, o) + r0.w, dot(r1.xyz, o) + r1.w, dot(r2.xyz, o) + r2.w),
+                      vec3(dot(r0.xyz, d), dot(r1.xyz, d), dot(r2.xyz, d)));
             invDir = safeInverse(ray.dir);
             gInstance = int(node);
             stack[size++] = kLeaveInstance;
