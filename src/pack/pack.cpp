@@ -139,7 +139,8 @@ uint32_t packTwoLevel(const Scene& scene, const Bvh& bvh, const std::vector<Bvh>
     }
     for (const Instance& instance : scene.instances) {
         entries.push_back({instance.mesh + 1, instance.objectToWorld});
-        bounds.push_back(instanceBounds(scene, instance));
+        // The mesh's tree's root box is its bounds.
+        bounds.push_back(instanceBounds(meshBvhs[instance.mesh].nodes[0].bounds, instance.objectToWorld));
     }
     BvhBuildOptions topOptions;
     topOptions.maxLeafSize = 1;  // each leaf is one instance, which its link names

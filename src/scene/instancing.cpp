@@ -17,14 +17,18 @@ Triangle placedTriangle(const Triangle& t, const glm::mat4& objectToWorld) {
     return out;
 }
 
-Aabb instanceBounds(const Scene& scene, const Instance& instance) {
+Aabb meshBounds(const InstancedMesh& mesh) {
     Aabb local;
-    for (const Triangle& t : scene.meshes[instance.mesh].triangles) local.grow(t.bounds());
+    for (const Triangle& t : mesh.triangles) local.grow(t.bounds());
+    return local;
+}
+
+Aabb instanceBounds(const Aabb& local, const glm::mat4& objectToWorld) {
     Aabb world;
     for (int corner = 0; corner < 8; ++corner) {
         glm::vec3 p((corner & 1) ? local.hi.x : local.lo.x, (corner & 2) ? local.hi.y : local.lo.y,
                     (corner & 4) ? local.hi.z : local.lo.z);
-        world.grow(glm::vec3(instance.objectToWorld * glm::vec4(p, 1.0f)));
+        world.grow(glm::vec3(objectToWorld * glm::vec4(p, 1.0f)));
     }
     return world;
 }
@@ -85,10 +89,10 @@ void validateInstances(const Scene& scene) {
 Aabb Scene::bounds() const {
     Aabb b;
     for (const Triangle& t : triangles) b.grow(t.bounds());
-    for (const Instance& instance : instances) {
-        Aabb placed = instanceBounds(*this, instance);
-        b.grow(placed);
-    }
+    std::vector<Aabb> local;
+    for (const InstancedMesh& mesh : meshes) local.push_back(meshBounds(mesh));
+    for (const Instance& instance : instances)
+        b.grow(instanceBounds(local[instance.mesh], instance.objectToWorld));
     return b;
 }
 

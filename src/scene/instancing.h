@@ -13,8 +13,12 @@ namespace fp {
 // (renormalised), tangents by the linear part (their w kept: no mirroring).
 Triangle placedTriangle(const Triangle& t, const glm::mat4& objectToWorld);
 
-// The world bounds of an instance: its mesh's bounding box transformed (the box of the 8 corners).
-Aabb instanceBounds(const Scene& scene, const Instance& instance);
+// A mesh's bounds in its own space.
+Aabb meshBounds(const InstancedMesh& mesh);
+
+// The world bounds of an instance: its mesh's bounds (`local`, from meshBounds) transformed (the box of
+// the 8 corners).
+Aabb instanceBounds(const Aabb& local, const glm::mat4& objectToWorld);
 
 // `scene` with every instance's triangles (and tangents) appended to its world triangles, in the order
 // of the instances, and no meshes or instances.
