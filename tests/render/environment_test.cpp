@@ -76,6 +76,8 @@ TEST(WhiteFurnace, ConvexLambertianSphereShowsItsAlbedo) {
         expectFurnace(sphereInFurnace(m, false), integrator, 0.5f, 5);
 }
 
+// Depth 1000, not 100: total internal reflection between the flat facets traps some light for long
+// (at depth 100 nee measured 0.9979 over the whole image, 0.9999 at 300, 1.0000 at 1000).
 TEST(WhiteFurnace, SmoothGlassSphereShowsExactlyTheEnvironment) {
     Material glass;
     glass.type = MaterialType::Dielectric;
@@ -83,7 +85,7 @@ TEST(WhiteFurnace, SmoothGlassSphereShowsExactlyTheEnvironment) {
     glass.roughness = 0.0f;
     glass.transmission = glm::vec3(1.0f);
     for (Integrator integrator : {Integrator::Bsdf, Integrator::Nee})
-        expectFurnace(sphereInFurnace(glass, false), integrator, 1.0f, 100);
+        expectFurnace(sphereInFurnace(glass, false), integrator, 1.0f, 1000);
 }
 
 TEST(WhiteFurnace, DispersiveGlassSphereStillShowsExactlyTheEnvironment) {
@@ -93,7 +95,7 @@ TEST(WhiteFurnace, DispersiveGlassSphereStillShowsExactlyTheEnvironment) {
     glass.ior = 1.5f;
     glass.abbeNumber = 20.0f;  // strongly dispersive
     for (Integrator integrator : {Integrator::Bsdf, Integrator::Nee})
-        expectFurnace(sphereInFurnace(glass, false), integrator, 1.0f, 100);
+        expectFurnace(sphereInFurnace(glass, false), integrator, 1.0f, 1000);
 }
 
 TEST(WhiteFurnace, SmoothMirrorSphereShowsItsReflectance) {
