@@ -19,7 +19,7 @@ double solidAngle(const glm::dvec3& p, const glm::dvec3& a, const glm::dvec3& b,
 
 }  // namespace
 
-bool emittersFaceCloseSurfaces(const Scene& scene, const Bvh& bvh) {
+bool emittersFaceCloseSurfaces(const Scene& scene, const Bvh& bvh, const std::vector<Bvh>& meshBvhs) {
     constexpr double kLargeSolidAngle = 0.5;
     constexpr size_t kMaxRays = 4096;
     std::vector<uint32_t> emitters;
@@ -29,6 +29,18 @@ bool emittersFaceCloseSurfaces(const Scene& scene, const Bvh& bvh) {
     std::vector<TriangleVerts> verts;
     verts.reserve(scene.triangles.size());
     for (const Triangle& t : scene.triangles) verts.push_back({t.p[0], t.p[1], t.p[2]});
+    // Instances: each mesh's triangles in its space, and each instance's inverse transform.
+    const bool instanced = !scene.instances.empty() && meshBvhs.size() == scene.meshes.size();
+    std::vector<std::vector<TriangleVerts>> meshVerts;
+    std::vector<glm::mat4> toObject;
+    if (instanced) {
+        for (const InstancedMesh& mesh : scene.meshes) {
+            meshVerts.emplace_back();
+            for (const Triangle& t : mesh.triangles) meshVerts.back().push_back({t.p[0], t.p[1], t.p[2]});
+        }
+        for (const Instance& instance : scene.instances)
+            toObject.push_back(glm::inverse(instance.objectToWorld));
+    }
     size_t stride = std::max<size_t>(1, emitters.size() / kMaxRays);
     for (size_t k = 0; k < emitters.size(); k += stride) {
         const Triangle& t = scene.triangles[emitters[k]];
@@ -39,7 +51,17 @@ bool emittersFaceCloseSurfaces(const Scene& scene, const Bvh& bvh) {
         ray.dir = glm::normalize(n);  // the emitting side (one-sided emitters: the front)
         float extent = glm::length(t.p[1] - t.p[0]) + glm::length(t.p[2] - t.p[0]);
         ray.tMin = 1e-4f * extent;  // past the emitter itself
-        RayHit hit = closestHit(bvh, verts, ray);
+        RayHit hit = verts.empty() || bvh.nodes.empty() ? RayHit{} : closestHit(bvh, verts, ray);
+        // In an instance's space the direction is not renormalised, so t is the same distance.
+        for (size_t i = 0; instanced && i < scene.instances.size(); ++i) {
+            Ray local = ray;
+            local.origin = glm::vec3(toObject[i] * glm::vec4(ray.origin, 1.0f));
+            local.dir = glm::vec3(toObject[i] * glm::vec4(ray.dir, 0.0f));
+            local.tMax = hit.t;
+            uint32_t mesh = scene.instances[i].mesh;
+            RayHit h = closestHit(meshBvhs[mesh], meshVerts[mesh], local);
+            if (h.hit() && h.t < hit.t) hit = h;
+        }
         if (!hit.hit()) continue;
         glm::dvec3 p = glm::dvec3(ray.origin) + double(hit.t) * glm::dvec3(ray.dir);
         if (solidAngle(p, t.p[0], t.p[1], t.p[2]) > kLargeSolidAngle) return true;

@@ -10,7 +10,8 @@ namespace fp {
 // beside a wall. There sampling the emitter uniformly in solid angle has several times less variance
 // than by area (BENCHMARKS.md, "Samplers"); elsewhere the two are alike, and the spherical code left
 // out of the shader saves about 7 % of llvmpipe's instructions on the Cornell box (a branch that is never
-// taken still costs registers). bvh is built over the scene's triangles in their order.
-bool emittersFaceCloseSurfaces(const Scene& scene, const Bvh& bvh);
+// taken still costs registers). bvh is built over the scene's triangles in their order; with instances
+// (scene/instancing.h) meshBvhs over each mesh's triangles, and the instances count as surfaces too.
+bool emittersFaceCloseSurfaces(const Scene& scene, const Bvh& bvh, const std::vector<Bvh>& meshBvhs = {});
 
 }  // namespace fp

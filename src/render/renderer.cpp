@@ -48,7 +48,7 @@ Renderer::Renderer(const Scene& scene, ShaderLibrary shaders, const BvhBuildOpti
     stats_.bvh = computeStats(bvh);
 
     start = SteadyClock::now();
-    closeEmitters_ = emittersFaceCloseSurfaces(scene, bvh);
+    closeEmitters_ = emittersFaceCloseSurfaces(scene, bvh, meshBvhs);
     PackedScene packed = packScene(scene, bvh, meshBvhs);
     stats_.triangles = uint32_t(scene.triangleCount());
     stats_.storedTriangles = packed.triangleCount;

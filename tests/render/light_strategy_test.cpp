@@ -43,5 +43,29 @@ TEST(LightStrategy, ALampFarAboveTheFloorOrFacingNothingIsSampledByArea) {
     EXPECT_FALSE(choosesSolidAngle(dark)) << "no emitter";
 }
 
+// The floor as an instance (stored in its own space 1 lower, placed 1 up): the surface the lamp faces
+// is found through the instance's transform. Without the mesh's BVH (or placed 5 further down) the lamp
+// faces nothing close.
+TEST(LightStrategy, InstancesAreSurfacesToo) {
+    Scene scene = test::lampOverFloor(test::lampCases()[0]);
+    InstancedMesh floor{"floor", {}, {}};
+    std::vector<Triangle> lamp;
+    for (const Triangle& t : scene.triangles) (t.material == 1 ? lamp : floor.triangles).push_back(t);
+    for (Triangle& t : floor.triangles)
+        for (glm::vec3& p : t.p) p.y -= 1.0f;  // y is up in lampOverFloor's scenes
+    scene.triangles = lamp;
+    scene.meshes = {floor};
+    glm::mat4 up(1.0f);
+    up[3] = glm::vec4(0, 1, 0, 1);
+    scene.instances = {{0, up}};
+    AabbArray bounds;
+    for (const Triangle& t : scene.meshes[0].triangles) bounds.push_back(t.bounds());
+    std::vector<Bvh> meshBvhs = {buildBinnedSah(bounds, BvhBuildOptions{})};
+    EXPECT_TRUE(emittersFaceCloseSurfaces(scene, bvhOf(scene), meshBvhs));
+    EXPECT_FALSE(emittersFaceCloseSurfaces(scene, bvhOf(scene))) << "the world's triangles alone: the lamp";
+    scene.instances[0].objectToWorld[3] = glm::vec4(0, -4, 0, 1);
+    EXPECT_FALSE(emittersFaceCloseSurfaces(scene, bvhOf(scene), meshBvhs));
+}
+
 }  // namespace
 }  // namespace fp
