@@ -21,6 +21,13 @@ double labF(double t) {
     return t / (3.0 * delta * delta) + 4.0 / 29.0;
 }
 
+// Its inverse: the cube above 6/29, the line below.
+double labFInverse(double f) {
+    const double delta = 6.0 / 29.0;
+    if (f > delta) return f * f * f;
+    return 3.0 * delta * delta * (f - 4.0 / 29.0);
+}
+
 }  // namespace
 
 glm::dvec3 linearRgbToXyz(const glm::dvec3& rgb) {
@@ -49,6 +56,12 @@ glm::dvec3 xyzToLab(const glm::dvec3& xyz) {
     const glm::dvec3 n = xyz / kWhite;
     const double fx = labF(n.x), fy = labF(n.y), fz = labF(n.z);
     return {116.0 * fy - 16.0, 500.0 * (fx - fy), 200.0 * (fy - fz)};
+}
+
+glm::dvec3 labToXyz(const glm::dvec3& lab) {
+    const double fy = (lab.x + 16.0) / 116.0;
+    return glm::dvec3(labFInverse(fy + lab.y / 500.0), labFInverse(fy), labFInverse(fy - lab.z / 200.0)) *
+           kWhite;
 }
 
 glm::dvec3 huntAdjust(const glm::dvec3& lab) {

@@ -21,6 +21,7 @@ glm::dvec3 ycxczToXyz(const glm::dvec3& ycxcz);
 
 // CIE 1976 L*a*b* (CIE 15:2004): the cube root above (6/29)^3 and the linear segment below it.
 glm::dvec3 xyzToLab(const glm::dvec3& xyz);
+glm::dvec3 labToXyz(const glm::dvec3& lab);
 
 // The Hunt adjustment of FLIP's colour pipeline: chroma shrinks with lightness, a* and b* scaled by
 // 0.01 L* (dark colours look less colourful than bright ones of the same a*, b*: the Hunt effect).
