@@ -66,7 +66,7 @@ FlipExposures hdrFlipExposures(const Image& reference) {
     std::vector<double> luminance, positive;
     double largest = 0.0;
     for (const glm::vec3& p : reference.pixels) {
-        const double y = std::max(linearRgbToXyz(glm::dvec3(p)).y, 0.0);
+        const double y = linearRgbToXyz(glm::max(glm::dvec3(p), 0.0)).y;  // channels as tone mapped
         const double finite = std::isfinite(y) ? y : 0.0;
         luminance.push_back(finite);
         if (finite > 0.0) positive.push_back(finite);

@@ -36,9 +36,10 @@ struct FlipExposures {
 // tone curve below and x85 the radiance it maps to 0.85, start = log2(x85 / the largest luminance)
 // (the brightest pixel just below white), stop = log2(x85 / the median luminance) (the typical pixel
 // at the same place), count = max(2, ceil(stop - start)), about one exposure a stop. Luminance is
-// Y of linearRgbToXyz, negatives taken as 0. An all-black reference gives start = stop = 0. Where the
-// paper divides by a median of 0 (a mostly black image) we take the median of the non-zero
-// luminances instead: our choice, so that the dark pixels still get a finite, long exposure.
+// Y of linearRgbToXyz of the channels, negatives taken as 0 (as the tone curve takes them). An all-black
+// reference gives start = stop = 0. Where the paper divides by a median of 0 (a mostly black image) we take
+// the median of the non-zero luminances instead: our choice, so that the dark pixels still get a finite, long
+// exposure.
 FlipExposures hdrFlipExposures(const Image& reference);
 
 // The HDR tone curve of HDR-FLIP: ACES (Narkowicz's fit, image/tone_map.h) with his pre-exposure of 0.6
