@@ -10,5 +10,6 @@ int benchCommand(const std::vector<std::string>& args);
 int viewCommand(const std::vector<std::string>& args);
 int mergeCommand(const std::vector<std::string>& args);
 int studyCommand(const std::vector<std::string>& args);
+int compareCommand(const std::vector<std::string>& args);
 
 }  // namespace fp

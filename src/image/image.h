@@ -32,5 +32,8 @@ struct DisplaySettings {
 void writeImage(const std::string& path, const Image& image, const DisplaySettings& display = {});
 // Read a linear .pfm, .exr or .hdr image; throws fp::Error on a missing or malformed file.
 Image readImage(const std::string& path);
+// readImage, and also 8-bit .png images, decoded from sRGB to linear [0, 1] (alpha ignored): for
+// comparing images, where a PNG is what was shown. Throws fp::Error as readImage does.
+Image readImageOrPng(const std::string& path);
 
 }  // namespace fp

@@ -37,10 +37,11 @@ inline float toneMapReinhard(float x) {
 // "Narkowicz 2015"): a rational fit to the ACES RRT+ODT luminance curve, pre-exposed so that 1 maps
 // to about 0.8. The fit exceeds 1 for every x above about 7.24 (where 0.08x^2 - 0.56x - 0.14 = 0),
 // so capping x at 16 changes nothing after the clamp but keeps x*x from overflowing to inf/inf = NaN.
+// The fit is (x (a x + b)) / (x (c x + d) + e) with these coefficients (HDR-FLIP solves it for x).
+constexpr float kAcesA = 2.51f, kAcesB = 0.03f, kAcesC = 2.43f, kAcesD = 0.59f, kAcesE = 0.14f;
 inline float toneMapAces(float x) {
-    const float a = 2.51f, b = 0.03f, c = 2.43f, d = 0.59f, e = 0.14f;
     x = std::min(x, 16.0f);
-    return (x * (a * x + b)) / (x * (c * x + d) + e);
+    return (x * (kAcesA * x + kAcesB)) / (x * (kAcesC * x + kAcesD) + kAcesE);
 }
 
 inline float applyToneMap(float x, ToneMap toneMap) {

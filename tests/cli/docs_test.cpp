@@ -39,5 +39,19 @@ TEST(Docs, TheReadmeListsEveryRenderOption) {
     }
 }
 
+TEST(Docs, TheReadmeListsEveryCompareOption) {
+    test::CliRun r = test::runFragpath("compare --help");
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    std::set<std::string> options = optionsInHelp(r.output);
+    ASSERT_GE(options.size(), 4u) << r.output;
+    std::ifstream in(std::string(FP_SOURCE_DIR) + "/README.md");
+    const std::string readme((std::istreambuf_iterator<char>(in)), {});
+    EXPECT_NE(readme.find("`fragpath compare"), std::string::npos);
+    for (const std::string& option : options) {
+        if (option == "--help") continue;
+        EXPECT_NE(readme.find("`" + option), std::string::npos) << option;
+    }
+}
+
 }  // namespace
 }  // namespace fp

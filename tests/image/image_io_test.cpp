@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <string>
 
@@ -128,6 +129,32 @@ TEST(ImageIo, ReadErrorsNameTheFile) {
     const std::string folder = dir.file("folder.pfm");
     std::filesystem::create_directory(folder);
     expectMentions(errorMessage([&] { readImage(folder); }), folder, "is a directory");
+}
+
+TEST(ImageIo, ReadImageOrPngDecodesPngToLinear) {
+    TempDir dir;
+    Image image(3, 1);
+    image.at(0, 0) = glm::vec3(0.0f, 0.2f, 1.0f);
+    image.at(1, 0) = glm::vec3(0.5f, 0.05f, 0.8f);
+    image.at(2, 0) = glm::vec3(2.0f, -1.0f, 0.001f);  // a display shows these clamped
+    const std::string png = dir.file("shown.png");
+    writeImage(png, image);
+    const Image read = readImageOrPng(png);
+    ASSERT_EQ(read.width, 3);
+    ASSERT_EQ(read.height, 1);
+    for (int x = 0; x < 3; ++x)
+        for (int c = 0; c < 3; ++c) {
+            // Half an 8-bit step of the sRGB curve, at its steepest in linear terms near 1.
+            const float expected = std::min(std::max(image.at(x, 0)[c], 0.0f), 1.0f);
+            EXPECT_NEAR(read.at(x, 0)[c], expected, 0.0045f) << x << " " << c;
+        }
+    // Linear formats go through readImage unchanged; errors name the file.
+    const std::string pfm = dir.file("linear.pfm");
+    writeImage(pfm, image);
+    EXPECT_EQ(readImageOrPng(pfm).pixels, readImage(pfm).pixels);
+    const std::string broken = dir.file("broken.png");
+    test::writeBytes(broken, test::bytesOf("hello"));
+    expectMentions(errorMessage([&] { readImageOrPng(broken); }), broken);
 }
 
 }  // namespace
