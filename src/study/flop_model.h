@@ -63,7 +63,8 @@ struct PathCounts {
     double nodesVisited = 0.0, trianglesTested = 0.0, surfacesShaded = 0.0, rays = 0.0;
 };
 
-// nodes * 121 + triangles * 52 + rays * 9 + camera ray 27 + surfaces * shadingFlops(integrator).
+// nodes * kFlopsPerNode + triangles * kFlopsPerTriangleTest + rays * kFlopsPerRay + kFlopsPerCameraRay +
+// surfaces * shadingFlops(integrator), the constants above.
 double flopsPerPath(const PathCounts& counts, Integrator integrator);
 
 }  // namespace fp::study
