@@ -94,7 +94,7 @@ std::string gnuplotScript(const std::vector<StudyRow>& rows, double relMseThresh
                "# Written by `fragpath study` from study.csv in this directory; edit and rerun with\n") +
            "#   gnuplot plots.gp\n" +
            "# Columns: 1 integrator, 2 denoiser, 3 spp, 4 render_seconds, 5 render_cpu_seconds,\n" +
-           "# 6 denoise_seconds, 7 total_seconds, 8 rmse, 9 rel_mse, 10 ssim.\n" +
+           "# 6 denoise_seconds, 7 total_seconds, 8 rmse, 9 rel_mse, 10 ssim, 11 flip.\n" +
            "set datafile separator ','\n" +
            // A clause maps the other series' rows to NaN; as "missing" they do not break its line.
            "set datafile missing NaN\n" + "set terminal pngcairo size 800,520 font 'sans,10'\n" +

@@ -106,7 +106,11 @@ std::string reportMarkdown(const ReportInput& in) {
         "- **SSIM**: Wang et al. 2004, 11x11 Gaussian window (sigma 1.5), K1 = 0.01, K2 = 0.03, mean over "
         "the "
         "windows inside the image, on the luma (Rec. 709 weights) of the display image (clamp tone map, "
-        "exposure 0, sRGB encoding): dynamic range L = 1 for these HDR images.\n\n";
+        "exposure 0, sRGB encoding): dynamic range L = 1 for these HDR images.\n"
+        "- **FLIP**: mean HDR-FLIP (Andersson et al. 2020 and 2021, `fragpath compare --metric hdr-flip`: "
+        "LDR-FLIP of the two images tone mapped at the exposures the reference calls for, the largest "
+        "per pixel) at the papers' standard viewing condition, 67 pixels per degree; 0 means no visible "
+        "difference, 1 the largest. In study.csv; no threshold is drawn from it yet.\n\n";
 
     md += "## When is an image no longer noisy?\n\n" + std::string(kThresholdRationale) + "\n\n";
     md += formatText("Threshold used: **relMSE <= %.3g**.\n\n", in.relMseThreshold);
@@ -114,15 +118,17 @@ std::string reportMarkdown(const ReportInput& in) {
         "Samples per pixel needed to get under it (interpolated in log-log between the two levels around the "
         "crossing; a raw estimate that never crosses is extrapolated from its last level by MSE ~ 1/N, the "
         "Monte Carlo rate of an unbiased estimator; a denoised one is not, since its error need not fall "
-        "that way):\n\n| integrator | denoiser | spp needed | relMSE at max spp | SSIM at max spp |\n"
-        "|---|---|---|---|---|\n";
+        "that way):\n\n| integrator | denoiser | spp needed | relMSE at max spp | SSIM at max spp | FLIP at "
+        "max "
+        "spp |\n"
+        "|---|---|---|---|---|---|\n";
     for (const std::string& integrator : in.integrators)
         for (const std::string& denoiser : in.denoisers) {
             std::vector<StudyRow> series = seriesOf(in.rows, integrator, denoiser);
             if (series.empty()) continue;
-            md += formatText("| %s | %s | %s | %.3g | %.4f |\n", integrator.c_str(), denoiser.c_str(),
+            md += formatText("| %s | %s | %s | %.3g | %.4f | %.4f |\n", integrator.c_str(), denoiser.c_str(),
                              describe(sppNeeded(series, in.relMseThreshold)).c_str(), series.back().relMse,
-                             series.back().ssim);
+                             series.back().ssim, series.back().flip);
         }
 
     md += "\n## Plots\n\n";

@@ -8,15 +8,15 @@ namespace fp::study {
 
 const char* const kCsvHeader =
     "integrator,denoiser,spp,render_seconds,render_cpu_seconds,denoise_seconds,total_seconds,rmse,rel_mse,"
-    "ssim";
+    "ssim,flip";
 
 std::string csvText(const std::vector<StudyRow>& rows) {
     std::string text = std::string(kCsvHeader) + "\n";
     for (const StudyRow& r : rows) {
         char line[512];
-        std::snprintf(line, sizeof line, "%s,%s,%d,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g\n",
+        std::snprintf(line, sizeof line, "%s,%s,%d,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g\n",
                       r.integrator.c_str(), r.denoiser.c_str(), r.spp, r.renderSeconds, r.renderCpuSeconds,
-                      r.denoiseSeconds, r.totalSeconds(), r.rmse, r.relMse, r.ssim);
+                      r.denoiseSeconds, r.totalSeconds(), r.rmse, r.relMse, r.ssim, r.flip);
         text += line;
     }
     return text;

@@ -5,6 +5,7 @@
 
 #include "core/clock.h"
 #include "core/statistics.h"
+#include "image/flip.h"
 #include "image/image_stats.h"
 #include "study/metrics.h"
 
@@ -18,6 +19,8 @@ std::vector<int> sppLevels(int maxSpp) {
 }
 
 SweepResult runSweep(Renderer& renderer, const Image& reference, const SweepOptions& options) {
+    // HDR-FLIP's exposures depend on the reference only: once for every row.
+    const FlipExposures exposures = hdrFlipExposures(reference);
     const std::vector<int> levels = sppLevels(options.maxSpp);
     SweepResult result;
     for (Integrator integrator : options.integrators) {
@@ -61,6 +64,7 @@ SweepResult runSweep(Renderer& renderer, const Image& reference, const SweepOpti
                     row.rmse = rmse(image, reference);
                     row.relMse = relativeMse(image, reference);
                     row.ssim = ssim(image, reference);
+                    row.flip = hdrFlip(image, reference, kDefaultPixelsPerDegree, exposures).mean;
                     rows.push_back(row);
                     const std::vector<int>& keep = options.keepImagesAt;
                     if (std::find(keep.begin(), keep.end(), levels[level]) != keep.end())

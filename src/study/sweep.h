@@ -22,6 +22,7 @@ struct StudyRow {
     // seconds (all of llvmpipe's threads). The denoiser's wall seconds come on top.
     double renderSeconds = 0.0, renderCpuSeconds = 0.0, denoiseSeconds = 0.0;
     double rmse = 0.0, relMse = 0.0, ssim = 0.0;
+    double flip = 0.0;  // mean HDR-FLIP at the standard viewing condition (image/flip.h)
     double totalSeconds() const { return renderSeconds + denoiseSeconds; }
 };
 

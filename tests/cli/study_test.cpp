@@ -55,14 +55,14 @@ TEST_F(StudyTest, WritesEveryArtefact) {
     std::getline(csv, header);
     EXPECT_EQ(header,
               "integrator,denoiser,spp,render_seconds,render_cpu_seconds,denoise_seconds,total_seconds,rmse,"
-              "rel_mse,ssim");
+              "rel_mse,ssim,flip");
     std::map<std::pair<std::string, std::string>, std::set<int>> levels;
-    std::map<int, double> neeRawRmse;
+    std::map<int, double> neeRawRmse, neeRawFlip;
     std::set<std::string> denoisers;
     int rows = 0;
     for (std::string line; std::getline(csv, line); ++rows) {
         std::vector<std::string> cells = splitCsvLine(line);
-        ASSERT_EQ(cells.size(), 10u) << line;
+        ASSERT_EQ(cells.size(), 11u) << line;
         for (size_t i = 3; i < 9; ++i) {
             double v = std::strtod(cells[i].c_str(), nullptr);
             EXPECT_TRUE(std::isfinite(v) && v >= 0.0) << line;
@@ -70,10 +70,16 @@ TEST_F(StudyTest, WritesEveryArtefact) {
         // SSIM lies in [-1, 1]: a noisy 16x16 image can correlate negatively with the reference.
         double ssim = std::strtod(cells[9].c_str(), nullptr);
         EXPECT_TRUE(std::isfinite(ssim) && ssim >= -1.0 && ssim <= 1.0) << line;
+        // Mean FLIP lies in [0, 1].
+        double flip = std::strtod(cells[10].c_str(), nullptr);
+        EXPECT_TRUE(std::isfinite(flip) && flip >= 0.0 && flip <= 1.0) << line;
         int spp = std::stoi(cells[2]);
         levels[{cells[0], cells[1]}].insert(spp);
         denoisers.insert(cells[1]);
-        if (cells[0] == "nee" && cells[1] == "none") neeRawRmse[spp] = std::strtod(cells[7].c_str(), nullptr);
+        if (cells[0] == "nee" && cells[1] == "none") {
+            neeRawRmse[spp] = std::strtod(cells[7].c_str(), nullptr);
+            neeRawFlip[spp] = flip;
+        }
     }
     EXPECT_TRUE(denoisers.count("none"));
     EXPECT_EQ(rows, int(2 * denoisers.size() * 3));
@@ -82,6 +88,8 @@ TEST_F(StudyTest, WritesEveryArtefact) {
     // sqrt((1/4 + 1/64) / (1 + 1/64)) = 0.51; 0.8 leaves room for the spread of a 16x16 image's MSE.
     ASSERT_EQ(neeRawRmse.size(), 3u);
     EXPECT_LT(neeRawRmse[4], 0.8 * neeRawRmse[1]);
+    // Less noise, less visible difference.
+    EXPECT_LT(neeRawFlip[4], neeRawFlip[1]);
 
     // Plots from gnuplot, the script that drew them, the strip and the reference.
     EXPECT_TRUE(std::filesystem::exists(out + "/plots.gp"));
