@@ -1,7 +1,7 @@
 # Written by `fragpath study` from study.csv in this directory; edit and rerun with
 #   gnuplot plots.gp
 # Columns: 1 integrator, 2 denoiser, 3 spp, 4 render_seconds, 5 render_cpu_seconds,
-# 6 denoise_seconds, 7 total_seconds, 8 rmse, 9 rel_mse, 10 ssim.
+# 6 denoise_seconds, 7 total_seconds, 8 rmse, 9 rel_mse, 10 ssim, 11 flip.
 set datafile separator ','
 set datafile missing NaN
 set terminal pngcairo size 800,520 font 'sans,10'
@@ -34,7 +34,7 @@ plot 'study.csv' every ::1 using (strcol(1) eq 'naive' && strcol(2) eq 'none' ? 
 set output 'error_vs_time.png'
 set title 'Error against render time (this machine; median of the runs)'
 set xlabel 'render + denoise time (ms)'
-set xrange [6.47406:59437.7]
+set xrange [5.00514:56450.9]
 set arrow 1 from budget_ms, graph 0 to budget_ms, graph 1 nohead lc 'red' dt 2 lw 2
 set label 1 '60 FPS frame budget (16.7 ms)' at budget_ms, graph 0.95 offset 0.5, 0 tc 'red'
 plot 'study.csv' every ::1 using (strcol(1) eq 'naive' && strcol(2) eq 'none' ? 1000 * $7 : NaN):9 with linespoints lc 1 dt 1 pt 6 title 'naive', \
