@@ -17,7 +17,7 @@ const char* denoiserName(Denoiser denoiser) {
 
 Image denoise(Renderer& renderer, Denoiser which) {
     if (which == Denoiser::None) return renderer.readback().mean();
-    DenoisePasses passes;
+    DenoisePasses passes(renderer.shaders());
     passes.run(renderer, which);
     return passes.result();
 }

@@ -19,7 +19,8 @@ const char* denoiserName(Denoiser denoiser);
 
 // The renderer's current accumulation, denoised by `which` (rows top first, like Accumulation::mean()).
 // None gives the raw mean. Needs a render with RenderSettings::guides set (else throws fp::Error).
-// Compiles the passes each call; to denoise often, keep a DenoisePasses (denoise/denoise_passes.h).
+// Compiles the passes each call, from the renderer's shaders (built in, or its shader directory); to
+// denoise often, keep a DenoisePasses (denoise/denoise_passes.h).
 Image denoise(Renderer& renderer, Denoiser which);
 
 }  // namespace fp

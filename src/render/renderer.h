@@ -72,6 +72,8 @@ class Renderer {
     // after configure().
     GLuint accumulationTexture(Attachment a) const { return targets_->texture(a); }
     const SceneStats& stats() const { return stats_; }
+    // Where its shaders come from (built in, or a directory): the denoisers read theirs from there too.
+    const ShaderLibrary& shaders() const { return shaders_; }
     // GPU memory of the image buffers the current settings use: the accumulation, and bdpt's light
     // image when the integrator needs it. Scene data is in stats().gpuBytes.
     size_t imageBytes() const;

@@ -18,7 +18,8 @@ std::vector<StudyDenoiser> availableDenoisers() {
     for (Denoiser d : {Denoiser::None, Denoiser::Bilateral, Denoiser::Atrous}) {
         list.push_back({denoiserName(d), [d, passes](Renderer& renderer) {
                             if (d == Denoiser::None) return renderer.readback().mean();
-                            if (!*passes) *passes = std::make_unique<DenoisePasses>();
+                            // From the renderer's shaders, so that --shader-dir reaches them too.
+                            if (!*passes) *passes = std::make_unique<DenoisePasses>(renderer.shaders());
                             (*passes)->run(renderer, d);
                             return (*passes)->result();
                         }});

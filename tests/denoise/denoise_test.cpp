@@ -3,8 +3,11 @@
 // blur across a normal discontinuity.
 #include <gtest/gtest.h>
 
+#include <unistd.h>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
+#include <fstream>
 
 #include "core/error.h"
 #include "denoise/denoise_passes.h"
@@ -129,6 +132,35 @@ TEST(Denoise, NeverMakesNanOrInf) {
         Image out = passes.result();
         EXPECT_TRUE(allFinite(out)) << denoiserName(d) << " with unrendered pixels";
     }
+}
+
+// The denoisers read their shaders where the renderer reads its own: a renderer given a shader directory
+// (--shader-dir, the viewer's hot reload) whose a-trous pass does not compile makes denoise() fail
+// naming that file, while the built-in passes would have run. What this catches: denoise() compiling the
+// built-in passes whatever the renderer was given (it did: `render --shader-dir` and `study
+// --shader-dir` could not try a changed denoiser).
+TEST(Denoise, PassesComeFromTheRenderersShaderDirectory) {
+    ensureGlContext();
+    namespace fs = std::filesystem;
+    fs::path dir = fs::temp_directory_path() / ("fp_denoise_shaders_" + std::to_string(::getpid()));
+    fs::remove_all(dir);
+    fs::copy(FP_SOURCE_DIR "/glsl", dir, fs::copy_options::recursive);
+    {
+        std::ofstream broken(dir / "denoise" / "atrous.frag.glsl", std::ios::app);
+        broken << "\nthis does not compile\n";
+    }
+    Scene scene = furnaceBox(0.5f, 1.0f);
+    Renderer renderer(scene, ShaderLibrary(dir.string()));
+    renderer.configure(guided(8, Integrator::Nee, 2), insideCamera());
+    renderer.render(2);
+    EXPECT_NO_THROW(denoise(renderer, Denoiser::Bilateral));
+    try {
+        denoise(renderer, Denoiser::Atrous);
+        ADD_FAILURE() << "the broken a-trous pass compiled";
+    } catch (const Error& e) {
+        EXPECT_NE(std::string(e.what()).find("atrous.frag.glsl"), std::string::npos) << e.what();
+    }
+    fs::remove_all(dir);
 }
 
 TEST(Denoise, NoneIsTheRawMeanAndFiltersNeedGuides) {
