@@ -62,18 +62,16 @@ std::vector<SampleRange> parseRanges(const std::string& text, const std::string&
 
 std::string renderFingerprint(const Scene& scene, const RenderSettings& settings, const Camera& camera) {
     Fnv f;
-    for (const Triangle& t : scene.triangles) {
-        f.value(t.p);
-        f.value(t.n);
-        f.value(t.material);
-    }
-    // Instances (none in most scenes: their fingerprint is the one they had before instancing).
-    for (const InstancedMesh& mesh : scene.meshes)
-        for (const Triangle& t : mesh.triangles) {
+    auto triangles = [&f](const std::vector<Triangle>& list) {
+        for (const Triangle& t : list) {
             f.value(t.p);
             f.value(t.n);
             f.value(t.material);
         }
+    };
+    triangles(scene.triangles);
+    // Instances (none in most scenes: their fingerprint is the one they had before instancing).
+    for (const InstancedMesh& mesh : scene.meshes) triangles(mesh.triangles);
     for (const Instance& instance : scene.instances) {
         f.value(instance.mesh);
         f.value(instance.objectToWorld);
