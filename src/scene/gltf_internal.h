@@ -201,6 +201,8 @@ class MaterialTable {
 
     // The TEXCOORD set material `gltfMaterial` (-1: the default material) reads, or -1 if none.
     int texcoordSet(int gltfMaterial);
+    // The KHR_texture_transform its maps' coordinates go through (identity without), in glTF's uv.
+    glm::mat3 uvTransform(int gltfMaterial);
     // The Scene material for a primitive using `gltfMaterial`; `hasTexcoords` says whether it has the
     // set texcoordSet asked for (without, a textured material becomes a copy with its maps' means).
     uint32_t use(int gltfMaterial, bool hasTexcoords);

@@ -1,5 +1,6 @@
 // glTF metallic-roughness materials onto fragpath's (README, the material table; gltf_internal.h).
 #include <algorithm>
+#include <cmath>
 #include <map>
 #include <set>
 
@@ -100,9 +101,10 @@ struct MaterialTable::Impl {
 
     struct Resolved {
         bool done = false;
-        uint32_t index = 0;       // into Scene::materials
-        int texcoordSet = -1;     // the TEXCOORD set its texture reads, -1 if it has none
-        int64_t untextured = -1;  // the copy for primitives without that set, once made
+        uint32_t index = 0;           // into Scene::materials
+        int texcoordSet = -1;         // the TEXCOORD set its texture reads, -1 if it has none
+        glm::mat3 uvTransform{1.0f};  // its maps' KHR_texture_transform (the first map's), glTF's uv
+        int64_t untextured = -1;      // the copy for primitives without that set, once made
         size_t withoutTexcoords = 0;
     };
     std::vector<Resolved> resolved;  // per glTF material, then the default material
@@ -213,6 +215,33 @@ struct MaterialTable::Impl {
     const std::string kIgnoreMap = "ignoring the map";
     const std::string kShowChecker = "showing a magenta and black checker instead";
 
+    // A textureInfo's KHR_texture_transform as the matrix its specification gives, uv' = T R S (u, v, 1)
+    // in glTF's uv (v down the image): offset, then rotation counter-clockwise by `rotation` radians,
+    // then scale; identity without the extension. Throws fp::Error for non-finite values.
+    glm::mat3 textureTransform(const tinygltf::ExtensionMap& extensions, int material) const {
+        auto it = extensions.find("KHR_texture_transform");
+        if (it == extensions.end() || !it->second.IsObject()) return glm::mat3(1.0f);
+        const tinygltf::Value& t = it->second;
+        auto pair = [&](const char* key, double fallback) {
+            glm::dvec2 v(fallback);
+            if (t.Has(key) && t.Get(key).IsArray())
+                for (int c = 0; c < 2 && size_t(c) < t.Get(key).ArrayLen(); ++c)
+                    v[c] = t.Get(key).Get(c).GetNumberAsDouble();
+            return v;
+        };
+        glm::dvec2 offset = pair("offset", 0.0), scale = pair("scale", 1.0);
+        double rotation = extensionNumber(extensions, "KHR_texture_transform", "rotation", 0.0);
+        if (!std::isfinite(offset.x) || !std::isfinite(offset.y) || !std::isfinite(scale.x) ||
+            !std::isfinite(scale.y) || !std::isfinite(rotation))
+            throw Error(name + ": " + label(material) + ": KHR_texture_transform holds a non-finite value");
+        const double c = std::cos(rotation), s = std::sin(rotation);
+        // Columns, as the specification's GLSL writes them.
+        glm::dmat3 translate(1, 0, 0, 0, 1, 0, offset.x, offset.y, 1);
+        glm::dmat3 rotate(c, s, 0, -s, c, 0, 0, 0, 1);
+        glm::dmat3 scaled(scale.x, 0, 0, 0, scale.y, 0, 0, 0, 1);
+        return glm::mat3(translate * rotate * scaled);
+    }
+
     // glTF texture `info` (of the kind `slot`) as a Scene texture index, or -1 (with a warning or a
     // tally) when it cannot be used: a missing colour map shows the checker, other missing maps are
     // ignored; every map must read the material's one TEXCOORD set (the first map's).
@@ -223,13 +252,23 @@ struct MaterialTable::Impl {
         const Loaded* map = image(info.index, material, slot, colour ? kShowChecker : kIgnoreMap);
         if (!map || (!colour && !map->problem.empty())) return -1;
         if (broken) *broken = !map->problem.empty();
-        if (r->texcoordSet < 0) r->texcoordSet = info.texCoord;
-        if (info.texCoord != r->texcoordSet) {
+        // KHR_texture_transform: its own texCoord overrides the map's.
+        int set = int(extensionNumber(info.extensions, "KHR_texture_transform", "texCoord", info.texCoord));
+        glm::mat3 transform = textureTransform(info.extensions, material);
+        bool first = r->texcoordSet < 0;
+        if (first) {
+            r->texcoordSet = set;
+            r->uvTransform = transform;
+        }
+        if (set != r->texcoordSet) {
             tally("maps reading another TEXCOORD set than the material's first map ignored", material);
             return -1;
         }
-        if (info.extensions.count("KHR_texture_transform"))
-            tally("KHR_texture_transform not supported yet, ignored", material);
+        if (!first && transform != r->uvTransform)
+            tally(
+                "maps with another KHR_texture_transform than the material's first map drawn with the "
+                "first's",
+                material);
         int sampler = model.textures[size_t(info.index)].sampler;
         if (sampler >= 0 && size_t(sampler) < model.samplers.size() &&
             (model.samplers[size_t(sampler)].wrapS != TINYGLTF_TEXTURE_WRAP_REPEAT ||
@@ -319,6 +358,10 @@ MaterialTable::~MaterialTable() = default;
 
 int MaterialTable::texcoordSet(int gltfMaterial) {
     return impl_->resolve(gltfMaterial).texcoordSet;
+}
+
+glm::mat3 MaterialTable::uvTransform(int gltfMaterial) {
+    return impl_->resolve(gltfMaterial).uvTransform;
 }
 
 uint32_t MaterialTable::use(int gltfMaterial, bool hasTexcoords) {

@@ -125,12 +125,14 @@ void appendPrimitive(const tinygltf::Model& model, const MeshInstance& instance,
                      true, "VEC2 of FLOAT, or of normalized UNSIGNED_BYTE or UNSIGNED_SHORT");
         sameCount(data);
         uv.resize(vertexCount);
+        const glm::mat3 transform = materials.uvTransform(primitive.material);  // KHR_texture_transform
         for (size_t i = 0; i < vertexCount; ++i) {
             float u = data.real(i, 0), v = data.real(i, 1);
             if (!std::isfinite(u) || !std::isfinite(v))
                 throw Error(name + ": " + data.label() + " holds a non-finite value (element " +
                             std::to_string(i) + ")");
-            uv[i] = glm::vec2(u, 1.0f - v);  // glTF's v = 0 is the top row of the image, ours the bottom
+            glm::vec3 t = transform * glm::vec3(u, v, 1.0f);
+            uv[i] = glm::vec2(t.x, 1.0f - t.y);  // glTF's v = 0 is the top row of the image, ours the bottom
         }
     }
     uint32_t material = materials.use(primitive.material, !uv.empty());

@@ -587,7 +587,7 @@ class Schema {
 bool isImplementedExtension(const std::string& extension) {
     return extension == "KHR_materials_emissive_strength" || extension == "KHR_materials_transmission" ||
            extension == "KHR_materials_ior" || extension == "KHR_materials_specular" ||
-           extension == "KHR_lights_punctual";
+           extension == "KHR_lights_punctual" || extension == "KHR_texture_transform";
 }
 
 std::string percentDecoded(const std::string& uri) {

@@ -276,6 +276,36 @@ TEST(GltfMaterial, TangentsOfNormalMappedPrimitivesInWorldSpace) {
         for (const glm::vec4& tangent : scene.tangents[t]) EXPECT_EQ(tangent.w, 0.0f) << "triangle " << t;
 }
 
+// KHR_texture_transform is baked into the triangles' texture coordinates, by the specification's
+// uv' = T R S (u, v, 1) in glTF's uv, then v flipped: scale (2, 3), a quarter turn counter-clockwise
+// ((x, y) -> (-y, x)) and offset (0.5, 0) take (u, v) to (0.5 - 3 v, 2 u), so ours are
+// (0.5 - 3 v, 1 - 2 u). Its texCoord overrides the map's. A second map with another transform is drawn
+// with the first's, with a warning.
+TEST(GltfMaterial, TextureTransformIsBakedIntoTheTexcoords) {
+    GltfBuilder b;
+    int checker = addTexture(b, test::checkerTexels(2, 2, {255, 0, 0}, {0, 0, 255}), 2, 2);
+    const double quarter = 1.5707963267948966;
+    json transform = {{"offset", {0.5, 0.0}}, {"rotation", quarter}, {"scale", {2.0, 3.0}}};
+    json base = {{"index", checker}, {"texCoord", 1}, {"extensions", {{"KHR_texture_transform", transform}}}};
+    base["extensions"]["KHR_texture_transform"]["texCoord"] = 0;  // overrides texCoord 1
+    json other = {{"index", checker}, {"extensions", {{"KHR_texture_transform", {{"offset", {0.25, 0.0}}}}}}};
+    WarningCapture capture;
+    Scene scene = withMaterials(b, {{{"name", "transformed"},
+                                     {"pbrMetallicRoughness", pbr(0, 1, {{"baseColorTexture", base}})},
+                                     {"emissiveTexture", other}}});
+    const Triangle& t = scene.triangles[0];  // corners with glTF uv (0, 1), (1, 1), (1, 0)
+    const glm::vec2 expected[3] = {{-2.5f, 1.0f}, {-2.5f, -1.0f}, {0.5f, -1.0f}};
+    for (int k = 0; k < 3; ++k) {
+        EXPECT_NEAR(t.uv[size_t(k)].x, expected[k].x, 1e-5f) << "corner " << k;
+        EXPECT_NEAR(t.uv[size_t(k)].y, expected[k].y, 1e-5f) << "corner " << k;
+    }
+    EXPECT_GE(materialOfQuad(scene, 0).diffuseTexture, 0);
+    EXPECT_TRUE(
+        capture.contains("maps with another KHR_texture_transform than the material's first map drawn "
+                         "with the first's (material 'transformed'"))
+        << test::joined(capture);
+}
+
 TEST(GltfMaterial, TexturedMaterialWithoutItsTexcoordsGetsTheMeanColour) {
     GltfBuilder b;
     int checker = addTexture(b, test::checkerTexels(2, 2, {255, 0, 0}, {0, 0, 255}), 2, 2);
