@@ -217,7 +217,8 @@ struct MaterialTable::Impl {
 
     // A textureInfo's KHR_texture_transform as the matrix its specification gives, uv' = T R S (u, v, 1)
     // in glTF's uv (v down the image): offset, then rotation counter-clockwise by `rotation` radians,
-    // then scale; identity without the extension. Throws fp::Error for non-finite values.
+    // then scale; identity without the extension. Throws fp::Error for a non-finite value, or an offset
+    // or scale beyond 1e6.
     glm::mat3 textureTransform(const tinygltf::ExtensionMap& extensions, int material) const {
         auto it = extensions.find("KHR_texture_transform");
         if (it == extensions.end() || !it->second.IsObject()) return glm::mat3(1.0f);
@@ -231,15 +232,31 @@ struct MaterialTable::Impl {
         };
         glm::dvec2 offset = pair("offset", 0.0), scale = pair("scale", 1.0);
         double rotation = extensionNumber(extensions, "KHR_texture_transform", "rotation", 0.0);
-        if (!std::isfinite(offset.x) || !std::isfinite(offset.y) || !std::isfinite(scale.x) ||
-            !std::isfinite(scale.y) || !std::isfinite(rotation))
-            throw Error(name + ": " + label(material) + ": KHR_texture_transform holds a non-finite value");
+        // Beyond 1e6 texture repeats, float texture coordinates no longer tell texels apart.
+        auto sane = [](double v) { return std::abs(v) <= 1e6; };
+        if (!sane(offset.x) || !sane(offset.y) || !sane(scale.x) || !sane(scale.y) ||
+            !std::isfinite(rotation))
+            throw Error(name + ": " + label(material) +
+                        ": KHR_texture_transform holds a value that is not finite or beyond 1e6");
         const double c = std::cos(rotation), s = std::sin(rotation);
         // Columns, as the specification's GLSL writes them.
         glm::dmat3 translate(1, 0, 0, 0, 1, 0, offset.x, offset.y, 1);
         glm::dmat3 rotate(c, s, 0, -s, c, 0, 0, 0, 1);
         glm::dmat3 scaled(scale.x, 0, 0, 0, scale.y, 0, 0, 0, 1);
         return glm::mat3(translate * rotate * scaled);
+    }
+
+    // KHR_texture_transform's texCoord, or `fallback` without one; throws fp::Error unless it is an
+    // integer from 0 to 255 (a set index: TEXCOORD_n).
+    int transformTexCoord(const tinygltf::ExtensionMap& extensions, int material, int fallback) const {
+        auto it = extensions.find("KHR_texture_transform");
+        if (it == extensions.end() || !it->second.IsObject() || !it->second.Has("texCoord")) return fallback;
+        const tinygltf::Value& v = it->second.Get("texCoord");
+        double n = v.IsNumber() ? v.GetNumberAsDouble() : -1.0;
+        if (!(n >= 0.0 && n <= 255.0 && n == std::floor(n)))
+            throw Error(name + ": " + label(material) +
+                        ": KHR_texture_transform.texCoord must be a TEXCOORD set number from 0 to 255");
+        return int(n);
     }
 
     // glTF texture `info` (of the kind `slot`) as a Scene texture index, or -1 (with a warning or a
@@ -253,7 +270,7 @@ struct MaterialTable::Impl {
         if (!map || (!colour && !map->problem.empty())) return -1;
         if (broken) *broken = !map->problem.empty();
         // KHR_texture_transform: its own texCoord overrides the map's.
-        int set = int(extensionNumber(info.extensions, "KHR_texture_transform", "texCoord", info.texCoord));
+        int set = transformTexCoord(info.extensions, material, info.texCoord);
         glm::mat3 transform = textureTransform(info.extensions, material);
         bool first = r->texcoordSet < 0;
         if (first) {

@@ -132,6 +132,9 @@ void appendPrimitive(const tinygltf::Model& model, const MeshInstance& instance,
                 throw Error(name + ": " + data.label() + " holds a non-finite value (element " +
                             std::to_string(i) + ")");
             glm::vec3 t = transform * glm::vec3(u, v, 1.0f);
+            if (!std::isfinite(t.x) || !std::isfinite(t.y))
+                throw Error(name + ": " + data.label() + " element " + std::to_string(i) +
+                            " leaves the float range through its material's KHR_texture_transform");
             uv[i] = glm::vec2(t.x, 1.0f - t.y);  // glTF's v = 0 is the top row of the image, ours the bottom
         }
     }

@@ -304,6 +304,18 @@ TEST(GltfMaterial, TextureTransformIsBakedIntoTheTexcoords) {
         capture.contains("maps with another KHR_texture_transform than the material's first map drawn "
                          "with the first's (material 'transformed'"))
         << test::joined(capture);
+
+    // A texCoord that names no set, and a non-finite transform, are refused.
+    for (json bad : {json{{"texCoord", -1}}, json{{"texCoord", 1e300}}, json{{"texCoord", 0.5}},
+                     json{{"scale", {1e308, 1e308}}, {"offset", {1e308, -1e308}}, {"rotation", 1e308}}}) {
+        GltfBuilder c;
+        int tex = addTexture(c, test::checkerTexels(1, 1, {9, 9, 9}, {9, 9, 9}), 1, 1);
+        json info = {{"index", tex}, {"extensions", {{"KHR_texture_transform", bad}}}};
+        std::string message = test::errorOf([&] {
+            withMaterials(c, {{{"pbrMetallicRoughness", pbr(0, 1, {{"baseColorTexture", info}})}}});
+        });
+        EXPECT_NE(message.find("KHR_texture_transform"), std::string::npos) << bad.dump() << ": " << message;
+    }
 }
 
 TEST(GltfMaterial, TexturedMaterialWithoutItsTexcoordsGetsTheMeanColour) {
