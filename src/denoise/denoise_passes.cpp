@@ -115,23 +115,36 @@ void DenoisePasses::run(const Renderer& renderer, Denoiser which) {
           {"uNormalDepth", renderer.accumulationTexture(kNormalDepthAttachment)},
           {"uAlbedoSum", renderer.accumulationTexture(kAlbedoAttachment)},
           {"uSplatSum", splats ? image.splatSum : image.sum}});
-    const GLuint guide = textures_[kGuide], albedo = textures_[kAlbedo];
-    Texture current = kColorA, other = kColorB;
-    auto filter = [&](Pass pass) {
-        draw(pass, framebuffers_[other], {{"uColor", textures_[current]}, {"uGuide", guide}});
-        std::swap(current, other);
+    filter(textures_[kColorA], textures_[kGuide], textures_[kAlbedo], width_, height_, which);
+}
+
+void DenoisePasses::filter(GLuint color, GLuint guide, GLuint modulate, int width, int height,
+                           Denoiser which) {
+    if (which == Denoiser::None) throw Error("internal: DenoisePasses::filter with no denoiser");
+    resize(width, height);
+    glDisable(GL_SCISSOR_TEST);
+    glDisable(GL_BLEND);
+    glBindVertexArray(vertexArray_);
+    // The first pass reads `color`, the others ping-pong between colours A and B (B first, so that
+    // `color` may be colour A).
+    GLuint current = color;
+    Texture next = kColorB;
+    auto pass = [&](Pass p) {
+        draw(p, framebuffers_[next], {{"uColor", current}, {"uGuide", guide}});
+        current = textures_[next];
+        next = next == kColorA ? kColorB : kColorA;
     };
     if (which == Denoiser::Bilateral) {
-        filter(kBilateral);
+        pass(kBilateral);
     } else {
-        filter(kVariance);
+        pass(kVariance);
         for (int i = 0; i < kAtrousIterations; ++i) {
             program(kAtrous).use();
             program(kAtrous).set("uStep", 1 << i);
-            filter(kAtrous);
+            pass(kAtrous);
         }
     }
-    draw(kFinish, framebuffers_[kResult], {{"uColor", textures_[current]}, {"uAlbedo", albedo}});
+    draw(kFinish, framebuffers_[kResult], {{"uColor", current}, {"uAlbedo", modulate}});
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     glActiveTexture(GLenum(GL_TEXTURE0 + kSpareUnit));
 }

@@ -26,6 +26,11 @@ class DenoisePasses {
     // Denoises the renderer's current accumulation with `which` (not None). Throws fp::Error if the
     // render has no guides (RenderSettings::guides) or a pass does not compile.
     void run(const Renderer& renderer, Denoiser which);
+    // The filter and finish passes alone, for a front end that prepares its own input (the real-time
+    // pipeline, src/realtime/temporal_pipeline.h): `color` holds (demodulated colour, luminance variance
+    // of its mean, or -1 to estimate it), `guide` and `modulate` what the prepare pass writes; none is
+    // changed. `which` is not None.
+    void filter(GLuint color, GLuint guide, GLuint modulate, int width, int height, Denoiser which);
     // The last result, (denoised radiance, 1) per pixel, at the accumulation's size.
     GLuint resultTexture() const { return textures_[kResult]; }
     Image result() const;  // rows top first
