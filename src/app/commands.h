@@ -11,5 +11,6 @@ int viewCommand(const std::vector<std::string>& args);
 int mergeCommand(const std::vector<std::string>& args);
 int studyCommand(const std::vector<std::string>& args);
 int compareCommand(const std::vector<std::string>& args);
+int realtimeCommand(const std::vector<std::string>& args);
 
 }  // namespace fp

@@ -21,6 +21,7 @@ static const char* kUsage =
     "  merge PARTS -o OUT.exr  combine partial renders of disjoint sample ranges into one image\n"
     "  study [SCENE]    how much noise is too much: error and time against samples, feasibility report\n"
     "  compare TEST REF  one error figure between two images: FLIP (perceptual), RMSE, relMSE or SSIM\n"
+    "  realtime [SCENE] --out DIR  a camera path at a frame budget, with temporal reuse and filtering\n"
     "\n"
     "Run 'fragpath <command> --help' for the options of a command; 'fragpath --version' prints the\n"
     "version, the git commit and the OpenGL renderer the offscreen commands would use.\n"
@@ -57,6 +58,7 @@ int main(int argc, char** argv) {
         if (command == "merge") return fp::mergeCommand(args);
         if (command == "study") return fp::studyCommand(args);
         if (command == "compare") return fp::compareCommand(args);
+        if (command == "realtime") return fp::realtimeCommand(args);
         std::fprintf(stderr, "fragpath: unknown command '%s'\n\n%s", command.c_str(), kUsage);
         return 2;
     } catch (const fp::UsageError& e) {

@@ -1,0 +1,136 @@
+#include "realtime/realtime_run.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+
+#include "core/clock.h"
+#include "core/error.h"
+#include "image/file_io.h"
+#include "image/flip.h"
+#include "image/image_stats.h"
+#include "image/png.h"
+#include "study/metrics.h"
+
+namespace fp {
+
+namespace {
+
+const char* const kCsvHeader =
+    "frame,ms,spp,trace_ms,temporal_ms,filter_ms,mean_history_frames,rmse,rel_mse,ssim,flip,flicker";
+
+std::string optionalField(const std::optional<double>& value) {
+    if (!value) return "";
+    char text[32];
+    std::snprintf(text, sizeof text, "%.6g", *value);
+    return text;
+}
+
+std::string csvRow(const FrameRow& r) {
+    char text[160];
+    std::snprintf(text, sizeof text, "%d,%.3f,%d,%.3f,%.3f,%.3f,%.3f,", r.frame, r.ms(), r.spp, r.traceMs,
+                  r.temporalMs, r.filterMs, r.meanHistoryFrames);
+    return text + optionalField(r.rmse) + "," + optionalField(r.relMse) + "," + optionalField(r.ssim) + "," +
+           optionalField(r.flip) + "," + optionalField(r.flicker);
+}
+
+// Sample indices of the references, far from the frames' (which count up from 0), so that a frame and
+// its reference share no sample.
+constexpr uint32_t kReferenceOffset = 1u << 28;
+
+}  // namespace
+
+int samplesForBudget(double budgetMs, double traceMsPerSample, double overheadMs) {
+    if (!(traceMsPerSample > 0.0)) return 1;
+    double fit = std::floor((budgetMs - overheadMs) / traceMsPerSample);
+    return int(std::clamp(fit, 1.0, double(RenderSettings::kMaxSamplesPerPass)));
+}
+
+double flicker(const std::vector<float>& luma, const std::vector<float>& previousLuma,
+               const std::vector<float>* reference, const std::vector<float>* previousReference) {
+    if (luma.size() != previousLuma.size() || luma.empty()) throw Error("flicker: frames of different sizes");
+    double sum = 0.0;
+    for (size_t i = 0; i < luma.size(); ++i) {
+        double e = luma[i], before = previousLuma[i];
+        if (reference && previousReference) {
+            e -= (*reference)[i];
+            before -= (*previousReference)[i];
+        }
+        sum += std::abs(e - before);
+    }
+    return sum / double(luma.size());
+}
+
+std::vector<FrameRow> renderRealtime(Renderer& renderer, const RealtimeRun& run,
+                                     const std::function<void(const FrameRow&)>& onFrame,
+                                     const std::function<bool()>& stop) {
+    std::filesystem::create_directories(run.outDir);
+    const std::string csvPath = run.outDir + "/frames.csv";
+    std::string csv = std::string(kCsvHeader) + "\n";
+    TemporalPipeline pipeline(renderer.shaders());
+    std::vector<FrameRow> rows;
+    std::vector<float> previousLuma, previousReference;
+    const double budgetMs = 1000.0 / run.fps;
+    int spp = run.fixedSpp.value_or(1);
+    uint32_t sampleOffset = 0;
+    for (int f = 0; f < run.frames && !(stop && stop()); ++f) {
+        const Camera camera = run.path.at(run.path.startTime() + double(f) / run.fps);
+        validateCamera(camera, "the camera path at frame " + std::to_string(f));
+        RenderSettings s = run.settings;
+        s.guides = true;
+        s.samplesPerPass = spp;
+        s.sampleOffset = sampleOffset;
+        sampleOffset += uint32_t(spp);
+        FrameRow row;
+        row.frame = f;
+        row.spp = spp;
+        auto start = SteadyClock::now();
+        renderer.configure(s, camera);
+        renderer.render(spp);
+        glFinish();
+        row.traceMs = 1e3 * secondsSince(start);
+        pipeline.run(renderer, camera, run.temporal);
+        row.temporalMs = 1e3 * pipeline.timings().temporalSeconds;
+        row.filterMs = 1e3 * pipeline.timings().filterSeconds;
+        std::vector<float> history = pipeline.historySamples();
+        double samples = 0.0;
+        for (float n : history) samples += n;
+        row.meanHistoryFrames = samples / double(history.size()) / double(spp);
+        Image image = pipeline.result();
+        writePng(run.outDir + "/frame_" +
+                     std::string(4 - std::min<size_t>(4, std::to_string(f).size()), '0') + std::to_string(f) +
+                     ".png",
+                 image, run.display);
+
+        std::vector<float> luma = study::displayLuma(image), referenceLuma;
+        if (run.referenceSpp) {
+            RenderSettings r = run.settings;
+            r.guides = true;  // as the frames: changing it would recompile the shaders every frame
+            r.samplesPerPass = std::min(*run.referenceSpp, RenderSettings::kMaxSamplesPerPass);
+            r.sampleOffset = kReferenceOffset;
+            renderer.configure(r, camera);
+            renderer.render(*run.referenceSpp);
+            Image reference = renderer.readback().mean();
+            row.rmse = rmse(image, reference);
+            row.relMse = study::relativeMse(image, reference);
+            row.ssim = study::ssim(image, reference);
+            row.flip = hdrFlip(image, reference, kDefaultPixelsPerDegree).mean;
+            referenceLuma = study::displayLuma(reference);
+        }
+        if (f > 0)
+            row.flicker = flicker(luma, previousLuma, run.referenceSpp ? &referenceLuma : nullptr,
+                                  run.referenceSpp ? &previousReference : nullptr);
+        previousLuma = std::move(luma);
+        previousReference = std::move(referenceLuma);
+        if (!run.fixedSpp)
+            spp = samplesForBudget(budgetMs, row.traceMs / double(row.spp), row.temporalMs + row.filterMs);
+        rows.push_back(row);
+        csv += csvRow(row) + "\n";
+        writeFileAtomically(csvPath, std::vector<std::uint8_t>(csv.begin(), csv.end()));
+        if (onFrame) onFrame(row);
+    }
+    return rows;
+}
+
+}  // namespace fp

@@ -1,0 +1,67 @@
+// `fragpath realtime` as a user runs it: the frames and frames.csv it writes, and its refusals.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "cli/fragpath_runner.h"
+#include "core/text.h"
+
+namespace fp::test {
+namespace {
+
+class RealtimeCli : public TempDirTest {};
+
+std::vector<std::vector<std::string>> readCsv(const std::string& path) {
+    std::ifstream in(path);
+    std::vector<std::vector<std::string>> rows;
+    std::string line;
+    while (std::getline(in, line)) {
+        std::vector<std::string> fields;
+        std::stringstream s(line);
+        std::string field;
+        while (std::getline(s, field, ',')) fields.push_back(field);
+        if (!line.empty() && line.back() == ',') fields.push_back("");
+        rows.push_back(fields);
+    }
+    return rows;
+}
+
+TEST_F(RealtimeCli, WritesEveryFrameAndARowOfFiguresPerFrame) {
+    CliRun run =
+        runFragpath("realtime --size 32x32 --frames 3 --spp 2 --reference-spp 8 --out " + path("out"));
+    ASSERT_EQ(run.exitCode, 0) << run.output;
+    for (int f = 0; f < 3; ++f)
+        EXPECT_TRUE(std::filesystem::exists(path("out/frame_000" + std::to_string(f) + ".png"))) << f;
+    auto rows = readCsv(path("out/frames.csv"));
+    ASSERT_EQ(rows.size(), 4u);
+    const std::vector<std::string> header = {
+        "frame", "ms",      "spp",  "trace_ms", "temporal_ms", "filter_ms", "mean_history_frames",
+        "rmse",  "rel_mse", "ssim", "flip",     "flicker"};
+    EXPECT_EQ(rows[0], header);
+    for (size_t r = 1; r < rows.size(); ++r) {
+        ASSERT_EQ(rows[r].size(), header.size()) << r;
+        EXPECT_EQ(rows[r][0], std::to_string(r - 1));
+        EXPECT_EQ(rows[r][2], "2");  // --spp fixes the samples per frame
+        // The history grows by one frame a frame (the orbit barely moves in 3 frames at 10 degrees/s).
+        EXPECT_NEAR(std::stod(rows[r][6]), double(r), 0.2) << r;
+        double flip = std::stod(rows[r][10]);
+        EXPECT_GT(flip, 0.0);
+        EXPECT_LT(flip, 1.0);
+        EXPECT_EQ(rows[r][11].empty(), r == 1) << "flicker needs a previous frame";
+    }
+}
+
+TEST_F(RealtimeCli, RefusesWhatItCannotRender) {
+    EXPECT_EQ(runFragpath("realtime --frames 1").exitCode, 2);  // no --out
+    CliRun bad = runFragpath("realtime --temporal maybe --out " + path("o"));
+    EXPECT_EQ(bad.exitCode, 2);
+    EXPECT_NE(bad.output.find("expected on or off"), std::string::npos) << bad.output;
+    CliRun missing = runFragpath("realtime --camera-path " + path("none.json") + " --out " + path("o"));
+    EXPECT_NE(missing.exitCode, 0);
+    EXPECT_NE(missing.output.find("none.json"), std::string::npos) << missing.output;
+}
+
+}  // namespace
+}  // namespace fp::test
