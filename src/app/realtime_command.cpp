@@ -52,7 +52,8 @@ void printRealtimeUsage() {
         "frame,ms,spp,trace_ms,temporal_ms,filter_ms,mean_history_frames,rmse,rel_mse,ssim,flip,flicker\n"
         "(the error columns with --reference-spp; flicker from the second frame: the mean change of the\n"
         "display luma's error from one frame to the next, or of the luma itself without references).\n"
-        "Interrupted, it keeps the frames written so far.\n",
+        "DIR/strip.png shows five frames spread over the run, above their references. Interrupted, it\n"
+        "keeps the frames written so far.\n",
         stdout);
     std::fputs(formatOptions(realtimeOptions()).c_str(), stdout);
 }

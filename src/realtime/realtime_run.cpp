@@ -39,6 +39,29 @@ std::string csvRow(const FrameRow& r) {
 // its reference share no sample.
 constexpr uint32_t kReferenceOffset = 1u << 28;
 
+// Five frames evenly spread over the run (first and last included), left to right, above their
+// references when there are any, 2-pixel grey gaps between tiles: the run at a glance.
+constexpr int kStripFrames = 5;
+bool inStrip(int frame, int frames) {
+    for (int i = 0; i < kStripFrames; ++i)
+        if (frame == (frames - 1) * i / (kStripFrames - 1)) return true;
+    return false;
+}
+
+Image assembleStrip(const std::vector<Image>& top, const std::vector<Image>& bottom) {
+    const int gap = 2, w = top[0].width, h = top[0].height, rows = bottom.empty() ? 1 : 2;
+    Image strip(int(top.size()) * (w + gap) - gap, rows * (h + gap) - gap);
+    for (glm::vec3& p : strip.pixels) p = glm::vec3(0.2f);
+    for (int r = 0; r < rows; ++r)
+        for (size_t i = 0; i < top.size(); ++i) {
+            const Image& tile = r == 0 ? top[i] : bottom[i];
+            for (int y = 0; y < h; ++y)
+                for (int x = 0; x < w; ++x)
+                    strip.at(int(i) * (w + gap) + x, r * (h + gap) + y) = tile.at(x, y);
+        }
+    return strip;
+}
+
 }  // namespace
 
 int samplesForBudget(double budgetMs, double traceMsPerSample, double overheadMs) {
@@ -71,6 +94,7 @@ std::vector<FrameRow> renderRealtime(Renderer& renderer, const RealtimeRun& run,
     TemporalPipeline pipeline(renderer.shaders());
     std::vector<FrameRow> rows;
     std::vector<float> previousLuma, previousReference;
+    std::vector<Image> stripFrames, stripReferences;
     const double budgetMs = 1000.0 / run.fps;
     int spp = run.fixedSpp.value_or(1);
     uint32_t sampleOffset = 0;
@@ -104,6 +128,7 @@ std::vector<FrameRow> renderRealtime(Renderer& renderer, const RealtimeRun& run,
                  image, run.display);
 
         std::vector<float> luma = study::displayLuma(image), referenceLuma;
+        if (inStrip(f, run.frames)) stripFrames.push_back(image);
         if (run.referenceSpp) {
             RenderSettings r = run.settings;
             r.guides = true;  // as the frames: changing it would recompile the shaders every frame
@@ -117,6 +142,7 @@ std::vector<FrameRow> renderRealtime(Renderer& renderer, const RealtimeRun& run,
             row.ssim = study::ssim(image, reference);
             row.flip = hdrFlip(image, reference, kDefaultPixelsPerDegree).mean;
             referenceLuma = study::displayLuma(reference);
+            if (inStrip(f, run.frames)) stripReferences.push_back(reference);
         }
         if (f > 0)
             row.flicker = flicker(luma, previousLuma, run.referenceSpp ? &referenceLuma : nullptr,
@@ -130,6 +156,12 @@ std::vector<FrameRow> renderRealtime(Renderer& renderer, const RealtimeRun& run,
         writeFileAtomically(csvPath, std::vector<std::uint8_t>(csv.begin(), csv.end()));
         if (onFrame) onFrame(row);
     }
+    if (!stripFrames.empty())
+        writePng(
+            run.outDir + "/strip.png",
+            assembleStrip(stripFrames, stripReferences.size() == stripFrames.size() ? stripReferences
+                                                                                    : std::vector<Image>{}),
+            run.display);
     return rows;
 }
 

@@ -45,7 +45,8 @@ int samplesForBudget(double budgetMs, double traceMsPerSample, double overheadMs
 double flicker(const std::vector<float>& luma, const std::vector<float>& previousLuma,
                const std::vector<float>* reference, const std::vector<float>* previousReference);
 
-// Renders the run into `run.outDir` (frame_NNNN.png and frames.csv); `onFrame` sees each row.
+// Renders the run into `run.outDir` (frame_NNNN.png, frames.csv, and strip.png: five frames spread over
+// the run side by side, above their references with --reference-spp); `onFrame` sees each row.
 // `stop` may return true to end early: what was rendered stays written.
 std::vector<FrameRow> renderRealtime(Renderer& renderer, const RealtimeRun& run,
                                      const std::function<void(const FrameRow&)>& onFrame = nullptr,

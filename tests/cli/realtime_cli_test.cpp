@@ -34,6 +34,7 @@ TEST_F(RealtimeCli, WritesEveryFrameAndARowOfFiguresPerFrame) {
     ASSERT_EQ(run.exitCode, 0) << run.output;
     for (int f = 0; f < 3; ++f)
         EXPECT_TRUE(std::filesystem::exists(path("out/frame_000" + std::to_string(f) + ".png"))) << f;
+    EXPECT_TRUE(std::filesystem::exists(path("out/strip.png")));
     auto rows = readCsv(path("out/frames.csv"));
     ASSERT_EQ(rows.size(), 4u);
     const std::vector<std::string> header = {
