@@ -25,32 +25,35 @@ std::set<std::string> optionsInHelp(const std::string& help) {
     return options;
 }
 
-TEST(Docs, TheReadmeListsEveryRenderOption) {
-    test::CliRun r = test::runFragpath("render --help");
+std::string readme() {
+    std::ifstream in(std::string(FP_SOURCE_DIR) + "/README.md");
+    return std::string((std::istreambuf_iterator<char>(in)), {});
+}
+
+// Every option `fragpath COMMAND --help` lists (at least `minimum`, so that the parse found the table,
+// not a stray line) is in the README, written as `--option.
+void expectReadmeListsOptionsOf(const std::string& command, size_t minimum) {
+    test::CliRun r = test::runFragpath(command + " --help");
     ASSERT_EQ(r.exitCode, 0) << r.output;
     std::set<std::string> options = optionsInHelp(r.output);
-    ASSERT_GE(options.size(), 25u) << r.output;  // the parse found the table, not a stray line
-    std::ifstream in(std::string(FP_SOURCE_DIR) + "/README.md");
-    const std::string readme((std::istreambuf_iterator<char>(in)), {});
-    ASSERT_FALSE(readme.empty());
+    ASSERT_GE(options.size(), minimum) << r.output;
+    const std::string text = readme();
+    ASSERT_FALSE(text.empty());
+    EXPECT_NE(text.find("`fragpath " + command), std::string::npos);
     for (const std::string& option : options) {
         if (option == "--help") continue;
-        EXPECT_NE(readme.find("`" + option), std::string::npos) << option;
+        EXPECT_NE(text.find("`" + option), std::string::npos) << command << " " << option;
     }
 }
 
+TEST(Docs, TheReadmeListsEveryRenderOption) {
+    expectReadmeListsOptionsOf("render", 25);
+}
 TEST(Docs, TheReadmeListsEveryCompareOption) {
-    test::CliRun r = test::runFragpath("compare --help");
-    ASSERT_EQ(r.exitCode, 0) << r.output;
-    std::set<std::string> options = optionsInHelp(r.output);
-    ASSERT_GE(options.size(), 4u) << r.output;
-    std::ifstream in(std::string(FP_SOURCE_DIR) + "/README.md");
-    const std::string readme((std::istreambuf_iterator<char>(in)), {});
-    EXPECT_NE(readme.find("`fragpath compare"), std::string::npos);
-    for (const std::string& option : options) {
-        if (option == "--help") continue;
-        EXPECT_NE(readme.find("`" + option), std::string::npos) << option;
-    }
+    expectReadmeListsOptionsOf("compare", 4);
+}
+TEST(Docs, TheReadmeListsEveryRealtimeOption) {
+    expectReadmeListsOptionsOf("realtime", 25);
 }
 
 }  // namespace
