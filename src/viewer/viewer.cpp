@@ -136,6 +136,7 @@ class Session {
     uint32_t sampleOffset_ = 0;  // the next frame's first sample index: every frame gets new samples
     int realtimeFrames_ = 0;     // frames since the last reset
     double traceMs_ = 0.0;
+    int traceSpp_ = 0;  // the samples per pixel of the last frame, which traceMs_ is the time of
     double realtimeOverheadMs_ = 5.0;  // per frame, everything but tracing (pipeline, panel, display, swap)
 };
 
@@ -270,7 +271,7 @@ PanelInfo Session::panelInfo() const {
     info.camera = camera_.camera();
     info.lights = lights_;
     if (controls_.realtime) {
-        info.realtimeSpp = realtimeSpp_;
+        info.realtimeSpp = traceSpp_;
         info.traceMs = traceMs_;
         if (pipeline_) {
             info.temporalMs = 1000.0 * pipeline_->timings().temporalSeconds;
@@ -493,8 +494,9 @@ void Session::printTiming() const {
         pixels > 0 ? paths / pixels : 0.0, paths);
     if (controls_.realtime && pipeline_)
         std::printf(
-            "real-time: %d spp per frame; last frame trace %.1f ms, temporal %.1f ms, filter %.1f ms\n",
-            realtimeSpp_, traceMs_, 1000.0 * pipeline_->timings().temporalSeconds,
+            "real-time: %d spp in the last frame (next %d): trace %.1f ms, temporal %.1f ms, filter %.1f "
+            "ms\n",
+            traceSpp_, realtimeSpp_, traceMs_, 1000.0 * pipeline_->timings().temporalSeconds,
             1000.0 * pipeline_->timings().filterSeconds);
 }
 
@@ -551,6 +553,7 @@ bool Session::realtimeFrame(glm::ivec2 framebuffer) {
         renderer_.render(realtimeSpp_);
         window_.finish();
         traceMs_ = 1000.0 * (now() - start);
+        traceSpp_ = realtimeSpp_;
         pipeline_->run(renderer_, camera, temporalSettings(), RealtimeView(controls_.realtimeView));
     } catch (const Error& e) {
         if (!configured_ && realtimeFrames_ == 0 && realtimeSettings_.width == 0)
