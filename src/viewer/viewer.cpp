@@ -673,10 +673,12 @@ void Session::run() {
                 (std::max(frameSeconds - frameRenderSeconds_ - frameDenoiseSeconds_, 0.0) - overheadSeconds_);
         }
         if (done) break;
-        // Real-time mode never idles: a still camera keeps accumulating into the history.
-        idle = options_.frames == 0 && !controls_.realtime && !rendering && !policy_.moving(now()) &&
-               !input_.flying();
+        // Real-time mode idles only when it cannot render (a minimised window): a still camera keeps
+        // accumulating into the history.
+        idle = options_.frames == 0 && !rendering &&
+               (controls_.realtime || (!policy_.moving(now()) && !input_.flying()));
     }
+
     if (!options_.screenshot.empty()) {
         writeViewImage(options_.screenshot, shownImage(), displayOptions());
         std::printf("wrote %s (%d spp)\n", options_.screenshot.c_str(), renderer_.samples());
