@@ -25,6 +25,10 @@ std::vector<OptionGroup> viewOptions() {
            {"--denoise", "", "NAME",
             "none | bilateral | atrous: denoise the radiance view for display (N toggles\nraw / denoised; "
             "screenshots are of what is shown)"},
+           {"--realtime", "", "",
+            "start in real-time mode: a few samples per pixel each frame, reprojected history and the\n"
+            "a-trous filter (the panel switches back to progressive)"},
+           {"--fps", "", "N", "real-time mode's target frames per second, 1 to 240 (default 30)"},
            {"--scale", "", "F", "accumulation size / window size, 0.0625 to 1 (default 1)"},
            {"--frames", "", "N",
             "close after N frames (with --spp S: not before S samples per pixel; never in the middle of a "
@@ -84,6 +88,8 @@ int viewCommand(const std::vector<std::string>& argv) {
     c.splitView.maxDepth = args.integer("--split-depth", 0, 1000).value_or(c.render.maxDepth);
     c.tone = request.display();
     if (auto name = args.text("--denoise")) c.denoiser = parseDenoiser(*name);
+    c.realtime = args.has("--realtime");
+    c.targetFps = args.integer("--fps", 1, 240).value_or(30);
     c.resolutionScale = args.number("--scale").value_or(1.0f);
     if (!(c.resolutionScale >= 1.0f / 16.0f && c.resolutionScale <= 1.0f))
         throw Error("option --scale: must be from 0.0625 to 1");

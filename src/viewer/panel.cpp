@@ -35,6 +35,8 @@ namespace {
 
 const char* const kToneMaps[] = {"clamp", "reinhard", "aces"};
 const char* const kDenoisers[] = {"none", "bilateral", "atrous"};
+const char* const kRealtimeViews[] = {"image", "history length", "deviation", "disocclusion"};
+const int kFpsChoices[] = {15, 30, 60};
 const float kScales[] = {1.0f, 0.5f, 0.25f, 0.125f};
 const char* const kScaleNames[] = {"full", "1/2", "1/4", "1/8"};
 // The panel covers about a quarter of an 800x600 window with the default sections open.
@@ -113,6 +115,16 @@ std::string shortNumber(double value) {
 }
 
 void statistics(const ViewerControls& c, const PanelInfo& info) {
+    if (c.realtime) {
+        ImGui::Text("real-time %d spp/frame, target %d fps", info.realtimeSpp, c.targetFps);
+        ImGui::Text("image    %d x %d", info.accumulation.x, info.accumulation.y);
+        ImGui::Text("frame    %.1f ms", info.frameMs);
+        ImGui::Text("trace %.1f  temporal %.1f  filter %.1f ms", info.traceMs, info.temporalMs,
+                    info.filterMs);
+        if (ImGui::IsItemHovered())
+            ImGui::SetTooltip("the last frame's stages, each to glFinish; the rest is panel and display");
+        return;
+    }
     if (c.targetSpp > 0)
         ImGui::Text("samples  %d / %d%s", info.samples, c.targetSpp,
                     info.samples >= c.targetSpp ? " (done)" : "");
@@ -177,6 +189,34 @@ void samplingSettings(ViewerControls& c) {
         if (kScales[i] == c.resolutionScale) scale = int(i);
     if (ImGui::Combo("resolution", &scale, kScaleNames, int(std::size(kScaleNames))))
         c.resolutionScale = kScales[scale];
+}
+
+// Real-time mode: a few samples per frame, reprojected history and a filter (SVGF's scheme).
+void realtimeSettings(ViewerControls& c, const PanelInfo& info) {
+    ImGui::Checkbox("real-time", &c.realtime);
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip(
+            "trace a few samples per pixel each frame at the current camera, reuse the history\n"
+            "reprojected from earlier frames and filter it; off: progressive accumulation");
+    if (!c.realtime) return;
+    int fps = 1;
+    for (size_t i = 0; i < std::size(kFpsChoices); ++i)
+        if (kFpsChoices[i] == c.targetFps) fps = int(i);
+    if (ImGui::SliderInt("target fps", &fps, 0, int(std::size(kFpsChoices)) - 1,
+                         std::to_string(kFpsChoices[fps]).c_str()))
+        c.targetFps = kFpsChoices[fps];
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("samples per frame adapt to fit 1000 / fps ms");
+    ImGui::Checkbox("temporal reuse", &c.temporalReuse);
+    ImGui::SameLine();
+    ImGui::Checkbox("filter", &c.realtimeFilter);
+    ImGui::Combo("debug view", &c.realtimeView, kRealtimeViews, int(std::size(kRealtimeViews)));
+    c.realtimeView = std::clamp(c.realtimeView, 0, int(std::size(kRealtimeViews)) - 1);
+    if (c.realtimeView == 1)
+        ImGui::TextDisabled("heat map: 0 to %.0f frames", double(info.historyMaxFrames));
+    else if (c.realtimeView == 2)
+        ImGui::TextDisabled("heat map: the filter's deviation, 0 to 1");
+    else if (c.realtimeView == 3)
+        ImGui::TextDisabled("heat map: 1 where the history was rejected");
 }
 
 void splitSettings(ViewerControls& c) {
@@ -339,6 +379,8 @@ PanelActions Panel::draw(ViewerControls& c, const PanelInfo& info) {
     if (ImGui::CollapsingHeader("render", ImGuiTreeNodeFlags_DefaultOpen)) renderSettings(c);
     if (ImGui::CollapsingHeader("display", ImGuiTreeNodeFlags_DefaultOpen))
         actions.fitHeatMap = displaySettings(c);
+    if (ImGui::CollapsingHeader("real-time", c.realtime ? ImGuiTreeNodeFlags_DefaultOpen : 0))
+        realtimeSettings(c, info);
     if (ImGui::CollapsingHeader("sampling")) samplingSettings(c);
     if (ImGui::CollapsingHeader("split view", c.split ? ImGuiTreeNodeFlags_DefaultOpen : 0)) splitSettings(c);
     if (ImGui::CollapsingHeader("camera")) cameraSettings(info, actions);

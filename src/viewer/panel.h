@@ -20,11 +20,15 @@ struct PanelInfo {
     double samplesPerSecond = 0.0;  // full-image samples
     double pathsPerSecond = 0.0;
     double frameMs = 0.0;
-    double denoiseMs = 0.0;    // the last denoising run; 0 if none
-    std::string renderer;      // GL_RENDERER, GL_VERSION
-    std::string shaderSource;  // "built in" or the hot-reload directory
-    std::string shaderError;   // the last compile error, empty when the shaders compile
-    std::string message;       // the last screenshot written, etc.
+    double denoiseMs = 0.0;  // the last denoising run; 0 if none
+    // Real-time mode: the last frame's samples per pixel and its stages to glFinish.
+    int realtimeSpp = 0;
+    double traceMs = 0.0, temporalMs = 0.0, filterMs = 0.0;
+    float historyMaxFrames = 0.0f;  // the history-length view's top: maxHistorySamples / spp
+    std::string renderer;           // GL_RENDERER, GL_VERSION
+    std::string shaderSource;       // "built in" or the hot-reload directory
+    std::string shaderError;        // the last compile error, empty when the shaders compile
+    std::string message;            // the last screenshot written, etc.
     bool flying = false;
     Camera camera;
     // The scene's point, spot and directional lights, one line each (describePunctualLight); the panel

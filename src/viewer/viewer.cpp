@@ -17,6 +17,7 @@
 #include "core/clock.h"
 #include "core/error.h"
 #include "denoise/denoise_passes.h"
+#include "realtime/temporal_pipeline.h"
 #include "render/display.h"
 #include "render/renderer.h"
 #include "scene/punctual_light.h"
@@ -24,6 +25,7 @@
 #include "viewer/camera_controller.h"
 #include "viewer/camera_input.h"
 #include "viewer/focus_picker.h"
+#include "viewer/frame_budget.h"
 #include "viewer/frame_stats.h"
 #include "viewer/imgui_layer.h"
 #include "viewer/panel.h"
@@ -79,10 +81,18 @@ class Session {
     // When --frames run out mid-pass, the automation goes on until the pass is complete, so that what
     // it saves at exit holds whole passes (issue 17: a screenshot with a black band, "0 spp").
     bool automationDone(int frames) const {
+        if (controls_.realtime)
+            return options_.frames > 0 && frames >= options_.frames && realtimeFrames_ > 0;
         return options_.frames > 0 && frames >= options_.frames &&
                (controls_.targetSpp == 0 || renderer_.samples() >= controls_.targetSpp) && wholePasses();
     }
     void printTiming() const;
+    // Real-time mode: one frame's samples at the current camera through the temporal pipeline.
+    TemporalSettings temporalSettings() const;
+    bool realtimeFrame(glm::ivec2 framebuffer);
+    bool progressiveFrame(glm::ivec2 framebuffer, bool automatedSamples, double start, int frames);
+    void leaveRealtime();
+    bool showsRealtime() const { return controls_.realtime && pipeline_ && realtimeFrames_ > 0; }
 
     const ViewerOptions& options_;
     GlfwWindow window_;  // first: everything below needs its GL context
@@ -116,6 +126,18 @@ class Session {
     bool heatFitDue_ = true, heatFitRequested_ = false;
     std::string shaderError_, message_;
     std::vector<std::string> lights_;  // the scene's punctual lights, for the panel
+
+    // Real-time mode. The pipeline is made when the mode is first entered (progressive mode never
+    // touches it); its history is kept across camera motion and reset when anything else changes.
+    std::unique_ptr<TemporalPipeline> pipeline_;
+    RenderSettings realtimeSettings_;  // the last frame's, sampleOffset and samplesPerPass aside
+    bool realtimeWasOn_ = false;
+    int realtimeSpp_ = 1;
+    uint32_t sampleOffset_ = 0;  // the next frame's first sample index: every frame gets new samples
+    int realtimeFrames_ = 0;     // frames since the last reset
+    double traceMs_ = 0.0;
+    int traceSpp_ = 0;  // the samples per pixel of the last frame, which traceMs_ is the time of
+    double realtimeOverheadMs_ = 5.0;  // per frame, everything but tracing (pipeline, panel, display, swap)
 };
 
 Session::Session(const Scene& scene, const ViewerOptions& options)
@@ -248,6 +270,15 @@ PanelInfo Session::panelInfo() const {
     info.flying = input_.flying();
     info.camera = camera_.camera();
     info.lights = lights_;
+    if (controls_.realtime) {
+        info.realtimeSpp = traceSpp_;
+        info.traceMs = traceMs_;
+        if (pipeline_) {
+            info.temporalMs = 1000.0 * pipeline_->timings().temporalSeconds;
+            info.filterMs = 1000.0 * pipeline_->timings().filterSeconds;
+        }
+        info.historyMaxFrames = temporalSettings().maxHistorySamples / float(realtimeSpp_);
+    }
     return info;
 }
 
@@ -261,6 +292,11 @@ void Session::reloadShadersIfChanged(double t) {
         heatFitDue_ = true;
         display_.reloadShaders();
         denoiser_.reloadShaders();
+        if (pipeline_) {
+            pipeline_->reloadShaders();
+            pipeline_->reset();
+            realtimeFrames_ = 0;
+        }
         denoisedSamples_ = -1;
         shaderError_.clear();
         std::fprintf(stderr, "fragpath: reloaded shaders from %s\n", options_.shaderDir.c_str());
@@ -355,6 +391,22 @@ DisplayOptions Session::displayOptions() const {
         d.heatMax = controls_.heatMax > 0.0f ? controls_.heatMax : fallback;
     }
     d.splitLine = s.split.has_value();
+    if (controls_.realtime) {
+        d.splitLine = false;
+        // Debug views as heat maps: history length in frames up to what a moving camera keeps,
+        // the filter's standard deviation up to 1, disocclusion 0 or 1.
+        switch (RealtimeView(controls_.realtimeView)) {
+            case RealtimeView::HistoryLength:
+                d.heatMax = std::max(1.0f, temporalSettings().maxHistorySamples / float(realtimeSpp_));
+                break;
+            case RealtimeView::Deviation:
+            case RealtimeView::Disocclusion:
+                d.heatMax = 1.0f;
+                break;
+            default:
+                break;
+        }
+    }
     return d;
 }
 
@@ -394,13 +446,16 @@ GLuint Session::shownTexture(bool current) {
 }
 
 Image Session::shownImage() {
+    if (showsRealtime()) return pipeline_->result();
     if (!showsDenoised()) return renderer_.readback().mean();
     shownTexture(true);
     return denoiser_.result();
 }
 
 void Session::present(glm::ivec2 framebuffer) {
-    GLuint texture = shownTexture();  // before binding the window: denoising binds its own framebuffers
+    GLuint texture = showsRealtime()
+                         ? pipeline_->resultTexture()
+                         : shownTexture();  // before binding the window: denoising binds its own framebuffers
     window_.bindWindowFramebuffer();
     if (framebuffer.x > 0 && framebuffer.y > 0)
         display_.draw(
@@ -411,7 +466,10 @@ void Session::present(glm::ivec2 framebuffer) {
 
 void Session::screenshotKey() {
     std::string base = screenshotBaseName(renderer_.samples());
-    if (showsDenoised()) base += std::string("_") + denoiserName(controls_.denoiser);
+    if (showsRealtime())
+        base += "_realtime";
+    else if (showsDenoised())
+        base += std::string("_") + denoiserName(controls_.denoiser);
     try {
         Image mean = shownImage();
         writeViewImage(base + ".png", mean, displayOptions());
@@ -434,6 +492,115 @@ void Session::printTiming() const {
         "%.3g paths/s (after the first frame)\n",
         stats_.frames(), s.width, s.height, renderer_.samples(), 1000.0 * stats_.medianFrameSeconds(),
         pixels > 0 ? paths / pixels : 0.0, paths);
+    if (controls_.realtime && pipeline_)
+        std::printf(
+            "real-time: %d spp in the last frame (next %d): trace %.1f ms, temporal %.1f ms, filter %.1f "
+            "ms\n",
+            traceSpp_, realtimeSpp_, traceMs_, 1000.0 * pipeline_->timings().temporalSeconds,
+            1000.0 * pipeline_->timings().filterSeconds);
+}
+
+TemporalSettings Session::temporalSettings() const {
+    TemporalSettings t;
+    t.reuse = controls_.temporalReuse;
+    t.filter = controls_.realtimeFilter ? Denoiser::Atrous : Denoiser::None;
+    return t;
+}
+
+// Leaving real-time mode: the renderer holds one frame's samples, so progressive mode starts afresh.
+void Session::leaveRealtime() {
+    policy_ = AccumulationPolicy();  // forgets what it configured: the next update restarts
+    tile_ = 0;
+    planner_.passAbandoned();
+    denoisedSamples_ = -1;
+    heatFitDue_ = true;
+    realtimeWasOn_ = false;
+}
+
+// One real-time frame over the whole image (at the resolution scale). False when there is nothing to draw
+// into or it failed. The history survives camera motion (reprojection is the point); anything else the
+// renderer is configured with (scene settings, integrator, size) resets it, as does a shader reload.
+bool Session::realtimeFrame(glm::ivec2 framebuffer) {
+    if (framebuffer.x <= 0 || framebuffer.y <= 0) return false;
+    if (!realtimeWasOn_) {  // entering: drop the progressive pass in progress
+        tile_ = 0;
+        planner_.passAbandoned();
+        realtimeFrames_ = 0;
+        realtimeWasOn_ = true;
+    }
+    if (!pipeline_) pipeline_ = std::make_unique<TemporalPipeline>(ShaderLibrary(options_.shaderDir));
+    RenderSettings s = controls_.requested();
+    s.split.reset();  // the pipeline reprojects one image
+    s.guides = true;
+    glm::ivec2 size =
+        glm::max(glm::ivec2(1), glm::ivec2(glm::round(glm::vec2(framebuffer) * controls_.resolutionScale)));
+    s.width = size.x;
+    s.height = size.y;
+    s.samplesPerPass = 1;
+    s.sampleOffset = 0;
+    if (realtimeFrames_ == 0 || !sameAccumulation(s, realtimeSettings_)) {
+        pipeline_->reset();
+        realtimeFrames_ = 0;
+        sampleOffset_ = 0;
+    }
+    RenderSettings frame = s;
+    frame.samplesPerPass = std::min(realtimeSpp_, RenderSettings::kMaxSamplesPerPass);
+    frame.sampleOffset = sampleOffset_;
+    const Camera camera = camera_.camera();
+    try {
+        double start = now();
+        renderer_.configure(frame, camera);
+        renderer_.render(realtimeSpp_);
+        window_.finish();
+        traceMs_ = 1000.0 * (now() - start);
+        traceSpp_ = realtimeSpp_;
+        pipeline_->run(renderer_, camera, temporalSettings(), RealtimeView(controls_.realtimeView));
+    } catch (const Error& e) {
+        if (!configured_ && realtimeFrames_ == 0 && realtimeSettings_.width == 0)
+            throw;  // nothing to fall back to
+        reportError(e.what());
+        if (realtimeSettings_.width > 0) {
+            controls_.adopt(realtimeSettings_);  // the settings that last worked, as progressive mode does
+            realtimeFrames_ = 0;
+        } else {
+            controls_.realtime = false;
+            leaveRealtime();
+        }
+        return false;
+    }
+    configured_ = true;
+    lastGood_ = s;
+    lastGood_.guides = controls_.denoiser != Denoiser::None;
+    realtimeSettings_ = s;
+    sampleOffset_ += uint32_t(realtimeSpp_);
+    ++realtimeFrames_;
+    framePaths_ = double(realtimeSpp_) * double(size.x) * double(size.y);
+    frameRenderSeconds_ = traceMs_ / 1000.0;
+    shaderError_.clear();
+    return true;
+}
+
+// One progressive frame: restart when the policy says so, then render within the frame's budget.
+bool Session::progressiveFrame(glm::ivec2 framebuffer, bool automatedSamples, double start, int frames) {
+    AccumulationPolicy::Request request;
+    request.cameraVersion = camera_.version();
+    request.settings = controls_.requested();
+    request.windowSize = framebuffer;
+    request.resolutionScale = controls_.resolutionScale;
+    glm::ivec2 full = glm::max(glm::ivec2(1), glm::ivec2(glm::vec2(framebuffer) * controls_.resolutionScale));
+    // Reduced resolution only helps where a full pass does not fit in a frame (software rendering).
+    request.reduceWhileMoving = !automatedSamples && planner_.passSeconds(full) > planner_.budgetSeconds();
+    request.movingScale = movingScale(framebuffer);
+    request.now = start;
+    AccumulationPolicy::Decision decision = policy_.update(request);
+    if (decision.restart) restart(decision.settings, decision.reduced);
+    reduced_ = decision.reduced;
+
+    bool rendering = decision.render && !targetReached();
+    // From the automation's last frame on, a frame ends at a pass's end rather than start another.
+    bool lastFrames = options_.frames > 0 && frames + 1 >= options_.frames;
+    if (rendering) renderWithinBudget(lastFrames);
+    return rendering;
 }
 
 void Session::run() {
@@ -457,29 +624,16 @@ void Session::run() {
         reloadShadersIfChanged(start);
 
         glm::ivec2 framebuffer = window_.framebufferSize();
-        AccumulationPolicy::Request request;
-        request.cameraVersion = camera_.version();
-        request.settings = controls_.requested();
-        request.windowSize = framebuffer;
-        request.resolutionScale = controls_.resolutionScale;
-        glm::ivec2 full =
-            glm::max(glm::ivec2(1), glm::ivec2(glm::vec2(framebuffer) * controls_.resolutionScale));
-        // Reduced resolution only helps where a full pass does not fit in a frame (software rendering).
-        request.reduceWhileMoving =
-            !automatedSamples && planner_.passSeconds(full) > planner_.budgetSeconds();
-        request.movingScale = movingScale(framebuffer);
-        request.now = start;
-        AccumulationPolicy::Decision decision = policy_.update(request);
-        if (decision.restart) restart(decision.settings, decision.reduced);
-        reduced_ = decision.reduced;
-
         framePaths_ = 0.0;
         frameRenderSeconds_ = 0.0;
         frameDenoiseSeconds_ = 0.0;
-        bool rendering = decision.render && !targetReached();
-        // From the automation's last frame on, a frame ends at a pass's end rather than start another.
-        bool lastFrames = options_.frames > 0 && frames + 1 >= options_.frames;
-        if (rendering) renderWithinBudget(lastFrames);
+        bool rendering = false;
+        if (controls_.realtime) {
+            rendering = realtimeFrame(framebuffer);
+        } else {
+            if (realtimeWasOn_) leaveRealtime();
+            rendering = progressiveFrame(framebuffer, automatedSamples, start, frames);
+        }
         fitHeatMapIfDue();
         // After rendering, so that it shows this frame's figures; its changes apply from the next frame.
         if (ui_ && controls_.showPanel) applyActions(panel_.draw(controls_, panelInfo()));
@@ -508,12 +662,21 @@ void Session::run() {
         double frameSeconds = now() - start;
         stats_.addFrame(now(), frameSeconds, framePaths_,
                         double(renderer_.settings().width) * double(renderer_.settings().height));
-        if (rendering)
+        if (rendering && controls_.realtime) {
+            realtimeOverheadMs_ +=
+                0.25 * (std::max(1000.0 * frameSeconds - traceMs_, 0.0) - realtimeOverheadMs_);
+            realtimeSpp_ = adaptSamplesPerFrame(realtimeSpp_, traceMs_, double(controls_.targetFps),
+                                                realtimeOverheadMs_);
+        } else if (rendering) {
             overheadSeconds_ +=
                 0.25 *
                 (std::max(frameSeconds - frameRenderSeconds_ - frameDenoiseSeconds_, 0.0) - overheadSeconds_);
+        }
         if (done) break;
-        idle = options_.frames == 0 && !rendering && !policy_.moving(now()) && !input_.flying();
+        // Real-time mode idles only when it cannot render (a minimised window): a still camera keeps
+        // accumulating into the history.
+        idle = options_.frames == 0 && !rendering &&
+               (controls_.realtime || (!policy_.moving(now()) && !input_.flying()));
     }
 
     if (!options_.screenshot.empty()) {

@@ -25,6 +25,14 @@ struct ViewerControls {
     Denoiser denoiser = Denoiser::None;
     bool showDenoised = true;
 
+    // Real-time mode (src/realtime/temporal_pipeline.h): each frame traces a few samples per pixel at the
+    // current camera, reprojects the previous frames' history and filters it. Off: progressive mode.
+    bool realtime = false;
+    int targetFps = 30;          // samples per frame adapt to the budget 1000 / targetFps ms
+    bool temporalReuse = true;   // reproject and blend the history
+    bool realtimeFilter = true;  // the a-trous filter of the history
+    int realtimeView = 0;        // RealtimeView: image, history length, deviation, disocclusion
+
     RenderSettings requested() const {
         RenderSettings s = render;
         s.split = split ? std::optional<SplitView>(splitView) : std::nullopt;

@@ -5,6 +5,7 @@
 #include <stb_image.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -245,6 +246,69 @@ TEST_F(ViewerXvfb, TakesTheSceneFilesDefaultsAndFlagsOverrideThem) {
     EXPECT_EQ(fromFile.pixels, render(0).pixels);
     EXPECT_EQ(flagged.pixels, render(2).pixels);
     EXPECT_NE(fromFile.pixels, flagged.pixels);
+}
+
+// Real-time mode (--realtime): a still camera's frames accumulate into the pipeline's history, so its
+// image must approach a progressive render's, frame after frame. The tolerance is derived, not tuned:
+// - noise: two independent 1-spp screenshots give the per-pixel sample variance s2 (half the mean squared
+//   difference), so the image mean of k spp over P pixels has standard error sqrt(s2 / (k P)); the
+//   real-time image holds at least one sample per pixel per frame (the filter only averages, which lowers
+//   its variance), the reference 64: 4 standard errors of the difference;
+// - the filter's bias (edge-stopping weights do not preserve the mean): measured 6 % of the mean on this
+//   box at 10 frames of 1 spp, allowed 8 %, times the weight the output pass keeps on the filtered
+//   image, min(1, maxHistorySamples / N) <= 32 / frames (TemporalSettings' default cap).
+// Run at 10 and 100 frames: the longer run must also be closer (fails if the history never grows).
+TEST_F(ViewerXvfb, RealtimeModeConvergesToTheProgressiveImage) {
+    auto luma = [](glm::vec3 c) { return 0.2126 * c.r + 0.7152 * c.g + 0.0722 * c.b; };
+    auto shot = [&](const std::string& flags) {
+        CliRun r = view("--size 64x64 --max-depth 4 --no-ui --screenshot " + path("shot.pfm") + " " + flags);
+        EXPECT_EQ(r.exitCode, 0) << r.output;
+        return readImage(path("shot.pfm"));
+    };
+    Image ref = shot("--spp 64 --frames 1 --seed 7");
+    Image a = shot("--spp 1 --frames 1 --seed 11"), b = shot("--spp 1 --frames 1 --seed 12");
+    ASSERT_EQ(ref.width, 64);
+    ASSERT_EQ(a.pixels.size(), ref.pixels.size());
+    ASSERT_EQ(b.pixels.size(), ref.pixels.size());
+    const double pixels = double(ref.pixels.size());
+    double refMean = 0.0, s2 = 0.0;
+    for (size_t i = 0; i < ref.pixels.size(); ++i) {
+        refMean += luma(ref.pixels[i]) / pixels;
+        double d = luma(a.pixels[i]) - luma(b.pixels[i]);
+        s2 += 0.5 * d * d / pixels;
+    }
+    double previousError = 1e30;
+    for (int frames : {10, 100}) {
+        Image rt = shot("--realtime --fps 30 --seed 3 --frames " + std::to_string(frames));
+        ASSERT_EQ(rt.pixels.size(), ref.pixels.size());
+        double mean = 0.0;
+        for (const glm::vec3& p : rt.pixels) {
+            ASSERT_TRUE(std::isfinite(luma(p)));
+            mean += luma(p) / pixels;
+        }
+        double se = std::sqrt(s2 / (double(frames) * pixels) + s2 / (64.0 * pixels));
+        double tolerance = 4.0 * se + 0.08 * std::min(1.0, 32.0 / frames) * refMean;
+        std::printf(
+            "%d frames: real-time mean %.5f, progressive %.5f, tolerance %.5f (standard error %.5f)\n",
+            frames, mean, refMean, tolerance, se);
+        EXPECT_GT(mean, 0.05);  // not black
+        EXPECT_NEAR(mean, refMean, tolerance) << frames << " frames";
+        double error = std::abs(mean - refMean);
+        EXPECT_LT(error, previousError) << frames << " frames";
+        previousError = error;
+    }
+}
+
+// Real-time mode with its panel: it runs, and a generous budget (2 fps for a 160x120 box that traces a
+// sample in milliseconds) raises the samples per frame above 1 within a few frames (viewer/frame_budget).
+TEST_F(ViewerXvfb, RealtimeModeRunsWithThePanelAndFillsTheFrameBudget) {
+    CliRun r = view("--size 160x120 --realtime --fps 2 --frames 4 --screenshot-window " + path("w.png"));
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    size_t at = r.output.find("real-time: ");
+    ASSERT_NE(at, std::string::npos) << r.output;
+    int spp = std::atoi(r.output.c_str() + at + 11);
+    EXPECT_GT(spp, 1) << r.output;
+    EXPECT_EQ(readPng(path("w.png")).width, 160);
 }
 
 }  // namespace
