@@ -11,6 +11,7 @@
 #include "image/flip.h"
 #include "image/image_stats.h"
 #include "image/png.h"
+#include "realtime/frame_budget.h"
 #include "study/metrics.h"
 
 namespace fp {
@@ -64,12 +65,6 @@ Image assembleStrip(const std::vector<Image>& top, const std::vector<Image>& bot
 
 }  // namespace
 
-int samplesForBudget(double budgetMs, double traceMsPerSample, double overheadMs) {
-    if (!(traceMsPerSample > 0.0)) return 1;
-    double fit = std::floor((budgetMs - overheadMs) / traceMsPerSample);
-    return int(std::clamp(fit, 1.0, double(RenderSettings::kMaxSamplesPerPass)));
-}
-
 double flicker(const std::vector<float>& luma, const std::vector<float>& previousLuma,
                const std::vector<float>* reference, const std::vector<float>* previousReference) {
     if (luma.size() != previousLuma.size() || luma.empty()) throw Error("flicker: frames of different sizes");
@@ -95,7 +90,6 @@ std::vector<FrameRow> renderRealtime(Renderer& renderer, const RealtimeRun& run,
     std::vector<FrameRow> rows;
     std::vector<float> previousLuma, previousReference;
     std::vector<Image> stripFrames, stripReferences;
-    const double budgetMs = 1000.0 / run.fps;
     int spp = run.fixedSpp.value_or(1);
     uint32_t sampleOffset = 0;
     for (int f = 0; f < run.frames && !(stop && stop()); ++f) {
@@ -103,7 +97,7 @@ std::vector<FrameRow> renderRealtime(Renderer& renderer, const RealtimeRun& run,
         validateCamera(camera, "the camera path at frame " + std::to_string(f));
         RenderSettings s = run.settings;
         s.guides = true;
-        s.samplesPerPass = spp;
+        s.samplesPerPass = std::min(spp, RenderSettings::kMaxSamplesPerPass);
         s.sampleOffset = sampleOffset;
         sampleOffset += uint32_t(spp);
         FrameRow row;
@@ -150,7 +144,7 @@ std::vector<FrameRow> renderRealtime(Renderer& renderer, const RealtimeRun& run,
         previousLuma = std::move(luma);
         previousReference = std::move(referenceLuma);
         if (!run.fixedSpp)
-            spp = samplesForBudget(budgetMs, row.traceMs / double(row.spp), row.temporalMs + row.filterMs);
+            spp = adaptSamplesPerFrame(row.spp, row.traceMs, run.fps, row.temporalMs + row.filterMs);
         rows.push_back(row);
         csv += csvRow(row) + "\n";
         writeFileAtomically(csvPath, std::vector<std::uint8_t>(csv.begin(), csv.end()));

@@ -35,10 +35,6 @@ struct FrameRow {
     double ms() const { return traceMs + temporalMs + filterMs; }
 };
 
-// Samples for the next frame: as many as fit `budgetMs` after the pipeline's own cost, at the last
-// frame's trace time per sample; at least 1, at most kMaxSamplesPerPass.
-int samplesForBudget(double budgetMs, double traceMsPerSample, double overheadMs);
-
 // Temporal instability (flicker): the mean over pixels of |e_t - e_{t-1}|, where e is the display luma
 // (study/metrics.h displayLuma) of a frame minus that of its reference, so that what the camera's
 // motion changes in both is not counted; without references e is the frame's luma alone.

@@ -25,7 +25,7 @@
 #include "viewer/camera_controller.h"
 #include "viewer/camera_input.h"
 #include "viewer/focus_picker.h"
-#include "viewer/frame_budget.h"
+#include "realtime/frame_budget.h"
 #include "viewer/frame_stats.h"
 #include "viewer/imgui_layer.h"
 #include "viewer/panel.h"

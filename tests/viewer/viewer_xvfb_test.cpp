@@ -300,7 +300,7 @@ TEST_F(ViewerXvfb, RealtimeModeConvergesToTheProgressiveImage) {
 }
 
 // Real-time mode with its panel: it runs, and a generous budget (2 fps for a 160x120 box that traces a
-// sample in milliseconds) raises the samples per frame above 1 within a few frames (viewer/frame_budget).
+// sample in milliseconds) raises the samples per frame above 1 within a few frames (realtime/frame_budget).
 TEST_F(ViewerXvfb, RealtimeModeRunsWithThePanelAndFillsTheFrameBudget) {
     CliRun r = view("--size 160x120 --realtime --fps 2 --frames 4 --screenshot-window " + path("w.png"));
     ASSERT_EQ(r.exitCode, 0) << r.output;

@@ -1,4 +1,4 @@
-#include "viewer/frame_budget.h"
+#include "realtime/frame_budget.h"
 
 #include <gtest/gtest.h>
 
