@@ -453,9 +453,8 @@ Image Session::shownImage() {
 }
 
 void Session::present(glm::ivec2 framebuffer) {
-    GLuint texture = showsRealtime()
-                         ? pipeline_->resultTexture()
-                         : shownTexture();  // before binding the window: denoising binds its own framebuffers
+    // Before binding the window: denoising binds its own framebuffers.
+    GLuint texture = showsRealtime() ? pipeline_->resultTexture() : shownTexture();
     window_.bindWindowFramebuffer();
     if (framebuffer.x > 0 && framebuffer.y > 0)
         display_.draw(
@@ -528,7 +527,6 @@ bool Session::realtimeFrame(glm::ivec2 framebuffer) {
         realtimeFrames_ = 0;
         realtimeWasOn_ = true;
     }
-    if (!pipeline_) pipeline_ = std::make_unique<TemporalPipeline>(ShaderLibrary(options_.shaderDir));
     RenderSettings s = controls_.requested();
     s.split.reset();  // the pipeline reprojects one image
     s.guides = true;
@@ -539,7 +537,7 @@ bool Session::realtimeFrame(glm::ivec2 framebuffer) {
     s.samplesPerPass = 1;
     s.sampleOffset = 0;
     if (realtimeFrames_ == 0 || !sameAccumulation(s, realtimeSettings_)) {
-        pipeline_->reset();
+        if (pipeline_) pipeline_->reset();  // a new one (made below) starts without history
         realtimeFrames_ = 0;
         sampleOffset_ = 0;
     }
@@ -548,6 +546,7 @@ bool Session::realtimeFrame(glm::ivec2 framebuffer) {
     frame.sampleOffset = sampleOffset_;
     const Camera camera = camera_.camera();
     try {
+        if (!pipeline_) pipeline_ = std::make_unique<TemporalPipeline>(ShaderLibrary(options_.shaderDir));
         double start = now();
         renderer_.configure(frame, camera);
         renderer_.render(realtimeSpp_);
@@ -561,6 +560,8 @@ bool Session::realtimeFrame(glm::ivec2 framebuffer) {
         reportError(e.what());
         if (realtimeSettings_.width > 0) {
             controls_.adopt(realtimeSettings_);  // the settings that last worked, as progressive mode does
+            controls_.render.samplesPerPass = lastGood_.samplesPerPass;  // progressive mode's own
+            controls_.render.sampleOffset = lastGood_.sampleOffset;
             realtimeFrames_ = 0;
         } else {
             controls_.realtime = false;
@@ -569,14 +570,16 @@ bool Session::realtimeFrame(glm::ivec2 framebuffer) {
         return false;
     }
     configured_ = true;
+    // What progressive mode falls back to if its next restart fails: these settings, its own passes.
     lastGood_ = s;
     lastGood_.guides = controls_.denoiser != Denoiser::None;
+    lastGood_.samplesPerPass = controls_.render.samplesPerPass;
+    lastGood_.sampleOffset = controls_.render.sampleOffset;
     realtimeSettings_ = s;
     sampleOffset_ += uint32_t(realtimeSpp_);
     ++realtimeFrames_;
     framePaths_ = double(realtimeSpp_) * double(size.x) * double(size.y);
     frameRenderSeconds_ = traceMs_ / 1000.0;
-    shaderError_.clear();
     return true;
 }
 
