@@ -111,21 +111,21 @@ void main() {
 
     // The history this pixel continues.
     vec4 radiance = vec4(0.0), prevAlbedo = vec4(0.0), moments = vec4(0.0);
-    if (uUseHistory == 1) {
+    if (uUseHistory == 1 && uCameraMoved == 0) {
+        // The same view of the same (static) scene: every sample of the pixel belongs to its mean,
+        // including those whose jittered ray hit the other side of an edge. A changed scene resets
+        // the history (TemporalPipeline::reset).
+        radiance = texelFetch(uPrevRadiance, p, 0);
+        prevAlbedo = texelFetch(uPrevAlbedo, p, 0);
+        moments = texelFetch(uPrevMoments, p, 0);
+    } else if (uUseHistory == 1) {
         vec3 d = rayDirection(vec2(p) + 0.5);
         vec3 point = uEye + a.depth * d;
         vec3 fromPrev = miss ? d : point - uPrevEye;  // a miss: a direction, seen from any eye alike
         float expected = length(fromPrev);
         float tolerance = 0.02 * expected + 2.0 * depthSlope(p, a.depth);
         vec2 pixel;
-        if (uCameraMoved == 0) {
-            // The same view of the same (static) scene: every sample of the pixel belongs to its mean,
-            // including those whose jittered ray hit the other side of an edge. A changed scene resets
-            // the history (TemporalPipeline::reset).
-            radiance = texelFetch(uPrevRadiance, p, 0);
-            prevAlbedo = texelFetch(uPrevAlbedo, p, 0);
-            moments = texelFetch(uPrevMoments, p, 0);
-        } else if (previousPixel(fromPrev, pixel)) {
+        if (previousPixel(fromPrev, pixel)) {
             vec2 f = pixel - 0.5;
             ivec2 base = ivec2(floor(f));
             vec2 w = f - vec2(base);

@@ -116,10 +116,9 @@ std::vector<FrameRow> renderRealtime(Renderer& renderer, const RealtimeRun& run,
         for (float n : history) samples += n;
         row.meanHistoryFrames = samples / double(history.size()) / double(spp);
         Image image = pipeline.result();
-        writePng(run.outDir + "/frame_" +
-                     std::string(4 - std::min<size_t>(4, std::to_string(f).size()), '0') + std::to_string(f) +
-                     ".png",
-                 image, run.display);
+        char name[32];
+        std::snprintf(name, sizeof name, "/frame_%04d.png", f);
+        writePng(run.outDir + name, image, run.display);
 
         std::vector<float> luma = study::displayLuma(image), referenceLuma;
         if (inStrip(f, run.frames)) stripFrames.push_back(image);
