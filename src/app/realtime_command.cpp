@@ -37,6 +37,9 @@ std::vector<OptionGroup> realtimeOptions() {
            {"--reference-spp", "", "K",
             "also render each frame's view with K samples and write its error (rmse, rel_mse,\n"
             "ssim, HDR-FLIP) and flicker against it to frames.csv"},
+           {"--reference-cache", "", "DIR",
+            "keep the references in DIR (EXR) and reuse them in later runs of the same scene,\n"
+            "settings and camera path (other settings or another path there are an error)"},
            {"--out", "", "DIR", "where frame_NNNN.png and frames.csv go (required)"}}}},
         kRealtimeOptions, kRealtimeDefaults);
 }
@@ -106,6 +109,10 @@ int realtimeCommand(const std::vector<std::string>& argv) {
     if (args.has("--spp")) run.fixedSpp = request.spp(scene);
     run.temporal = temporal;
     run.referenceSpp = referenceSpp;
+    run.referenceCache = args.text("--reference-cache");
+    if (run.referenceCache && !referenceSpp) throw UsageError("--reference-cache needs --reference-spp K");
+    run.sceneKey = request.scenePath().value_or("built-in Cornell box") + ", environment " +
+                   args.text("--environment").value_or("the scene's");
     run.settings = request.settings(scene);
     run.display = request.display();
     run.outDir = *out;

@@ -12,6 +12,7 @@
 #include "image/image_stats.h"
 #include "image/png.h"
 #include "realtime/frame_budget.h"
+#include "realtime/reference_cache.h"
 #include "study/metrics.h"
 
 namespace fp {
@@ -90,6 +91,10 @@ std::vector<FrameRow> renderRealtime(Renderer& renderer, const RealtimeRun& run,
     std::vector<FrameRow> rows;
     std::vector<float> previousLuma, previousReference;
     std::vector<Image> stripFrames, stripReferences;
+    std::optional<ReferenceCache> cache;
+    if (run.referenceSpp && run.referenceCache)
+        cache.emplace(*run.referenceCache,
+                      ReferenceCache::describe(run.sceneKey, run.settings, *run.referenceSpp));
     int spp = run.fixedSpp.value_or(1);
     uint32_t sampleOffset = 0;
     for (int f = 0; f < run.frames && !(stop && stop()); ++f) {
@@ -123,19 +128,23 @@ std::vector<FrameRow> renderRealtime(Renderer& renderer, const RealtimeRun& run,
         std::vector<float> luma = study::displayLuma(image), referenceLuma;
         if (inStrip(f, run.frames)) stripFrames.push_back(image);
         if (run.referenceSpp) {
-            RenderSettings r = run.settings;
-            r.guides = true;  // as the frames: changing it would recompile the shaders every frame
-            r.samplesPerPass = std::min(*run.referenceSpp, RenderSettings::kMaxSamplesPerPass);
-            r.sampleOffset = kReferenceOffset;
-            renderer.configure(r, camera);
-            renderer.render(*run.referenceSpp);
-            Image reference = renderer.readback().mean();
-            row.rmse = rmse(image, reference);
-            row.relMse = study::relativeMse(image, reference);
-            row.ssim = study::ssim(image, reference);
-            row.flip = hdrFlip(image, reference, kDefaultPixelsPerDegree).mean;
-            referenceLuma = study::displayLuma(reference);
-            if (inStrip(f, run.frames)) stripReferences.push_back(reference);
+            std::optional<Image> reference = cache ? cache->find(f, camera) : std::nullopt;
+            if (!reference) {
+                RenderSettings r = run.settings;
+                r.guides = true;  // as the frames: changing it would recompile the shaders every frame
+                r.samplesPerPass = std::min(*run.referenceSpp, RenderSettings::kMaxSamplesPerPass);
+                r.sampleOffset = kReferenceOffset;
+                renderer.configure(r, camera);
+                renderer.render(*run.referenceSpp);
+                reference = renderer.readback().mean();
+                if (cache) cache->store(f, camera, *reference);
+            }
+            row.rmse = rmse(image, *reference);
+            row.relMse = study::relativeMse(image, *reference);
+            row.ssim = study::ssim(image, *reference);
+            row.flip = hdrFlip(image, *reference, kDefaultPixelsPerDegree).mean;
+            referenceLuma = study::displayLuma(*reference);
+            if (inStrip(f, run.frames)) stripReferences.push_back(*reference);
         }
         if (f > 0)
             row.flicker = flicker(luma, previousLuma, run.referenceSpp ? &referenceLuma : nullptr,

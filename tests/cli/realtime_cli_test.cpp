@@ -7,6 +7,7 @@
 
 #include "cli/fragpath_runner.h"
 #include "core/text.h"
+#include "image/image.h"
 
 namespace fp::test {
 namespace {
@@ -52,6 +53,37 @@ TEST_F(RealtimeCli, WritesEveryFrameAndARowOfFiguresPerFrame) {
         EXPECT_LT(flip, 1.0);
         EXPECT_EQ(rows[r][11].empty(), r == 1) << "flicker needs a previous frame";
     }
+}
+
+// Runs over the same path share references through --reference-cache: a reference found there is the
+// one used (here one replaced on purpose by a uniform 1000, which no render of the box comes near), and
+// a cache made for other settings or another path is refused, not silently used.
+TEST_F(RealtimeCli, ReusesItsCachedReferencesAndRefusesAnotherRunsCache) {
+    const std::string options =
+        "realtime --size 32x32 --frames 2 --spp 1 --reference-spp 8 --reference-cache " + path("refs");
+    CliRun first = runFragpath(options + " --out " + path("a"));
+    ASSERT_EQ(first.exitCode, 0) << first.output;
+    Image uniform(32, 32);
+    for (glm::vec3& p : uniform.pixels) p = glm::vec3(1000.0f);
+    writeImage(path("refs/reference_0001.exr"), uniform);
+    CliRun second = runFragpath(options + " --out " + path("b"));
+    ASSERT_EQ(second.exitCode, 0) << second.output;
+    auto a = readCsv(path("a/frames.csv")), b = readCsv(path("b/frames.csv"));
+    ASSERT_EQ(a.size(), 3u);
+    ASSERT_EQ(b.size(), 3u);
+    EXPECT_EQ(b[1][7], a[1][7]) << "frame 0: the same frame against the same cached reference";
+    EXPECT_LT(std::stod(a[2][7]), 10.0);
+    EXPECT_GT(std::stod(b[2][7]), 900.0) << "frame 1 was judged against the cached uniform 1000";
+
+    CliRun otherPath = runFragpath(options + " --orbit-speed 40 --out " + path("c"));
+    EXPECT_EQ(otherPath.exitCode, 1);
+    EXPECT_NE(otherPath.output.find("another camera"), std::string::npos) << otherPath.output;
+    CliRun otherSettings = runFragpath(options + " --max-depth 2 --out " + path("d"));
+    EXPECT_EQ(otherSettings.exitCode, 1);
+    EXPECT_NE(otherSettings.output.find("other settings"), std::string::npos) << otherSettings.output;
+    EXPECT_EQ(
+        runFragpath("realtime --frames 1 --reference-cache " + path("r") + " --out " + path("e")).exitCode, 2)
+        << "a cache without --reference-spp";
 }
 
 TEST_F(RealtimeCli, RefusesWhatItCannotRender) {
