@@ -156,7 +156,9 @@ std::string rooflineMarkdown(const ReportInput& in) {
     md +=
         "The first GPU of each class whose binding limit reaches the paths per second the threshold needs; "
         "\"trend\" is where a least-squares fit of log2(binding limit) against the year, within the class, "
-        "reaches it.\n\n"
+        "reaches it. Where the binding limit changes along a class (FP32 before RT cores, memory after), "
+        "the fit is steeper than either limit's own trend, so a trend year can come earlier with the FP32 "
+        "limit at the measured efficiency than at 100%: read trend years as rough.\n\n"
         "| integrator | denoiser | spp needed | giga paths/s needed | giga rays/s needed | first x80 | "
         "first flagship | first x80, FP32 at measured efficiency | first flagship, same |\n"
         "|---|---|---|---|---|---|---|---|---|\n";
