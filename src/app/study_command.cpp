@@ -25,6 +25,7 @@
 #include "study/path_cost.h"
 #include "study/plots.h"
 #include "study/report.h"
+#include "study/roofline_plot.h"
 #include "study/study_csv.h"
 #include "study/sweep.h"
 
@@ -230,6 +231,9 @@ int studyCommand(const std::vector<std::string>& argv) {
     report.cpu = study::thisMachinePeak(glRenderer);
     report.loadText = loadText;
     report.plots = plots;
+    report.lightEntries = int(renderer.stats().emitters + renderer.stats().punctualLights);
+    report.sceneBytes = double(renderer.stats().gpuBytes);
+    if (plots) study::drawRooflinePlots(out, report);
     std::string md = study::reportMarkdown(report);
     writeFileAtomically((std::filesystem::path(out) / "report.md").string(),
                         std::vector<std::uint8_t>(md.begin(), md.end()));

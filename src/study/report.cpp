@@ -9,6 +9,7 @@
 #include "study/flop_model.h"
 #include "study/metrics.h"
 #include "study/plots.h"
+#include "study/roofline_report.h"
 #include "study/spp_needed.h"
 
 namespace fp::study {
@@ -197,12 +198,14 @@ std::string reportMarkdown(const ReportInput& in) {
                          f.sppNeeded > 0 ? formatText("%.3g", f.requiredPeakTflops).c_str() : "-",
                          year.c_str(), atPeak.c_str());
     }
-    md += "\nGPU peaks (FP32, vendor boost-clock figures): ";
-    for (const Gpu& g : consumerGpus()) md += formatText("%s (%d) %.1f, ", g.name, g.year, g.peakTflops);
+    md += "\nGPU peaks (FP32, vendor boost-clock figures; the Roofline section lists their sources): ";
+    for (const Gpu& g : gpuTable()) md += formatText("%s (%d) %.1f, ", g.name, g.year, g.peakTflops());
     md += formatText(
-        "TFLOPS; a least-squares fit of log2(peak) against the year doubles every %.2f years (the "
-        "\"trend\" years above extrapolate it).\n\n",
-        doublingYears());
+        "TFLOPS. A least-squares fit of log2(peak) against the year, one per class, doubles every %.2f "
+        "years for the x80 cards and every %.2f for the flagships; a \"trend\" year above is the earlier "
+        "of the two lines. These peaks count every FP32 lane; the Roofline section takes the lanes that "
+        "integer work occupies into account.\n\n",
+        doublingYears(GpuClass::X80), doublingYears(GpuClass::Flagship));
     md +=
         "**Assumptions.** (1) A GPU runs this shader at the efficiency measured here on llvmpipe (fraction "
         "of "
@@ -258,7 +261,8 @@ std::string reportMarkdown(const ReportInput& in) {
     md +=
         "\nThese figures hold for this scene only: a scene with more triangles visits more BVH nodes per "
         "ray, "
-        "and glossy or glass surfaces cost more per interaction, so they need more FLOPs per path.\n";
+        "and glossy or glass surfaces cost more per interaction, so they need more FLOPs per path.\n\n";
+    md += rooflineMarkdown(in);
     return md;
 }
 

@@ -1,0 +1,17 @@
+#pragma once
+// The report's "Roofline" section: the GPU table, bytes and integer work per path, each GPU's limits
+// per integrator and the first GPU of each class that reaches the samples the threshold needs.
+#include <string>
+#include <vector>
+
+#include "study/report.h"
+
+namespace fp::study {
+
+// The integrators of `input` that have path counts and at least one denoiser whose series reaches the
+// threshold (measured or extrapolated): the ones the section and the chart show.
+std::vector<std::string> rooflineIntegrators(const ReportInput& input);
+
+std::string rooflineMarkdown(const ReportInput& input);
+
+}  // namespace fp::study
