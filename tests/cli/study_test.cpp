@@ -97,10 +97,14 @@ TEST_F(StudyTest, WritesEveryArtefact) {
         EXPECT_GT(pngSize(out + "/" + plot).first, 0) << plot;
         EXPECT_GT(std::filesystem::file_size(out + "/" + plot), 5000u) << plot;
     }
-    // Columns 1 and 4 spp and the reference, 16 pixels each with 2-pixel gaps; a row per series.
+    // Columns 1 and 4 spp and the reference, 16 pixels each with 2-pixel gaps; a row per series. Labels
+    // at text scale 1 (image/image_grid.h), padding 2: a header of 9 + 2 * 2 = 13 rows, and a label
+    // column as wide as the widest row label, "naive + bilateral", plus 2 * 2. Its width from
+    // stb_easy_font's advances: n 6, a 6, i 3, v 7, e 6 (28), ' ' 6, + 7, ' ' 6 (19), b 6, i 3, l 3,
+    // a 6, t 5, e 6, r 5, a 6, l 3 (43): 90.
     std::pair<int, int> strip = pngSize(out + "/strip.png");
-    EXPECT_EQ(strip.first, 3 * 16 + 2 * 2);
-    EXPECT_EQ(strip.second, int(levels.size()) * 16 + (int(levels.size()) - 1) * 2);
+    EXPECT_EQ(strip.first, 90 + 2 * 2 + 3 * 16 + 2 * 2);
+    EXPECT_EQ(strip.second, 13 + int(levels.size()) * 16 + (int(levels.size()) - 1) * 2);
     EXPECT_EQ(readImage(out + "/reference.exr").width, 16);
 
     std::string report = readText(out + "/report.md");
