@@ -125,8 +125,8 @@ void DenoisePasses::prepare(const Renderer& renderer, Denoiser which) {
     glActiveTexture(GLenum(GL_TEXTURE0 + kSpareUnit));
 }
 
-void DenoisePasses::filter(GLuint color, GLuint guide, GLuint modulate, int width, int height,
-                           Denoiser which) {
+void DenoisePasses::filter(GLuint color, GLuint guide, GLuint modulate, int width, int height, Denoiser which,
+                           GLuint settled, float settledSamples) {
     if (which == Denoiser::None) throw Error("internal: DenoisePasses::filter with no denoiser");
     resize(width, height);
     glDisable(GL_SCISSOR_TEST);
@@ -136,8 +136,10 @@ void DenoisePasses::filter(GLuint color, GLuint guide, GLuint modulate, int widt
     // `color` may be colour A).
     GLuint current = color;
     Texture next = kColorB;
+    if (!settled) settledSamples = 0.0f;
     auto pass = [&](Pass p) {
-        draw(p, framebuffers_[next], {{"uColor", current}, {"uGuide", guide}});
+        draw(p, framebuffers_[next],
+             {{"uColor", current}, {"uGuide", guide}, {"uSettled", settled ? settled : guide}});
         current = textures_[next];
         next = next == kColorA ? kColorB : kColorA;
     };
@@ -148,6 +150,7 @@ void DenoisePasses::filter(GLuint color, GLuint guide, GLuint modulate, int widt
         for (int i = 0; i < kAtrousIterations; ++i) {
             program(kAtrous).use();
             program(kAtrous).set("uStep", 1 << i);
+            program(kAtrous).set("uSettledSamples", settledSamples);
             pass(kAtrous);
         }
     }

@@ -37,8 +37,12 @@ class DenoisePasses {
     // The filter and finish passes alone, for a front end that prepares its own input (the real-time
     // pipeline, src/realtime/temporal_pipeline.h): `color` holds (demodulated colour, luminance variance
     // of its mean, or -1 to estimate it), `guide` and `modulate` what the prepare pass writes; none is
-    // changed. `which` is not None.
-    void filter(GLuint color, GLuint guide, GLuint modulate, int width, int height, Denoiser which);
+    // changed. `which` is not None. With `settled` (the real-time history: (mean, samples) per pixel) and
+    // settledSamples > 0, the a-trous levels pass pixels whose history holds at least that many samples
+    // through unfiltered: their mean is already as clean as the filter would make it (measured:
+    // glsl/denoise/atrous.frag.glsl), and skipping them is most of the filter's cost on a moving camera.
+    void filter(GLuint color, GLuint guide, GLuint modulate, int width, int height, Denoiser which,
+                GLuint settled = 0, float settledSamples = 0.0f);
     // The last result, (denoised radiance, 1) per pixel, at the accumulation's size.
     GLuint resultTexture() const { return textures_[kResult]; }
     Image result() const;  // rows top first
