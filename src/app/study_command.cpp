@@ -83,7 +83,8 @@ void printStudyUsage() {
         "per path for a FLOP estimate. Without SCENE it studies the scene set (--scenes): the built-in\n"
         "Cornell box, a textured floor, glossy and glass spheres with caustics, an environment-lit scene, a\n"
         "million-triangle sphere and a glTF scene (files read from the source tree's assets/). With the\n"
-        "defaults the whole set takes about 30 minutes on 2 cores (README.md, \"Study\"). Writes to --out:\n"
+        "defaults the whole set takes about 15-20 minutes on 2 idle cores (README.md, \"Study\"). Writes to "
+        "--out:\n"
         "  study.csv             one row per scene x integrator x denoiser x spp (columns: README.md)\n"
         "  plots.gp + *.png      per scene, error against samples and against time, log-log (gnuplot)\n"
         "  strip_<scene>.png     the same crop at 1, 4, 16, 64 spp and the reference, a row per\n"
@@ -238,9 +239,14 @@ int studyCommand(const std::vector<std::string>& argv) {
                 " Its own noise adds about %.2g to every relative MSE below (its per-pixel variance of "
                 "the mean over (y^2 + eps)), %.0f%% of the threshold.",
                 ownRelMse, 100.0 * ownRelMse / threshold);
+            // A reference whose own noise is a sizeable share of the threshold moves every crossing: say so.
+            const std::string tooNoisy = ownRelMse > 0.25 * threshold
+                                             ? " **More than a quarter of the threshold: the crossings below "
+                                               "are late; raise --reference-spp.**"
+                                             : "";
             referenceText = std::to_string(referenceSpp) + " spp of " + integratorName(referenceIntegrator) +
                             " (seed " + std::to_string(r.seed) + ", independent of the sweep's), saved as `" +
-                            referenceFile + "`." + noise;
+                            referenceFile + "`." + noise + tooNoisy;
         }
 
         study::SweepOptions sweep;

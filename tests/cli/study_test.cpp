@@ -158,6 +158,12 @@ TEST_F(StudyTest, StudiesSeveralScenesInOneRun) {
     ASSERT_NE(environment, std::string::npos);
     EXPECT_LT(cornell, environment);
     EXPECT_NE(report.find("**SSIM >= 0.9**, **FLIP <= 0.1**"), std::string::npos);
+    // 16-spp references at 16x16 carry far more noise than a quarter of the 4e-4 threshold (the 64-spp
+    // 64x64 Cornell reference adds about 0.0036, nine times it): each is flagged.
+    size_t flag = report.find("raise --reference-spp");
+    ASSERT_NE(flag, std::string::npos);
+    EXPECT_LT(flag, environment);
+    EXPECT_NE(report.find("raise --reference-spp", environment), std::string::npos);
 }
 
 TEST_F(StudyTest, RejectsBadRequestsBeforeRendering) {
