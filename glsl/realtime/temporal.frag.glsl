@@ -170,8 +170,10 @@ void main() {
     // back: where the filter passes a pixel through, the image is the history's mean exactly.
     vec3 modulate = (a.emitter || miss) ? vec3(1.0) : max(meanAlbedo, kMinAlbedo);
     float frames = (n + s) / s;
-    // The variance of the history's mean: a frame's variance over the frames behind it.
-    float variance = frames >= kMinFramesForVariance ? max(m2 - m1 * m1, 0.0) / frames : -1.0;
+    // The variance of the history's mean: a frame's variance over the frames behind it. m2 - m1^2 is the
+    // frames' variance about their own mean, (n - 1) / n of the true one: Bessel's correction makes
+    // (m2 - m1^2) / (n - 1) unbiased, as the progressive prepare pass's (squares - n mean^2) / ((n - 1) n).
+    float variance = frames >= kMinFramesForVariance ? max(m2 - m1 * m1, 0.0) / (frames - 1.0) : -1.0;
     outFilter = vec4(mean / modulate, variance);
     outModulate = vec4(modulate, 0.0);
 }

@@ -22,21 +22,24 @@ std::vector<OptionGroup> realtimeOptions() {
     return commandOptions(
         {{"Real time",
           {{"--camera-path", "", "orbit|FILE",
-            "orbit: the eye circles the camera's target about its up axis (--orbit-speed);\n"
-            "FILE.json: keyframes {\"keyframes\": [{\"time\", \"eye\", \"target\", \"up\", \"fov\"}, ...]}\n"
-            "(default orbit)"},
+            "orbit: the eye circles the camera's target about its up axis (--orbit-speed); FILE.json: "
+            "keyframes {\"keyframes\": [{\"time\", \"eye\", \"target\", \"up\", \"fov\"}, ...]} (default "
+            "orbit)"},
            {"--orbit-speed", "", "DEG", "degrees per second of the orbit (default 10)"},
            {"--frames", "", "N", "frames to render (default 60)"},
            {"--fps", "", "F",
-            "frames per second: frame i shows the path at i / F s, and 1000 / F ms is the budget\n"
-            "the samples per frame are fitted to (default 30)"},
+            "frames per second: frame i shows the path at i / F s, and 1000 / F ms is the budget the samples "
+            "per frame are fitted to (default 30)"},
            {"--temporal", "", "on|off", "reuse the reprojected history (default on)"},
            {"--filter", "", "atrous|none", "the spatial filter after reprojection (default atrous)"},
            {"--max-history", "", "N",
             "samples per pixel the history keeps while the camera moves (default 32)"},
            {"--reference-spp", "", "K",
-            "also render each frame's view with K samples and write its error (rmse, rel_mse,\n"
-            "ssim, HDR-FLIP) and flicker against it to frames.csv"},
+            "also render each frame's view with K samples and write its error (rmse, rel_mse, ssim, "
+            "HDR-FLIP) and flicker against it to frames.csv"},
+           {"--reference-cache", "", "DIR",
+            "keep the references in DIR (EXR) and reuse them in later runs of the same scene, settings and "
+            "camera path (other settings or another path there are an error)"},
            {"--out", "", "DIR", "where frame_NNNN.png and frames.csv go (required)"}}}},
         kRealtimeOptions, kRealtimeDefaults);
 }
@@ -106,6 +109,10 @@ int realtimeCommand(const std::vector<std::string>& argv) {
     if (args.has("--spp")) run.fixedSpp = request.spp(scene);
     run.temporal = temporal;
     run.referenceSpp = referenceSpp;
+    run.referenceCache = args.text("--reference-cache");
+    if (run.referenceCache && !referenceSpp) throw UsageError("--reference-cache needs --reference-spp K");
+    run.sceneKey = request.scenePath().value_or("built-in Cornell box") + ", environment " +
+                   args.text("--environment").value_or("the scene's");
     run.settings = request.settings(scene);
     run.display = request.display();
     run.outDir = *out;

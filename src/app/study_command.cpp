@@ -25,6 +25,7 @@
 #include "study/path_cost.h"
 #include "study/plots.h"
 #include "study/report.h"
+#include "study/roofline_plot.h"
 #include "study/scene_set.h"
 #include "study/study_csv.h"
 #include "study/sweep.h"
@@ -87,10 +88,12 @@ void printStudyUsage() {
         "--out:\n"
         "  study.csv             one row per scene x integrator x denoiser x spp (columns: README.md)\n"
         "  plots.gp + *.png      per scene, error against samples and against time, log-log (gnuplot)\n"
+        "  <scene>_roofline.gp + <scene>_roofline_<integrator>.png\n"
+        "                        per scene, each GPU's limits against the rays/s 1080p60 needs (gnuplot)\n"
         "  strip_<scene>.png     the same crop at 1, 4, 16, 64 spp and the reference, a row per\n"
         "                        integrator+denoiser\n"
         "  report.md             the thresholds, the spp each needs with their sensitivity band, and the\n"
-        "                        real-time feasibility estimate, per scene\n"
+        "                        real-time feasibility estimate and the roofline, per scene\n"
         "  reference_<scene>.exr the reference it rendered (reuse it with --reference, one scene at a time)\n"
         "The sweep uses --seed S; the rendered reference S + 1. Camera flags need a single scene.\n",
         stdout);
@@ -296,16 +299,22 @@ int studyCommand(const std::vector<std::string>& argv) {
         report.cpu = cpu;
         report.loadText = loadText;
         report.plots = plots;
+        report.lightEntries = int(renderer.stats().emitters + renderer.stats().punctualLights);
+        report.sceneBytes = double(renderer.stats().gpuBytes);
         allRows.insert(allRows.end(), result.rows.begin(), result.rows.end());
         reports.push_back(std::move(report));
         // What is finished stays on disk if a later scene fails.
         study::writeCsv(outPath("study.csv"), allRows);
     }
 
-    if (plots) study::drawPlots(out, allRows, threshold);
+    if (plots) {
+        study::drawPlots(out, allRows, threshold);
+        for (const study::ReportInput& report : reports) study::drawRooflinePlots(out, report);
+    }
     std::string md = study::reportMarkdown(reports);
     writeFileAtomically(outPath("report.md"), std::vector<std::uint8_t>(md.begin(), md.end()));
-    say("wrote " + out + "/study.csv, strip_*.png, report.md" + (plots ? ", plots.gp and its PNGs" : ""));
+    say("wrote " + out + "/study.csv, strip_*.png, report.md" +
+        (plots ? ", plots.gp, *_roofline.gp and their PNGs" : ""));
     return 0;
 }
 

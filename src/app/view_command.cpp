@@ -29,6 +29,9 @@ std::vector<OptionGroup> viewOptions() {
             "start in real-time mode: a few samples per pixel each frame, reprojected history and the\n"
             "a-trous filter (the panel switches back to progressive)"},
            {"--fps", "", "N", "real-time mode's target frames per second, 1 to 240 (default 30)"},
+           {"--dynamic-resolution", "", "on|off",
+            "real-time mode: where one sample per pixel overruns the budget, render fewer pixels\n"
+            "(halving their count per step, down to 1/8 of the side) and scale up (default on)"},
            {"--scale", "", "F", "accumulation size / window size, 0.0625 to 1 (default 1)"},
            {"--frames", "", "N",
             "close after N frames (with --spp S: not before S samples per pixel; never in the middle of a "
@@ -90,6 +93,10 @@ int viewCommand(const std::vector<std::string>& argv) {
     if (auto name = args.text("--denoise")) c.denoiser = parseDenoiser(*name);
     c.realtime = args.has("--realtime");
     c.targetFps = args.integer("--fps", 1, 240).value_or(30);
+    const std::string dynamic = args.text("--dynamic-resolution").value_or("on");
+    if (dynamic != "on" && dynamic != "off")
+        throw UsageError("option --dynamic-resolution: expected on or off, not '" + dynamic + "'");
+    c.dynamicResolution = dynamic == "on";
     c.resolutionScale = args.number("--scale").value_or(1.0f);
     if (!(c.resolutionScale >= 1.0f / 16.0f && c.resolutionScale <= 1.0f))
         throw Error("option --scale: must be from 0.0625 to 1");

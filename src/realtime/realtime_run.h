@@ -21,7 +21,11 @@ struct RealtimeRun {
     std::optional<int> fixedSpp;  // samples per frame; unset: fitted to the budget
     TemporalSettings temporal;
     std::optional<int> referenceSpp;  // compare every frame with a render of this many samples
-    RenderSettings settings;          // size, integrator, depth, seed, sampler; spp and offset are set here
+    // Where the references are kept between runs (realtime/reference_cache.h), with what names the scene
+    // in its key (the scene file and environment as given).
+    std::optional<std::string> referenceCache;
+    std::string sceneKey;
+    RenderSettings settings;  // size, integrator, depth, seed, sampler; spp and offset are set here
     DisplaySettings display;
     std::string outDir;
 };

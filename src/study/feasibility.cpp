@@ -1,34 +1,42 @@
 #include "study/feasibility.h"
 
+#include <algorithm>
 #include <cmath>
+
+#include "core/error.h"
 
 namespace fp::study {
 
 namespace {
 
-struct Fit {
-    double intercept, slope;  // log2(TFLOPS) = intercept + slope * year
-};
-
-Fit fitPeaks() {
-    const std::vector<Gpu>& gpus = consumerGpus();
-    double n = double(gpus.size()), sx = 0, sy = 0, sxx = 0, sxy = 0;
-    for (const Gpu& g : gpus) {
-        double x = g.year, y = std::log2(g.peakTflops);
-        sx += x, sy += y, sxx += x * x, sxy += x * y;
-    }
-    double slope = (n * sxy - sx * sy) / (n * sxx - sx * sx);
-    return {(sy - slope * sx) / n, slope};
+Log2Fit fitPeaks(GpuClass c) {
+    std::vector<std::pair<double, double>> points;
+    for (const Gpu& g : gpusOfClass(c)) points.push_back({double(g.year), g.peakTflops()});
+    return fitLog2(points);
 }
 
 }  // namespace
 
-const std::vector<Gpu>& consumerGpus() {
-    static const std::vector<Gpu> gpus = {
-        {"GTX 980", 2014, 5.0},   {"GTX 1080", 2016, 8.9},  {"RTX 2080", 2018, 10.1},
-        {"RTX 3080", 2020, 29.8}, {"RTX 4090", 2022, 82.6}, {"RTX 5090", 2025, 104.8},
-    };
-    return gpus;
+double Log2Fit::yearOf(double value) const {
+    return (std::log2(value) - intercept) / slope;
+}
+
+double Log2Fit::doublingYears() const {
+    return 1.0 / slope;
+}
+
+Log2Fit fitLog2(const std::vector<std::pair<double, double>>& points) {
+    double n = double(points.size()), sx = 0, sy = 0, sxx = 0, sxy = 0;
+    for (const auto& [x, value] : points) {
+        if (!(value > 0)) throw Error("a log2 trend needs positive values");
+        double y = std::log2(value);
+        sx += x, sy += y, sxx += x * x, sxy += x * y;
+    }
+    double denominator = n * sxx - sx * sx;
+    if (points.size() < 2 || denominator <= 0)
+        throw Error("a trend line needs points from two years at least");
+    double slope = (n * sxy - sx * sy) / denominator;
+    return {(sy - slope * sx) / n, slope};
 }
 
 double requiredFlopsPerSecond(double spp, double flopsPerPath) {
@@ -39,25 +47,29 @@ double measuredEfficiency(double flopsPerPath, double pathsPerCpuSecond, double 
     return flopsPerPath * pathsPerCpuSecond / (peakGflopsPerCore * 1e9);
 }
 
-YearAnswer yearReached(double required, double efficiency) {
+YearAnswer yearReached(double required, double efficiency, std::optional<GpuClass> gpuClass) {
     YearAnswer answer;
-    for (const Gpu& g : consumerGpus())
-        if (g.peakTflops * 1e12 * efficiency >= required) {
+    for (const Gpu& g : gpuTable()) {
+        if (gpuClass && g.gpuClass != *gpuClass) continue;
+        if (g.peakTflops() * 1e12 * efficiency >= required) {
             answer.firstGpuYear = g.year;
             answer.firstGpuName = g.name;
             break;
         }
-    answer.extrapolatedYear = yearOfPeak(required / efficiency / 1e12);
+    }
+    const double tflops = required / efficiency / 1e12;
+    answer.extrapolatedYear =
+        gpuClass ? yearOfPeak(tflops, *gpuClass)
+                 : std::min(yearOfPeak(tflops, GpuClass::X80), yearOfPeak(tflops, GpuClass::Flagship));
     return answer;
 }
 
-double yearOfPeak(double tflops) {
-    Fit fit = fitPeaks();
-    return (std::log2(tflops) - fit.intercept) / fit.slope;
+double yearOfPeak(double tflops, GpuClass c) {
+    return fitPeaks(c).yearOf(tflops);
 }
 
-double doublingYears() {
-    return 1.0 / fitPeaks().slope;
+double doublingYears(GpuClass c) {
+    return fitPeaks(c).doublingYears();
 }
 
 }  // namespace fp::study

@@ -153,10 +153,13 @@ void requireGnuplot() {
 }
 
 void drawPlots(const std::string& dir, const std::vector<StudyRow>& rows, double relMseThreshold) {
-    std::string script = gnuplotScript(rows, relMseThreshold);
-    writeFileAtomically((std::filesystem::path(dir) / "plots.gp").string(),
+    runGnuplotScript(dir, "plots.gp", gnuplotScript(rows, relMseThreshold));
+}
+
+void runGnuplotScript(const std::string& dir, const std::string& file, const std::string& script) {
+    writeFileAtomically((std::filesystem::path(dir) / file).string(),
                         std::vector<std::uint8_t>(script.begin(), script.end()));
-    std::string command = "cd " + quoteForShell(dir) + " && gnuplot plots.gp 2>&1";
+    std::string command = "cd " + quoteForShell(dir) + " && gnuplot " + quoteForShell(file) + " 2>&1";
     FILE* pipe = popen(command.c_str(), "r");
     if (!pipe) throw Error("could not start gnuplot");
     std::string output;
@@ -164,7 +167,7 @@ void drawPlots(const std::string& dir, const std::vector<StudyRow>& rows, double
     while (size_t n = fread(buffer, 1, sizeof buffer, pipe)) output.append(buffer, n);
     int status = pclose(pipe);
     if (!WIFEXITED(status) || WEXITSTATUS(status) != 0)
-        throw Error("gnuplot failed on " + dir + "/plots.gp:\n" + output);
+        throw Error("gnuplot failed on " + dir + "/" + file + ":\n" + output);
 }
 
 }  // namespace fp::study

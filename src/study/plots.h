@@ -21,6 +21,9 @@ std::string gnuplotScript(const std::vector<StudyRow>& rows, double relMseThresh
 
 // Throws fp::Error with install instructions if gnuplot is not on PATH; checked before rendering.
 void requireGnuplot();
+// Writes DIR/FILE with `script` and runs gnuplot on it in DIR; throws fp::Error with gnuplot's output if
+// it fails.
+void runGnuplotScript(const std::string& dir, const std::string& file, const std::string& script);
 // Writes DIR/plots.gp and runs gnuplot in DIR; throws fp::Error with gnuplot's output if it fails.
 void drawPlots(const std::string& dir, const std::vector<StudyRow>& rows, double relMseThreshold);
 

@@ -11,6 +11,7 @@
 #include "study/metric_answer.h"
 #include "study/metrics.h"
 #include "study/plots.h"
+#include "study/roofline_report.h"
 #include "study/scene_set.h"
 #include "study/spp_needed.h"
 
@@ -244,6 +245,7 @@ std::string sceneSections(const ReportInput& in) {
     md += "\n### The answer\n\n";
     md += answerByMetric(in, rows);
     md += answerText(rows, in.denoisers.size());
+    md += rooflineMarkdown(in);
     return md;
 }
 
@@ -319,12 +321,14 @@ std::string reportMarkdown(const std::vector<ReportInput>& scenes) {
         "the SIMD width capped by the vector width llvmpipe compiles to). Achieved = FLOPs per path x paths "
         "per CPU-second (raw render at the largest sample count), against the peak of one core since CPU "
         "seconds add up the busy time of all cores.\n\n";
-    md += "GPU peaks (FP32, vendor boost-clock figures): ";
-    for (const Gpu& g : consumerGpus()) md += formatText("%s (%d) %.1f, ", g.name, g.year, g.peakTflops);
+    md += "GPU peaks (FP32, vendor boost-clock figures; the GPU table below lists their sources): ";
+    for (const Gpu& g : gpuTable()) md += formatText("%s (%d) %.1f, ", g.name, g.year, g.peakTflops());
     md += formatText(
-        "TFLOPS; a least-squares fit of log2(peak) against the year doubles every %.2f years (the "
-        "\"trend\" years extrapolate it).\n\n",
-        doublingYears());
+        "TFLOPS. A least-squares fit of log2(peak) against the year, one per class, doubles every %.2f "
+        "years for the x80 cards and every %.2f for the flagships; a \"trend\" year in a scene's section "
+        "is the earlier of the two lines. These peaks count every FP32 lane; each scene's Roofline section "
+        "takes the lanes that integer work occupies into account.\n\n",
+        doublingYears(GpuClass::X80), doublingYears(GpuClass::Flagship));
     md +=
         "**Assumptions.** (1) A GPU runs this shader at the efficiency measured here on llvmpipe (fraction "
         "of "
@@ -335,6 +339,8 @@ std::string reportMarkdown(const std::vector<ReportInput>& scenes) {
         "samples only: no temporal accumulation or reprojection. (5) Since the RTX 2080, GPUs traverse BVHs "
         "and test triangles in fixed-function RT cores that the FP32 peak does not count; each answer "
         "also gives the year if only the shading share of the FLOPs fell on the FP32 units.\n\n";
+
+    md += rooflineGpuMarkdown();
 
     for (const ReportInput& scene : scenes) md += sceneSections(scene);
     return md;

@@ -32,6 +32,9 @@ struct ReportInput {
     std::string loadText;  // the load average when the study started
     bool plots = true;
     StripLayout strip;
+    // The scene's light-selection entries and GPU buffer bytes, for the roofline (roofline.h).
+    int lightEntries = 0;
+    double sceneBytes = 0.0;
 };
 
 // The numbers the feasibility section derives for one integrator and denoiser (also for tests).

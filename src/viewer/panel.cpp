@@ -116,7 +116,8 @@ std::string shortNumber(double value) {
 
 void statistics(const ViewerControls& c, const PanelInfo& info) {
     if (c.realtime) {
-        ImGui::Text("real-time %d spp/frame, target %d fps", info.realtimeSpp, c.targetFps);
+        ImGui::Text("real-time %d spp/frame at %.0f %% of the pixels, target %d fps", info.realtimeSpp,
+                    100.0 * double(info.realtimeScale * info.realtimeScale), c.targetFps);
         ImGui::Text("image    %d x %d", info.accumulation.x, info.accumulation.y);
         ImGui::Text("frame    %.1f ms", info.frameMs);
         ImGui::Text("trace %.1f  temporal %.1f  filter %.1f ms", info.traceMs, info.temporalMs,
@@ -209,6 +210,7 @@ void realtimeSettings(ViewerControls& c, const PanelInfo& info) {
     ImGui::Checkbox("temporal reuse", &c.temporalReuse);
     ImGui::SameLine();
     ImGui::Checkbox("filter", &c.realtimeFilter);
+    ImGui::Checkbox("dynamic resolution", &c.dynamicResolution);
     ImGui::Combo("debug view", &c.realtimeView, kRealtimeViews, int(std::size(kRealtimeViews)));
     c.realtimeView = std::clamp(c.realtimeView, 0, int(std::size(kRealtimeViews)) - 1);
     if (c.realtimeView == 1)

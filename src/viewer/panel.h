@@ -23,6 +23,7 @@ struct PanelInfo {
     double denoiseMs = 0.0;  // the last denoising run; 0 if none
     // Real-time mode: the last frame's samples per pixel and its stages to glFinish.
     int realtimeSpp = 0;
+    float realtimeScale = 1.0f;  // dynamic resolution: the share of the resolution scale rendered
     double traceMs = 0.0, temporalMs = 0.0, filterMs = 0.0;
     float historyMaxFrames = 0.0f;  // the history-length view's top: maxHistorySamples / spp
     std::string renderer;           // GL_RENDERER, GL_VERSION

@@ -17,6 +17,7 @@
 #include "core/clock.h"
 #include "core/error.h"
 #include "denoise/denoise_passes.h"
+#include "realtime/frame_budget.h"
 #include "realtime/temporal_pipeline.h"
 #include "render/display.h"
 #include "render/renderer.h"
@@ -25,7 +26,6 @@
 #include "viewer/camera_controller.h"
 #include "viewer/camera_input.h"
 #include "viewer/focus_picker.h"
-#include "realtime/frame_budget.h"
 #include "viewer/frame_stats.h"
 #include "viewer/imgui_layer.h"
 #include "viewer/panel.h"
@@ -138,6 +138,10 @@ class Session {
     double traceMs_ = 0.0;
     int traceSpp_ = 0;  // the samples per pixel of the last frame, which traceMs_ is the time of
     double realtimeOverheadMs_ = 5.0;  // per frame, everything but tracing (pipeline, panel, display, swap)
+    // The first frames after a reset compile shaders and warm caches: their time says nothing of the
+    // budget, and dropping the resolution on them would also drop the history.
+    static constexpr int kWarmUpFrames = 2;
+    float realtimeScale_ = 1.0f;  // dynamic resolution: a share of the resolution scale (frame_budget.h)
 };
 
 Session::Session(const Scene& scene, const ViewerOptions& options)
@@ -272,6 +276,7 @@ PanelInfo Session::panelInfo() const {
     info.lights = lights_;
     if (controls_.realtime) {
         info.realtimeSpp = traceSpp_;
+        info.realtimeScale = realtimeScale_;
         info.traceMs = traceMs_;
         if (pipeline_) {
             info.temporalMs = 1000.0 * pipeline_->timings().temporalSeconds;
@@ -493,10 +498,10 @@ void Session::printTiming() const {
         pixels > 0 ? paths / pixels : 0.0, paths);
     if (controls_.realtime && pipeline_)
         std::printf(
-            "real-time: %d spp in the last frame (next %d): trace %.1f ms, temporal %.1f ms, filter %.1f "
-            "ms\n",
-            traceSpp_, realtimeSpp_, traceMs_, 1000.0 * pipeline_->timings().temporalSeconds,
-            1000.0 * pipeline_->timings().filterSeconds);
+            "real-time: %d spp in the last frame (next %d) at %dx%d: trace %.1f ms, temporal %.1f ms, "
+            "filter %.1f ms\n",
+            traceSpp_, realtimeSpp_, realtimeSettings_.width, realtimeSettings_.height, traceMs_,
+            1000.0 * pipeline_->timings().temporalSeconds, 1000.0 * pipeline_->timings().filterSeconds);
 }
 
 TemporalSettings Session::temporalSettings() const {
@@ -531,7 +536,8 @@ bool Session::realtimeFrame(glm::ivec2 framebuffer) {
     s.split.reset();  // the pipeline reprojects one image
     s.guides = true;
     glm::ivec2 size =
-        glm::max(glm::ivec2(1), glm::ivec2(glm::round(glm::vec2(framebuffer) * controls_.resolutionScale)));
+        glm::max(glm::ivec2(1),
+                 glm::ivec2(glm::round(glm::vec2(framebuffer) * controls_.resolutionScale * realtimeScale_)));
     s.width = size.x;
     s.height = size.y;
     s.samplesPerPass = 1;
@@ -668,8 +674,15 @@ void Session::run() {
         if (rendering && controls_.realtime) {
             realtimeOverheadMs_ +=
                 0.25 * (std::max(1000.0 * frameSeconds - traceMs_, 0.0) - realtimeOverheadMs_);
-            realtimeSpp_ = adaptSamplesPerFrame(realtimeSpp_, traceMs_, double(controls_.targetFps),
-                                                realtimeOverheadMs_);
+            // One sample per pixel first, then pixels (dynamic resolution), then more samples.
+            if (!controls_.dynamicResolution)
+                realtimeScale_ = 1.0f;
+            else if (realtimeSpp_ == 1 && realtimeFrames_ > kWarmUpFrames)
+                realtimeScale_ =
+                    adaptResolutionScale(realtimeScale_, 1000.0 * frameSeconds, double(controls_.targetFps));
+            if (realtimeScale_ >= 1.0f)
+                realtimeSpp_ = adaptSamplesPerFrame(realtimeSpp_, traceMs_, double(controls_.targetFps),
+                                                    realtimeOverheadMs_);
         } else if (rendering) {
             overheadSeconds_ +=
                 0.25 *

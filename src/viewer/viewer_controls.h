@@ -28,10 +28,11 @@ struct ViewerControls {
     // Real-time mode (src/realtime/temporal_pipeline.h): each frame traces a few samples per pixel at the
     // current camera, reprojects the previous frames' history and filters it. Off: progressive mode.
     bool realtime = false;
-    int targetFps = 30;          // samples per frame adapt to the budget 1000 / targetFps ms
-    bool temporalReuse = true;   // reproject and blend the history
-    bool realtimeFilter = true;  // the a-trous filter of the history
-    int realtimeView = 0;        // RealtimeView: image, history length, deviation, disocclusion
+    int targetFps = 30;             // samples per frame adapt to the budget 1000 / targetFps ms
+    bool dynamicResolution = true;  // where 1 spp overruns the budget, fewer pixels (realtime/frame_budget.h)
+    bool temporalReuse = true;      // reproject and blend the history
+    bool realtimeFilter = true;     // the a-trous filter of the history
+    int realtimeView = 0;           // RealtimeView: image, history length, deviation, disocclusion
 
     RenderSettings requested() const {
         RenderSettings s = render;

@@ -103,10 +103,17 @@ TEST_F(StudyTest, WritesEveryArtefact) {
         EXPECT_GT(pngSize(out + "/" + plot).first, 0) << plot;
         EXPECT_GT(std::filesystem::file_size(out + "/" + plot), 5000u) << plot;
     }
-    // Columns 1 and 4 spp and the reference, 16 pixels each with 2-pixel gaps; a row per series.
+    // nee's raw series extrapolates to the threshold (MSE ~ 1/N), so the roofline charts it.
+    EXPECT_TRUE(std::filesystem::exists(out + "/cornell_roofline.gp"));
+    EXPECT_GT(pngSize(out + "/cornell_roofline_nee.png").first, 0);
+    // Columns 1 and 4 spp and the reference, 16 pixels each with 2-pixel gaps; a row per series. Labels
+    // at text scale 1 (image/image_grid.h), padding 2: a header of 9 + 2 * 2 = 13 rows, and a label
+    // column as wide as the widest row label, "naive + bilateral", plus 2 * 2. Its width from
+    // stb_easy_font's advances: n 6, a 6, i 3, v 7, e 6 (28), ' ' 6, + 7, ' ' 6 (19), b 6, i 3, l 3,
+    // a 6, t 5, e 6, r 5, a 6, l 3 (43): 90.
     std::pair<int, int> strip = pngSize(out + "/strip_cornell.png");
-    EXPECT_EQ(strip.first, 3 * 16 + 2 * 2);
-    EXPECT_EQ(strip.second, int(levels.size()) * 16 + (int(levels.size()) - 1) * 2);
+    EXPECT_EQ(strip.first, 90 + 2 * 2 + 3 * 16 + 2 * 2);
+    EXPECT_EQ(strip.second, 13 + int(levels.size()) * 16 + (int(levels.size()) - 1) * 2);
     EXPECT_EQ(readImage(out + "/reference_cornell.exr").width, 16);
 
     std::string report = readText(out + "/report.md");
@@ -164,6 +171,16 @@ TEST_F(StudyTest, StudiesSeveralScenesInOneRun) {
     ASSERT_NE(flag, std::string::npos);
     EXPECT_LT(flag, environment);
     EXPECT_NE(report.find("raise --reference-spp", environment), std::string::npos);
+    // The GPU table once, before the scenes; a roofline in each scene's section (its bytes and counts
+    // are the scene's).
+    size_t gpus = report.find("### GPUs");
+    ASSERT_NE(gpus, std::string::npos);
+    EXPECT_LT(gpus, cornell);
+    EXPECT_EQ(report.find("### GPUs", gpus + 1), std::string::npos);
+    size_t cornellRoofline = report.find("### Roofline", cornell);
+    ASSERT_NE(cornellRoofline, std::string::npos);
+    EXPECT_LT(cornellRoofline, environment);
+    EXPECT_NE(report.find("### Roofline", environment), std::string::npos);
 }
 
 TEST_F(StudyTest, RejectsBadRequestsBeforeRendering) {

@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 namespace fp {
 namespace {
 
@@ -34,6 +36,41 @@ TEST(FrameBudget, IgnoresMeaninglessMeasurements) {
     EXPECT_EQ(adaptSamplesPerFrame(5, 0.0, 30.0, 1.0), 5);
     EXPECT_EQ(adaptSamplesPerFrame(5, 10.0, 0.0, 1.0), 5);
     EXPECT_EQ(adaptSamplesPerFrame(0, 10.0, 0.0, 1.0), 1);
+}
+
+// The resolution ladder, at 30 fps (33.3 ms; overrun above 36.7 ms, 90 % is 30 ms, headroom 26.7 ms).
+TEST(ResolutionScale, KeepsTheScaleWithinTheHysteresisBand) {
+    EXPECT_FLOAT_EQ(adaptResolutionScale(1.0f, 34.0, 30.0), 1.0f);  // over, but by less than 10 %
+    EXPECT_FLOAT_EQ(adaptResolutionScale(1.0f, 1.0, 30.0), 1.0f);   // no step above full resolution
+    EXPECT_FLOAT_EQ(adaptResolutionScale(0.5f, 14.0, 30.0), 0.5f);  // twice the pixels: 28 > 26.7
+}
+
+TEST(ResolutionScale, DropsAsManyStepsAsTheOverrunNeeds) {
+    // 40 ms: log2(40 / 30) = 0.42, one step (half the pixels, 20 ms).
+    EXPECT_FLOAT_EQ(adaptResolutionScale(1.0f, 40.0, 30.0), std::sqrt(0.5f));
+    // 100 ms: log2(100 / 30) = 1.74, two steps: a quarter of the pixels, 25 ms.
+    EXPECT_FLOAT_EQ(adaptResolutionScale(1.0f, 100.0, 30.0), 0.5f);
+    // 1000 ms would need six steps (log2 33.3 = 5.06 -> 6): the floor, 1/8 of the side.
+    EXPECT_FLOAT_EQ(adaptResolutionScale(1.0f, 1000.0, 30.0), FrameBudget::minScale);
+    EXPECT_FLOAT_EQ(adaptResolutionScale(FrameBudget::minScale, 1000.0, 30.0), FrameBudget::minScale);
+}
+
+TEST(ResolutionScale, ClimbsOneStepWhenTwiceThePixelsFit) {
+    EXPECT_FLOAT_EQ(adaptResolutionScale(0.5f, 13.0, 30.0), std::sqrt(0.5f));  // 26 < 26.7
+}
+
+TEST(ResolutionScale, SettlesOnAFrameTimeProportionalToThePixels) {
+    // 200 ms at full resolution: log2(200 / 30) = 2.74, three steps (25 ms), then no change: 25 ms is
+    // not an overrun and 50 ms at the next step up leaves no headroom.
+    float scale = 1.0f;
+    for (int frame = 0; frame < 10; ++frame) scale = adaptResolutionScale(scale, 200.0 * scale * scale, 30.0);
+    EXPECT_FLOAT_EQ(scale, std::pow(2.0f, -1.5f));
+}
+
+TEST(ResolutionScale, SnapsToTheLadderAndIgnoresMeaninglessMeasurements) {
+    EXPECT_FLOAT_EQ(adaptResolutionScale(0.6f, 0.0, 30.0), std::sqrt(0.5f));  // -2 log2 0.6 = 1.47 -> 1
+    EXPECT_FLOAT_EQ(adaptResolutionScale(0.5f, 100.0, 0.0), 0.5f);
+    EXPECT_FLOAT_EQ(adaptResolutionScale(std::nanf(""), 10.0, 30.0), 1.0f);
 }
 
 }  // namespace

@@ -126,59 +126,146 @@ bool segmentHitsBox(glm::vec3 a, glm::vec3 b, glm::vec3 lo, glm::vec3 hi) {
     return t0 <= t1;
 }
 
+// The box scenario: camera a frames the wall and box for 4 frames, then b, 3 units to the side, one.
+struct SlidePastTheBox {
+    Camera a, b;
+    static constexpr int size = 64, spp = 2;
+    SlidePastTheBox() {
+        a.eye = {0, 0, 10};
+        a.target = {0, 0, 0};
+        a.fovY = 40.0f;
+        b = a;
+        b.eye.x = b.target.x = 3.0f;
+    }
+    void run(Renderer& renderer, TemporalPipeline& pipeline,
+             RealtimeView lastView = RealtimeView::Image) const {
+        runFrames(renderer, pipeline, a, size, spp, 0, 4);
+        renderer.configure(frameSettings(size, spp, 4), b);
+        renderer.render(spp);
+        pipeline.run(renderer, b, {}, lastView);
+    }
+    // Per pixel of b (its centre ray), worked out from the geometry: 0 the box or wall a did not frame,
+    // 1 wall seen from a too, 2 wall the box hid from a; -1 near an edge between kinds, where a pixel's
+    // jittered samples see both sides.
+    std::vector<int> kinds() const {
+        const glm::vec3 lo(-1, -1, 2), hi(1, 1, 3);
+        CameraFrame f = cameraFrame(b, 1.0f);
+        std::vector<int> kind(size_t(size * size));
+        for (int y = 0; y < size; ++y)
+            for (int x = 0; x < size; ++x) {
+                glm::vec2 ndc(2.0f * (float(x) + 0.5f) / float(size) - 1.0f,
+                              1.0f - 2.0f * (float(y) + 0.5f) / float(size));
+                glm::vec3 d = f.forward + ndc.x * f.right + ndc.y * f.up;
+                glm::vec3 wall = f.eye + d * (-f.eye.z / d.z);
+                bool seenFromA = std::abs(wall.x - a.eye.x) < std::tan(glm::radians(20.0f)) * a.eye.z;
+                int k = segmentHitsBox(f.eye, wall, lo, hi) || !seenFromA ? 0
+                        : segmentHitsBox(a.eye, wall, lo, hi)             ? 2
+                                                                          : 1;
+                kind[size_t(y * size + x)] = k;
+            }
+        std::vector<int> interior(kind.size(), -1);
+        for (int y = 2; y < size - 2; ++y)
+            for (int x = 2; x < size - 2; ++x) {
+                int k = kind[size_t(y * size + x)];
+                bool same = true;
+                for (int dy = -2; dy <= 2; ++dy)
+                    for (int dx = -2; dx <= 2; ++dx) same &= kind[size_t((y + dy) * size + x + dx)] == k;
+                if (same) interior[size_t(y * size + x)] = k;
+            }
+        return interior;
+    }
+};
+
 TEST(TemporalPipeline, HistoryOfWhatTheBoxHidLeavesNoGhost) {
     ensureGlContext();
     Scene scene = wallAndBox();
     Renderer renderer(scene, testShaders());
     TemporalPipeline pipeline(testShaders());
-    Camera a;
-    a.eye = {0, 0, 10};
-    a.target = {0, 0, 0};
-    a.fovY = 40.0f;
-    Camera b = a;
-    b.eye.x = b.target.x = 3.0f;
-    const int size = 64, spp = 2;
-    runFrames(renderer, pipeline, a, size, spp, 0, 4);
-    runFrames(renderer, pipeline, b, size, spp, 4, 1);
+    SlidePastTheBox slide;
+    slide.run(renderer, pipeline);
     std::vector<float> samples = pipeline.historySamples();
-
-    // Per pixel of b (its centre ray): 0 the box or wall a did not frame, 1 wall seen from a too, 2 wall
-    // the box hid from a.
-    const glm::vec3 lo(-1, -1, 2), hi(1, 1, 3);
-    CameraFrame f = cameraFrame(b, 1.0f);
-    std::vector<int> kind(size_t(size * size));
-    for (int y = 0; y < size; ++y)
-        for (int x = 0; x < size; ++x) {
-            glm::vec2 ndc(2.0f * (float(x) + 0.5f) / float(size) - 1.0f,
-                          1.0f - 2.0f * (float(y) + 0.5f) / float(size));
-            glm::vec3 d = f.forward + ndc.x * f.right + ndc.y * f.up;
-            glm::vec3 wall = f.eye + d * (-f.eye.z / d.z);
-            bool seenFromA = std::abs(wall.x - a.eye.x) < std::tan(glm::radians(20.0f)) * a.eye.z;
-            int k = segmentHitsBox(f.eye, wall, lo, hi) || !seenFromA ? 0
-                    : segmentHitsBox(a.eye, wall, lo, hi)             ? 2
-                                                                      : 1;
-            kind[size_t(y * size + x)] = k;
-        }
+    std::vector<int> kind = slide.kinds();
     int revealed = 0, kept = 0;
-    for (int y = 2; y < size - 2; ++y)
-        for (int x = 2; x < size - 2; ++x) {
-            int k = kind[size_t(y * size + x)];
-            bool interior = true;  // away from edges, where a pixel's jittered samples see both sides
-            for (int dy = -2; dy <= 2; ++dy)
-                for (int dx = -2; dx <= 2; ++dx) interior &= kind[size_t((y + dy) * size + x + dx)] == k;
-            if (!interior || k == 0) continue;
-            float n = samples[size_t(y * size + x)];
-            if (k == 2) {
-                ++revealed;
-                EXPECT_EQ(n, float(spp)) << "revealed wall pixel (" << x << ", " << y << ") kept history";
-            } else {
-                ++kept;
-                EXPECT_GT(n, float(spp))
-                    << "wall pixel (" << x << ", " << y << ") seen in both frames lost history";
-            }
+    for (size_t i = 0; i < kind.size(); ++i) {
+        int x = int(i) % slide.size, y = int(i) / slide.size;
+        if (kind[i] == 2) {
+            ++revealed;
+            EXPECT_EQ(samples[i], float(slide.spp))
+                << "revealed wall pixel (" << x << ", " << y << ") kept history";
+        } else if (kind[i] == 1) {
+            ++kept;
+            EXPECT_GT(samples[i], float(slide.spp))
+                << "wall pixel (" << x << ", " << y << ") seen in both frames lost history";
         }
+    }
     EXPECT_GT(revealed, 20);
     EXPECT_GT(kept, 200);
+}
+
+// The classroom's debug views show what they say: the disocclusion mask is 1 exactly on the wall the
+// box hid (and 0 on the wall both cameras saw), the history length is the history's samples over the
+// samples per frame, and the deviation given to the filter, the standard error of the history's mean,
+// falls as 1 / sqrt(frames) when a still camera's history grows.
+TEST(TemporalPipeline, DebugViewsShowDisocclusionHistoryLengthAndDeviation) {
+    ensureGlContext();
+    Scene scene = wallAndBox();
+    Renderer renderer(scene, testShaders());
+    TemporalPipeline pipeline(testShaders());
+    SlidePastTheBox slide;
+    slide.run(renderer, pipeline, RealtimeView::Disocclusion);
+    Image mask = pipeline.result();
+    std::vector<int> kind = slide.kinds();
+    int revealed = 0, kept = 0;
+    for (size_t i = 0; i < kind.size(); ++i) {
+        if (kind[i] == 2) {
+            ++revealed;
+            EXPECT_EQ(mask.pixels[i].r, 1.0f) << i;
+        } else if (kind[i] == 1) {
+            ++kept;
+            EXPECT_EQ(mask.pixels[i].r, 0.0f) << i;
+        }
+    }
+    EXPECT_GT(revealed, 20);
+    EXPECT_GT(kept, 200);
+
+    // A still camera: 4 frames, then 12 more (16).
+    pipeline.reset();
+    auto meanDeviation = [&]() {
+        Image view = pipeline.result();
+        double sum = 0.0;
+        for (const glm::vec3& p : view.pixels) sum += p.r;
+        return sum / double(view.pixels.size());
+    };
+    const int size = 32, spp = 2;
+    runFrames(renderer, pipeline, slide.a, size, spp, 0, 3);
+    renderer.configure(frameSettings(size, spp, 3), slide.a);
+    renderer.render(spp);
+    pipeline.run(renderer, slide.a, {}, RealtimeView::Deviation);
+    double deviation4 = meanDeviation();
+    runFrames(renderer, pipeline, slide.a, size, spp, 4, 11);
+    renderer.configure(frameSettings(size, spp, 15), slide.a);
+    renderer.render(spp);
+    pipeline.run(renderer, slide.a, {}, RealtimeView::HistoryLength);
+    Image length = pipeline.result();
+    std::vector<float> samples = pipeline.historySamples();
+    for (size_t i = 0; i < samples.size(); ++i) {
+        EXPECT_EQ(samples[i], float(16 * spp)) << i;
+        EXPECT_EQ(length.pixels[i].r, 16.0f) << i;
+    }
+    renderer.configure(frameSettings(size, spp, 16), slide.a);
+    renderer.render(spp);
+    pipeline.run(renderer, slide.a, {}, RealtimeView::Deviation);
+    // 17 frames against 4: the variance of the mean falls as 4 / 17. The view shows the square root of an
+    // unbiased variance estimate, whose mean is c4(n) times the true deviation (c4(n) = sqrt(2 / (n - 1))
+    // Gamma(n / 2) / Gamma((n - 1) / 2), Gaussian frames): sqrt(4 / 17) c4(17) / c4(4) = 0.485 x 1.068 =
+    // 0.518. Without Bessel's correction (dividing by n, not n - 1) it is 0.58.
+    auto c4 = [](double n) {
+        return std::sqrt(2.0 / (n - 1.0)) * std::tgamma(n / 2.0) / std::tgamma((n - 1.0) / 2.0);
+    };
+    double expected = std::sqrt(4.0 / 17.0) * c4(17.0) / c4(4.0);
+    double ratio = meanDeviation() / deviation4;
+    EXPECT_GT(deviation4, 0.0);
+    EXPECT_NEAR(ratio, expected, 0.04) << "deviation at 4 frames " << deviation4;
 }
 
 }  // namespace

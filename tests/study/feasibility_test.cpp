@@ -42,11 +42,34 @@ TEST(Feasibility, FirstGpuAndTrendYear) {
     YearAnswer b = yearReached(1e15, 0.1);
     EXPECT_FALSE(b.firstGpuYear.has_value());
     EXPECT_GT(b.extrapolatedYear, 2025.0);
-    // The fit is monotonic and doubles in a few years (5 to 105 TFLOPS in 11 years: ~2.5).
-    EXPECT_LT(yearOfPeak(10.0), yearOfPeak(20.0));
-    EXPECT_NEAR(yearOfPeak(20.0) - yearOfPeak(10.0), doublingYears(), 1e-9);
-    EXPECT_GT(doublingYears(), 1.5);
-    EXPECT_LT(doublingYears(), 4.0);
+    // Within one class: 8 TFLOPS at 100% among the flagships is the GTX 1080 Ti (11.3; the GTX 980 Ti
+    // has 6.05), a year after the GTX 1080 of the x80 line.
+    YearAnswer c = yearReached(8e12, 1.0, GpuClass::Flagship);
+    ASSERT_TRUE(c.firstGpuYear.has_value());
+    EXPECT_EQ(*c.firstGpuYear, 2017);
+    EXPECT_EQ(c.firstGpuName, "GTX 1080 Ti");
+    // One trend line per class (the mixed line is gone): each monotonic, doubling in a few years (x80:
+    // 5.0 to 56 TFLOPS in 11 years, ~3.1; flagship: 6.05 to 105 in 10, ~2.4).
+    for (GpuClass k : {GpuClass::X80, GpuClass::Flagship}) {
+        EXPECT_LT(yearOfPeak(10.0, k), yearOfPeak(20.0, k));
+        EXPECT_NEAR(yearOfPeak(20.0, k) - yearOfPeak(10.0, k), doublingYears(k), 1e-9);
+        EXPECT_GT(doublingYears(k), 1.5);
+        EXPECT_LT(doublingYears(k), 4.0);
+    }
+    EXPECT_GT(doublingYears(GpuClass::X80), doublingYears(GpuClass::Flagship));
+}
+
+TEST(Feasibility, Log2FitOfTwoPoints) {
+    // (2016, 8) and (2020, 32): log2 goes 3 -> 5 in 4 years, slope 0.5, doubling every 2 years;
+    // log2(64) = 6 is reached 2 years after 5: 2022; 16 halfway: 2018.
+    Log2Fit fit = fitLog2({{2016.0, 8.0}, {2020.0, 32.0}});
+    EXPECT_NEAR(fit.slope, 0.5, 1e-12);
+    EXPECT_NEAR(fit.doublingYears(), 2.0, 1e-9);
+    EXPECT_NEAR(fit.yearOf(64.0), 2022.0, 1e-9);
+    EXPECT_NEAR(fit.yearOf(16.0), 2018.0, 1e-9);
+    EXPECT_THROW(fitLog2({{2016.0, 8.0}}), Error);
+    EXPECT_THROW(fitLog2({{2016.0, 8.0}, {2016.0, 16.0}}), Error);
+    EXPECT_THROW(fitLog2({{2016.0, 8.0}, {2020.0, 0.0}}), Error);
 }
 
 TEST(CpuPeak, FollowsTheStatedFormula) {

@@ -89,9 +89,10 @@ TEST(Thresholds, CheapestAnswerCarriesTheBandToTheYear) {
     // Two raw combinations at 10% efficiency. 1080p60 is 1920 x 1080 x 60 = 124,416,000 paths per second
     // per spp. nee: relMSE = 0.1 / spp reaches 0.01 at 10 spp, x 1000 FLOPs = 12.4 TFLOPS of peak;
     // bdpt: relMSE = 0.04 / spp reaches it at 4 spp, x 2000 FLOPs = 9.95 TFLOPS: bdpt is cheaper. Its
-    // peak at 4 spp, 9.95 TFLOPS, is first reached by the RTX 2080 (10.1; the GTX 1080 has 8.9): 2018.
-    // At double the threshold, 2 spp: 4.98 TFLOPS, the GTX 980 (5.0): 2014. At half, 8 spp: 19.9
-    // TFLOPS, the RTX 3080 (29.8): 2020.
+    // peak at 4 spp, 9.95 TFLOPS, is first reached, over both classes of gpus.h, by the flagship GTX
+    // 1080 Ti (3584 x 2 x 1582 MHz = 11.3; the GTX 1080 has 8.9, the GTX 980 Ti 6.1): 2017. At double
+    // the threshold, 2 spp: 4.977 TFLOPS, the GTX 980 (2048 x 2 x 1216 MHz = 4.981): 2014. At half,
+    // 8 spp: 19.9 TFLOPS, the RTX 3080 (29.8; the RTX 2080 Ti has 13.4): 2020.
     std::vector<StudyRow> rows = seriesOf(
         "nee", "none", [](int n) { return 0.1 / n; }, &StudyRow::relMse);
     std::vector<StudyRow> bdpt = seriesOf(
@@ -109,10 +110,10 @@ TEST(Thresholds, CheapestAnswerCarriesTheBandToTheYear) {
     EXPECT_EQ(a.integrator, "bdpt");
     EXPECT_DOUBLE_EQ(a.band.atThreshold.spp, 4.0);
     ASSERT_TRUE(a.year && a.year->firstGpuYear && a.lenientYear && a.strictYear);
-    EXPECT_EQ(*a.year->firstGpuYear, 2018);
+    EXPECT_EQ(*a.year->firstGpuYear, 2017);
     EXPECT_EQ(*a.lenientYear->firstGpuYear, 2014);
     EXPECT_EQ(*a.strictYear->firstGpuYear, 2020);
-    EXPECT_EQ(yearBandText(a), "2018 [2014, 2020]");
+    EXPECT_EQ(yearBandText(a), "2017 [2014, 2020]");
     // No denoised combination at all: no answer.
     EXPECT_TRUE(cheapestAnswer({nee, b}, rows, relMseMetric(), 0.01, true).integrator.empty());
     // FLIP was never measured here (all 0 = perfect): every combination meets it at 1 spp, so nee, whose

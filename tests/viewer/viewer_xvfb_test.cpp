@@ -249,7 +249,8 @@ TEST_F(ViewerXvfb, TakesTheSceneFilesDefaultsAndFlagsOverrideThem) {
 }
 
 // Real-time mode (--realtime): a still camera's frames accumulate into the pipeline's history, so its
-// image must approach a progressive render's, frame after frame. The tolerance is derived, not tuned:
+// image must approach a progressive render's, frame after frame (at the window's resolution: dynamic
+// resolution, which would drop it on a loaded machine, is off). The tolerance is derived, not tuned:
 // - noise: two independent 1-spp screenshots give the per-pixel sample variance s2 (half the mean squared
 //   difference), so the image mean of k spp over P pixels has standard error sqrt(s2 / (k P)); the
 //   real-time image holds at least one sample per pixel per frame (the filter only averages, which lowers
@@ -279,7 +280,8 @@ TEST_F(ViewerXvfb, RealtimeModeConvergesToTheProgressiveImage) {
     }
     double previousError = 1e30;
     for (int frames : {10, 100}) {
-        Image rt = shot("--realtime --fps 30 --seed 3 --frames " + std::to_string(frames));
+        Image rt =
+            shot("--realtime --fps 30 --dynamic-resolution off --seed 3 --frames " + std::to_string(frames));
         ASSERT_EQ(rt.pixels.size(), ref.pixels.size());
         double mean = 0.0;
         for (const glm::vec3& p : rt.pixels) {
@@ -309,6 +311,27 @@ TEST_F(ViewerXvfb, RealtimeModeRunsWithThePanelAndFillsTheFrameBudget) {
     int spp = std::atoi(r.output.c_str() + at + 11);
     EXPECT_GT(spp, 1) << r.output;
     EXPECT_EQ(readPng(path("w.png")).width, 160);
+}
+
+// Dynamic resolution: a budget that one sample per pixel cannot meet (240 fps: 4.2 ms, while llvmpipe
+// takes several ms to trace 160x120 and more to filter it) makes real-time mode render fewer pixels;
+// switched off, the image keeps the window's size whatever the frame time.
+TEST_F(ViewerXvfb, RealtimeModeDropsPixelsWhereOneSampleOverrunsTheBudget) {
+    auto size = [&](const std::string& flags) {
+        CliRun r = view("--size 160x120 --no-ui --realtime --fps 240 --frames 6 " + flags);
+        EXPECT_EQ(r.exitCode, 0) << r.output;
+        size_t at = r.output.find("real-time: ");
+        EXPECT_NE(at, std::string::npos) << r.output;
+        at = r.output.find(" at ", at);
+        EXPECT_NE(at, std::string::npos) << r.output;
+        int w = 0, h = 0;
+        if (at != std::string::npos) std::sscanf(r.output.c_str() + at, " at %dx%d", &w, &h);
+        return glm::ivec2(w, h);
+    };
+    glm::ivec2 dynamic = size(""), fixed = size("--dynamic-resolution off");
+    EXPECT_LT(dynamic.x, 160);
+    EXPECT_LT(dynamic.y, 120);
+    EXPECT_EQ(fixed, glm::ivec2(160, 120));
 }
 
 }  // namespace
