@@ -55,6 +55,9 @@ TEST(Docs, TheReadmeListsEveryCompareOption) {
 TEST(Docs, TheReadmeListsEveryRealtimeOption) {
     expectReadmeListsOptionsOf("realtime", 25);
 }
+TEST(Docs, TheReadmeListsEveryStudyOption) {
+    expectReadmeListsOptionsOf("study", 20);
+}
 
 }  // namespace
 }  // namespace fp
