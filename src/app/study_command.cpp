@@ -17,6 +17,7 @@
 #include "image/file_io.h"
 #include "image/image_stats.h"
 #include "render/renderer.h"
+#include "realtime/practice_run.h"
 #include "request/render_request.h"
 #include "study/cpu_peak.h"
 #include "study/denoisers.h"
@@ -54,6 +55,11 @@ std::vector<OptionGroup> studyOptions() {
             "the Weber fraction; report.md gives the sources)"},
            {"--runs", "", "R", "timed runs of each sweep; times are medians (default 1)"},
            {"--count-spp", "", "N", "samples per pixel of the counting render (default 4)"},
+           {"--practice-frames", "", "N",
+            "frames of each real-time run that the report's Practice section measures: the real-time "
+            "pipeline against brute force, on a still and an orbiting camera (default 30; 0 skips it)"},
+           {"--practice-reference-spp", "", "K",
+            "samples of each practice frame's reference (default 256)"},
            {"--no-plots", "", "", "skip gnuplot (the CSV, strip and report are still written)"},
            {"--quiet", "", "", "no progress lines"}}}},
         kStudyOptions, kStudyDefaults);
@@ -130,6 +136,8 @@ int studyCommand(const std::vector<std::string>& argv) {
     const int referenceSpp = args.integer("--reference-spp", 1, 1 << 24).value_or(4096);
     const int runs = args.integer("--runs", 1, 100).value_or(1);
     const int countSpp = args.integer("--count-spp", 1, 1 << 16).value_or(4);
+    const int practiceFrames = args.integer("--practice-frames", 0, 10000).value_or(30);
+    const int practiceReferenceSpp = args.integer("--practice-reference-spp", 1, 1 << 20).value_or(256);
     const double threshold = args.number("--threshold").value_or(float(study::kDefaultRelMseThreshold));
     if (!(threshold > 0.0)) throw Error("--threshold must be a positive relative MSE");
     const std::string out = args.text("--out").value_or("study");
@@ -233,6 +241,20 @@ int studyCommand(const std::vector<std::string>& argv) {
     report.plots = plots;
     report.lightEntries = int(renderer.stats().emitters + renderer.stats().punctualLights);
     report.sceneBytes = double(renderer.stats().gpuBytes);
+    if (practiceFrames > 0) {
+        PracticeOptions practice;
+        practice.settings = settings;
+        practice.display = request.display();
+        practice.camera = camera;
+        practice.sceneKey = request.scenePath().value_or("built-in Cornell box") + ", environment " +
+                            args.text("--environment").value_or("the scene's");
+        practice.frames = practiceFrames;
+        practice.referenceSpp = practiceReferenceSpp;
+        practice.outDir = (std::filesystem::path(out) / "practice").string();
+        if (!quiet) practice.progress = say;
+        report.practice = measurePractice(renderer, practice);
+        report.practice->outDir = "practice";  // as report.md links it
+    }
     if (plots) study::drawRooflinePlots(out, report);
     std::string md = study::reportMarkdown(report);
     writeFileAtomically((std::filesystem::path(out) / "report.md").string(),

@@ -10,6 +10,7 @@
 #include "study/metrics.h"
 #include "study/plots.h"
 #include "study/roofline_report.h"
+#include "study/seed_claim.h"
 #include "study/spp_needed.h"
 
 namespace fp::study {
@@ -263,6 +264,8 @@ std::string reportMarkdown(const ReportInput& in) {
         "ray, "
         "and glossy or glass surfaces cost more per interaction, so they need more FLOPs per path.\n\n";
     md += rooflineMarkdown(in);
+    if (in.practice) md += practiceMarkdown(*in.practice);
+    md += seedClaimMarkdown(in);
     return md;
 }
 
