@@ -16,8 +16,8 @@
 #include "gl/context.h"
 #include "image/file_io.h"
 #include "image/image_stats.h"
-#include "render/renderer.h"
 #include "realtime/practice_run.h"
+#include "render/renderer.h"
 #include "request/render_request.h"
 #include "study/cpu_peak.h"
 #include "study/denoisers.h"
@@ -57,9 +57,8 @@ std::vector<OptionGroup> studyOptions() {
            {"--count-spp", "", "N", "samples per pixel of the counting render (default 4)"},
            {"--practice-frames", "", "N",
             "frames of each real-time run that the report's Practice section measures: the real-time "
-            "pipeline against brute force, on a still and an orbiting camera (default 30; 0 skips it)"},
-           {"--practice-reference-spp", "", "K",
-            "samples of each practice frame's reference (default 256)"},
+            "pipeline against brute force, on a still and an orbiting camera (default 20; 0 skips it)"},
+           {"--practice-reference-spp", "", "K", "samples of each practice frame's reference (default 128)"},
            {"--no-plots", "", "", "skip gnuplot (the CSV, strip and report are still written)"},
            {"--quiet", "", "", "no progress lines"}}}},
         kStudyOptions, kStudyDefaults);
@@ -136,8 +135,8 @@ int studyCommand(const std::vector<std::string>& argv) {
     const int referenceSpp = args.integer("--reference-spp", 1, 1 << 24).value_or(4096);
     const int runs = args.integer("--runs", 1, 100).value_or(1);
     const int countSpp = args.integer("--count-spp", 1, 1 << 16).value_or(4);
-    const int practiceFrames = args.integer("--practice-frames", 0, 10000).value_or(30);
-    const int practiceReferenceSpp = args.integer("--practice-reference-spp", 1, 1 << 20).value_or(256);
+    const int practiceFrames = args.integer("--practice-frames", 0, 10000).value_or(20);
+    const int practiceReferenceSpp = args.integer("--practice-reference-spp", 1, 1 << 20).value_or(128);
     const double threshold = args.number("--threshold").value_or(float(study::kDefaultRelMseThreshold));
     if (!(threshold > 0.0)) throw Error("--threshold must be a positive relative MSE");
     const std::string out = args.text("--out").value_or("study");

@@ -72,7 +72,8 @@ study::PracticeInput measurePractice(Renderer& renderer, const PracticeOptions& 
         const std::filesystem::path dir = std::filesystem::path(o.outDir) / camera;
         const std::string references = (dir / "references").string();
         std::filesystem::remove_all(references);
-        RealtimeRun base(orbitPath(o.camera, still ? 0.0 : o.orbitDegreesPerSecond, double(o.frames) / o.fps));
+        RealtimeRun base(
+            orbitPath(o.camera, still ? 0.0 : o.orbitDegreesPerSecond, double(o.frames) / o.fps));
         base.frames = o.frames;
         base.fps = o.fps;
         base.referenceSpp = o.referenceSpp;
@@ -91,7 +92,8 @@ study::PracticeInput measurePractice(Renderer& renderer, const PracticeOptions& 
         study::PracticeRun pipeline = runOnce(renderer, base, camera, study::PracticeMethod::Pipeline, 1,
                                               (dir / "pipeline_1spp").string());
         const int equalSpp = study::equalTimeSpp(pipeline.msPerFrame, one.msPerFrame);
-        say("practice, " + camera + " camera: brute force at " + std::to_string(equalSpp) + " spp (equal time)");
+        say("practice, " + camera + " camera: brute force at " + std::to_string(equalSpp) +
+            " spp (equal time)");
         study::PracticeRun equal =
             runOnce(renderer, base, camera, study::PracticeMethod::BruteForce, equalSpp,
                     (dir / ("brute_force_equal_time_" + std::to_string(equalSpp) + "spp")).string());
@@ -101,7 +103,8 @@ study::PracticeInput measurePractice(Renderer& renderer, const PracticeOptions& 
         input.runs.push_back(equal);
         if (still) continue;
         // What the pipeline needs per frame to get under the FLIP threshold while the camera moves.
-        for (int spp = 2; pipeline.judgedFlip() > o.flipThreshold && spp <= study::kPracticeMaxSpp; spp *= 2) {
+        for (int spp = 2; pipeline.judgedFlip() > o.flipThreshold && spp <= study::kPracticeMaxSpp;
+             spp *= 2) {
             say("practice, moving camera: the pipeline at " + std::to_string(spp) + " spp");
             pipeline = runOnce(renderer, base, camera, study::PracticeMethod::Pipeline, spp,
                                (dir / ("pipeline_" + std::to_string(spp) + "spp")).string());

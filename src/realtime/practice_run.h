@@ -18,8 +18,8 @@ struct PracticeOptions {
     DisplaySettings display;
     Camera camera;         // the still camera, and where the orbit starts
     std::string sceneKey;  // names the scene in the references' key
-    int frames = 30;
-    int referenceSpp = 256;
+    int frames = 20;
+    int referenceSpp = 128;  // the study's defaults (--practice-frames, --practice-reference-spp)
     double fps = 30.0, orbitDegreesPerSecond = 10.0;  // `fragpath realtime`'s defaults
     double flipThreshold = study::kPracticeFlipThresholdStandIn;
     bool flipThresholdIsStandIn = true;

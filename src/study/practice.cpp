@@ -84,9 +84,10 @@ PracticeRun summarisePractice(const std::string& camera, PracticeMethod method, 
 
 int equalTimeSpp(double pipelineMs, double msPerSample) {
     if (!(std::isfinite(pipelineMs) && pipelineMs > 0.0 && std::isfinite(msPerSample) && msPerSample > 0.0))
-        throw Error(formatText("equal-time samples: the times must be finite and positive (pipeline %g ms, "
-                               "%g ms per sample)",
-                               pipelineMs, msPerSample));
+        throw Error(
+            formatText("equal-time samples: the times must be finite and positive (pipeline %g ms, "
+                       "%g ms per sample)",
+                       pipelineMs, msPerSample));
     // 1e-9 keeps an exact ratio (3 ms / 1 ms) from flooring to 2 by rounding.
     return std::max(1, int(std::floor(pipelineMs / msPerSample + 1e-9)));
 }
@@ -117,7 +118,8 @@ std::string practiceMarkdown(const PracticeInput& in) {
         in.frames, in.width, in.height, in.fps, in.integrator.c_str(), in.referenceSpp,
         in.orbitDegreesPerSecond);
     md += formatText(
-        "| camera | method | spp per frame | ms per frame (median) | mean FLIP | FLIP, frames %d+ | flicker | "
+        "| camera | method | spp per frame | ms per frame (median) | mean FLIP | FLIP, frames %d+ | flicker "
+        "| "
         "mean history (frames) |\n|---|---|---|---|---|---|---|---|\n",
         kPracticeSteadyFrame);
     for (const PracticeRun& r : in.runs)
@@ -139,12 +141,12 @@ std::string practiceMarkdown(const PracticeInput& in) {
         if (!pipeline || !one || !equal) continue;
         bool beatsOne = pipeline->judgedFlip() < one->judgedFlip();
         bool beatsEqual = pipeline->judgedFlip() < equal->judgedFlip();
-        md += formatText("- %s camera, FLIP%s: the pipeline %s brute force at 1 spp (%s) and %s it at equal "
-                         "time (%s).\n",
-                         camera, pipeline->steadyFlip ? formatText(" from frame %d", kPracticeSteadyFrame).c_str()
-                                                      : "",
-                         beatsOne ? "beats" : "does not beat", against(*pipeline, *one).c_str(),
-                         beatsEqual ? "beats" : "does not beat", against(*pipeline, *equal).c_str());
+        md += formatText(
+            "- %s camera, FLIP%s: the pipeline %s brute force at 1 spp (%s) and %s it at equal "
+            "time (%s).\n",
+            camera, pipeline->steadyFlip ? formatText(" from frame %d", kPracticeSteadyFrame).c_str() : "",
+            beatsOne ? "beats" : "does not beat", against(*pipeline, *one).c_str(),
+            beatsEqual ? "beats" : "does not beat", against(*pipeline, *equal).c_str());
     }
     std::optional<int> reaching = practiceSppReachingThreshold(in);
     md += formatText("- FLIP threshold: %.3g%s. ", in.flipThreshold,
@@ -153,11 +155,13 @@ std::string practiceMarkdown(const PracticeInput& in) {
                            "study's own FLIP threshold is wired in)"
                          : "");
     if (reaching)
-        md += formatText("The pipeline on the moving camera gets under it at %d spp per frame.\n\n", *reaching);
+        md +=
+            formatText("The pipeline on the moving camera gets under it at %d spp per frame.\n\n", *reaching);
     else
-        md += formatText("The pipeline on the moving camera does not get under it at up to %d spp per "
-                         "frame.\n\n",
-                         kPracticeMaxSpp);
+        md += formatText(
+            "The pipeline on the moving camera does not get under it at up to %d spp per "
+            "frame.\n\n",
+            kPracticeMaxSpp);
     md +=
         "Caveats: one scene and one camera path; the references are converged only to their own noise, "
         "which adds to every FLIP above alike; llvmpipe's timings decide the equal-time samples, and a GPU "

@@ -26,9 +26,9 @@ const char* practiceMethodName(PracticeMethod m);  // "reuse + a-trous", "brute 
 
 // One frame's figures, as the run measured them.
 struct PracticeFrame {
-    double ms = 0.0;       // trace + temporal + filter, to glFinish
-    double flip = 0.0;     // mean HDR-FLIP against the frame's reference
-    double history = 0.0;  // mean history per pixel, in frames
+    double ms = 0.0;                // trace + temporal + filter, to glFinish
+    double flip = 0.0;              // mean HDR-FLIP against the frame's reference
+    double history = 0.0;           // mean history per pixel, in frames
     std::optional<double> flicker;  // from the second frame on
 };
 
@@ -38,11 +38,11 @@ struct PracticeRun {
     PracticeMethod method = PracticeMethod::Pipeline;
     bool equalTime = false;  // brute force at the samples that cost the pipeline's time
     int frames = 0, spp = 0;
-    double msPerFrame = 0.0;      // median over the frames (robust to the first frame's compilation)
-    double meanFlip = 0.0;        // over all frames
+    double msPerFrame = 0.0;           // median over the frames (robust to the first frame's compilation)
+    double meanFlip = 0.0;             // over all frames
     std::optional<double> steadyFlip;  // over frames kPracticeSteadyFrame and later, if there are any
-    double flicker = 0.0;         // mean over frames 2.. (0 with one frame)
-    double meanHistory = 0.0;     // mean over frames of the mean history per pixel, in frames
+    double flicker = 0.0;              // mean over frames 2.. (0 with one frame)
+    double meanHistory = 0.0;          // mean over frames of the mean history per pixel, in frames
     // The steady figure where there is one, else the mean over all frames.
     double judgedFlip() const { return steadyFlip.value_or(meanFlip); }
 };
@@ -62,9 +62,9 @@ struct PracticeInput {
     std::string integrator;  // of every run and reference
     double flipThreshold = kPracticeFlipThresholdStandIn;
     bool flipThresholdIsStandIn = true;  // false once the study's own threshold is passed in
-    std::vector<PracticeRun> runs;  // still then moving: brute force 1 spp, pipeline 1 spp, equal time;
-                                    // then the pipeline on the moving camera at 2, 4, ... if needed
-    std::string outDir;             // where the runs' frames.csv and strips are, relative to report.md
+    std::vector<PracticeRun> runs;       // still then moving: brute force 1 spp, pipeline 1 spp, equal time;
+                                         // then the pipeline on the moving camera at 2, 4, ... if needed
+    std::string outDir;                  // where the runs' frames.csv and strips are, relative to report.md
 };
 
 // The pipeline's smallest samples per frame on the moving camera whose judged FLIP is at most the

@@ -23,6 +23,8 @@ SeedAnswer answerFor(const ReportInput& in, const std::string& integrator, const
     a.flagship = firstReaching(GpuClass::Flagship, a.pathsPerSecond, w);
     a.x80Measured = firstReaching(GpuClass::X80, a.pathsPerSecond, w, efficiency);
     a.flagshipMeasured = firstReaching(GpuClass::Flagship, a.pathsPerSecond, w, efficiency);
+    for (const Gpu& g : gpuTable())
+        if (g.name == a.gpu()) a.binding = limitName(rooflineLimits(g, w).binding());
     return a;
 }
 
@@ -34,12 +36,17 @@ std::string gpuText(const ClassAnswer& a) {
 std::string answerText(const SeedAnswer& a) {
     return formatText(
         "%.3g giga paths per second. First x80 card: %s; first flagship: %s. With FP32 at the %.2f%% "
-        "efficiency measured here: %s and %s. By %d: **%s**",
+        "efficiency measured here: %s and %s. By %d: **%s**%s",
         a.pathsPerSecond / 1e9, gpuText(a.x80).c_str(), gpuText(a.flagship).c_str(), 100 * a.efficiency,
         gpuText(a.x80Measured).c_str(), gpuText(a.flagshipMeasured).c_str(), kHorizon,
         a.heldBy(kHorizon) ? formatText("yes, the %s of %d", a.gpu().c_str(), *a.year()).c_str()
         : a.year()         ? formatText("no, not before the %s of %d", a.gpu().c_str(), *a.year()).c_str()
-                           : "no GPU of the table reaches it");
+                           : "no GPU of the table reaches it",
+        a.binding.empty() ? ""
+        : a.binding == "memory"
+            ? " (there the memory limit binds, with every read counted as DRAM traffic: for a scene that "
+              "fits in the caches, a pessimistic bound)"
+            : formatText(" (there the %s limit binds)", a.binding.c_str()).c_str());
 }
 
 }  // namespace
@@ -88,8 +95,9 @@ std::string seedClaimMarkdown(const ReportInput& in) {
         kSeedHorizonYears, kSeedYear, kHorizon);
 
     std::optional<SeedAnswer> converged = convergedAnswer(in);
-    md += "**(a) Every frame converged on its own** (this study's criterion: each frame, alone, under the "
-          "threshold). ";
+    md +=
+        "**(a) Every frame converged on its own** (this study's criterion: each frame, alone, under the "
+        "threshold). ";
     if (converged)
         md += formatText("The earliest: %s%s at %.3g spp per frame, ", converged->integrator.c_str(),
                          converged->denoiser == "none" ? "" : (" + " + converged->denoiser).c_str(),
@@ -101,14 +109,16 @@ std::string seedClaimMarkdown(const ReportInput& in) {
     // (b): 1 spp per frame, as practice traces; if the pipeline measured here misses the FLIP threshold
     // at 1 spp, also the smallest spp at which it gets under it.
     std::string integrator = in.practice ? in.practice->integrator : "nee";
-    md += "**(b) As practice does it** (few samples per frame, the history of earlier frames reprojected, "
-          "and a denoiser: SVGF, Schied et al. 2017; A-SVGF, Schied, Peters and Dachsbacher 2018). ";
+    md +=
+        "**(b) As practice does it** (few samples per frame, the history of earlier frames reprojected, "
+        "and a denoiser: SVGF, Schied et al. 2017; A-SVGF, Schied, Peters and Dachsbacher 2018). ";
     std::optional<SeedAnswer> one = practiceAnswer(in, integrator, 1.0);
     std::optional<SeedAnswer> reached;
     // 0: the pipeline did not get under the FLIP threshold (or was not measured).
     const int reachingSpp = in.practice ? practiceSppReachingThreshold(*in.practice).value_or(0) : 0;
     if (!one) {
-        md += "This study has no path counts of " + integrator + ", the practice run's integrator, so there is "
+        md += "This study has no path counts of " + integrator +
+              ", the practice run's integrator, so there is "
               "no answer under this criterion.\n\n";
     } else {
         md += formatText("At 1 spp per frame of %s, ", integrator.c_str()) + answerText(*one) + ".";
@@ -120,24 +130,28 @@ std::string seedClaimMarkdown(const ReportInput& in) {
                 md += formatText(
                     " Measured above: at 1 spp the pipeline's FLIP on the moving camera is %.3f, %s the FLIP "
                     "threshold %.3g%s.",
-                    pipeline->judgedFlip(), pipeline->judgedFlip() <= in.practice->flipThreshold ? "under" : "over",
+                    pipeline->judgedFlip(),
+                    pipeline->judgedFlip() <= in.practice->flipThreshold ? "under" : "over",
                     in.practice->flipThreshold, in.practice->flipThresholdIsStandIn ? " (a stand-in)" : "");
             if (reachingSpp > 1) {
                 reached = practiceAnswer(in, integrator, double(reachingSpp));
                 md += formatText(" It gets under it at %d spp per frame: ", reachingSpp) +
                       answerText(*reached) + ".";
             } else if (reachingSpp == 0) {
-                md += formatText(" It does not get under it at up to %d spp per frame, so by the FLIP "
-                                 "threshold this pipeline has no answer here; the answer at 1 spp stands for "
-                                 "what practice ships.",
-                                 kPracticeMaxSpp);
+                md += formatText(
+                    " It does not get under it at up to %d spp per frame, so by the FLIP "
+                    "threshold this pipeline has no answer here; the answer at 1 spp stands for "
+                    "what practice ships.",
+                    kPracticeMaxSpp);
             }
         } else {
-            md += " (The practice measurement was skipped, --practice-frames 0: the 1 spp is practice's "
-                  "choice, not a measured quality.)";
+            md +=
+                " (The practice measurement was skipped, --practice-frames 0: the 1 spp is practice's "
+                "choice, not a measured quality.)";
         }
-        md += " The reprojection and the filter cost a few full-screen passes per frame on top of the paths; "
-              "the roofline leaves them out.\n\n";
+        md +=
+            " The reprojection and the filter cost a few full-screen passes per frame on top of the paths; "
+            "the roofline leaves them out.\n\n";
     }
 
     md +=
@@ -154,7 +168,8 @@ std::string seedClaimMarkdown(const ReportInput& in) {
     md += converged ? (converged->heldBy(kHorizon) ? "yes" : "no") : "no answer";
     md += "**; under (b): **";
     md += one ? (one->heldBy(kHorizon) ? "yes" : "no") : "no answer";
-    if (reached) md += formatText(" at 1 spp, %s at %d spp", reached->heldBy(kHorizon) ? "yes" : "no", reachingSpp);
+    if (reached)
+        md += formatText(" at 1 spp, %s at %d spp", reached->heldBy(kHorizon) ? "yes" : "no", reachingSpp);
     md += "**.\n\n";
     return md;
 }

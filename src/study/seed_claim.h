@@ -20,6 +20,7 @@ struct SeedAnswer {
     std::string integrator, denoiser;
     double spp = 0.0, pathsPerSecond = 0.0, efficiency = 1.0;
     ClassAnswer x80, flagship, x80Measured, flagshipMeasured;
+    std::string binding;  // the limit that binds on gpu(), at 100% of every limit (roofline.h limitName)
     // The earlier of the two classes' first GPUs at 100% of every limit.
     std::optional<int> year() const;
     std::string gpu() const;

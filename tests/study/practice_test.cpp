@@ -55,7 +55,8 @@ TEST(Practice, SummaryTakesTheMedianTimeTheMeansAndTheSteadyFlipFromFrameTen) {
     EXPECT_THROW(summarisePractice("still", PracticeMethod::Pipeline, 1, frames), Error);
 }
 
-PracticeRun run(const std::string& camera, PracticeMethod method, int spp, double flip, bool equalTime = false) {
+PracticeRun run(const std::string& camera, PracticeMethod method, int spp, double flip,
+                bool equalTime = false) {
     PracticeRun r;
     r.camera = camera;
     r.method = method;
@@ -96,20 +97,23 @@ TEST(Practice, SectionTabulatesEveryRunAndSaysWhichWins) {
     std::string md = practiceMarkdown(in);
     EXPECT_NE(md.find("## Practice: temporal reuse and a filter against brute force"), std::string::npos);
     // The still pipeline row: 1 spp, 10 ms, mean 0.13, steady 0.08, flicker 0, history 0.
-    EXPECT_NE(md.find("| still | reuse + a-trous | 1 | 10.0 | 0.1300 | 0.0800 | 0.0000 | 0.0 |"), std::string::npos)
+    EXPECT_NE(md.find("| still | reuse + a-trous | 1 | 10.0 | 0.1300 | 0.0800 | 0.0000 | 0.0 |"),
+              std::string::npos)
         << md;
     EXPECT_NE(md.find("| moving | brute force, equal time | 3 | 30.0 | 0.1900 | 0.1400 |"), std::string::npos)
         << md;
     // Still: 0.08 against 0.40 is 0.20x; against 0.30, 0.27x. Moving: 0.15 / 0.30 = 0.50x (beats);
     // 0.15 / 0.14 = 1.07x (does not beat).
-    EXPECT_NE(md.find("still camera, FLIP from frame 10: the pipeline beats brute force at 1 spp (0.080 against "
-                      "0.400 at 1 spp (0.20x)) and beats it at equal time (0.080 against 0.300 at 3 spp (0.27x))"),
-              std::string::npos)
+    EXPECT_NE(
+        md.find("still camera, FLIP from frame 10: the pipeline beats brute force at 1 spp (0.080 against "
+                "0.400 at 1 spp (0.20x)) and beats it at equal time (0.080 against 0.300 at 3 spp (0.27x))"),
+        std::string::npos)
         << md;
-    EXPECT_NE(md.find("moving camera, FLIP from frame 10: the pipeline beats brute force at 1 spp (0.150 against "
-                      "0.300 at 1 spp (0.50x)) and does not beat it at equal time (0.150 against 0.140 at 3 spp "
-                      "(1.07x))"),
-              std::string::npos)
+    EXPECT_NE(
+        md.find("moving camera, FLIP from frame 10: the pipeline beats brute force at 1 spp (0.150 against "
+                "0.300 at 1 spp (0.50x)) and does not beat it at equal time (0.150 against 0.140 at 3 spp "
+                "(1.07x))"),
+        std::string::npos)
         << md;
     EXPECT_NE(md.find("gets under it at 4 spp per frame"), std::string::npos);
     in.runs.pop_back();  // without the 4-spp run nothing reaches 0.1
@@ -164,6 +168,7 @@ TEST(SeedClaim, AnswersBothCriteriaWithTheFirstGpuAndYear) {
     ASSERT_TRUE(converged->flagship.year.has_value());
     EXPECT_EQ(*converged->flagship.year, 2025);
     EXPECT_EQ(converged->gpu(), "RTX 5090");
+    EXPECT_EQ(converged->binding, "memory");
     EXPECT_FALSE(converged->heldBy(2020));
 
     std::optional<SeedAnswer> one = practiceAnswer(in, "nee", 1.0);
@@ -186,8 +191,9 @@ TEST(SeedClaim, AnswersBothCriteriaWithTheFirstGpuAndYear) {
         << md;
     EXPECT_NE(md.find("first flagship: RTX 5090 (2025)"), std::string::npos) << md;
     EXPECT_NE(md.find("By 2020: **no, not before the RTX 5090 of 2025**"), std::string::npos) << md;
-    EXPECT_NE(md.find("At 1 spp per frame of nee, 0.124 giga paths per second. First x80 card: GTX 980 (2014)"),
-              std::string::npos)
+    EXPECT_NE(
+        md.find("At 1 spp per frame of nee, 0.124 giga paths per second. First x80 card: GTX 980 (2014)"),
+        std::string::npos)
         << md;
     EXPECT_NE(md.find("the pipeline's FLIP on the moving camera is 0.150, over the FLIP threshold 0.1"),
               std::string::npos)
