@@ -56,5 +56,9 @@ TEST(Docs, TheReadmeListsEveryRealtimeOption) {
     expectReadmeListsOptionsOf("realtime", 25);
 }
 
+TEST(Docs, TheReadmeListsEveryStudyOption) {
+    expectReadmeListsOptionsOf("study", 20);
+}
+
 }  // namespace
 }  // namespace fp
