@@ -9,6 +9,7 @@ uniform float uLightPaths;       // light paths per pixel behind uSplatSum; 0: n
 
 struct AccumulatedPixel {
     float samples;   // 0: not rendered yet
+    vec3 cameraMean; // the camera samples' mean alone, without the light image
     vec3 mean;       // the estimate: the camera mean, plus bdpt's light image (Accumulation::mean)
     vec3 normal;     // unit mean first-hit normal; 0 where every sample missed (or no guides)
     float depth;     // mean first-hit distance; 0 where none hit
@@ -21,7 +22,8 @@ AccumulatedPixel readAccumulatedPixel(ivec2 p) {
     AccumulatedPixel a;
     vec4 sum = texelFetch(uSum, p, 0);
     a.samples = sum.a;
-    a.mean = a.samples > 0.0 ? sum.rgb / a.samples : vec3(0.0);
+    a.cameraMean = a.samples > 0.0 ? sum.rgb / a.samples : vec3(0.0);
+    a.mean = a.cameraMean;
     if (a.samples > 0.0 && uLightPaths > 0.0) a.mean += texelFetch(uSplatSum, p, 0).rgb / uLightPaths;
     vec4 normalDepth = texelFetch(uNormalDepth, p, 0), albedoSum = texelFetch(uAlbedoSum, p, 0);
     float guideSamples = albedoSum.a;

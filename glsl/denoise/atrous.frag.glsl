@@ -11,6 +11,14 @@
 
 uniform sampler2D uColor;  // (demodulated colour, luminance variance of its mean)
 uniform int uStep;
+// The real-time pipeline's history, (mean, samples N) per pixel, and the N from which a pixel passes
+// through unfiltered (0: every pixel is filtered, as the spatial denoiser does). Once N is large the
+// variance of the mean is small, eq. 5's luminance weight admits few neighbours and the filter changes
+// little (measured on the Cornell orbit: reuse with and without the filter reach the same FLIP once the
+// history is ten frames long), so skipping those pixels costs little quality and saves most of the
+// taps where the history is long, which on a moving camera is most pixels.
+uniform sampler2D uSettled;
+uniform float uSettledSamples;
 
 out vec4 outColor;
 
@@ -32,6 +40,10 @@ float prefilteredVariance(ivec2 p) {
 void main() {
     const float h[5] = float[5](1.0 / 16.0, 1.0 / 4.0, 3.0 / 8.0, 1.0 / 4.0, 1.0 / 16.0);  // B3 spline
     ivec2 p = ivec2(gl_FragCoord.xy);
+    if (uSettledSamples > 0.0 && texelFetch(uSettled, p, 0).a >= uSettledSamples) {
+        outColor = texelFetch(uColor, p, 0);
+        return;
+    }
     vec4 guide = texelFetch(uGuide, p, 0);
     if (guide.w == kEmitter) {
         outColor = texelFetch(uColor, p, 0);

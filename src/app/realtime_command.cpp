@@ -32,6 +32,9 @@ std::vector<OptionGroup> realtimeOptions() {
             "per frame are fitted to (default 30)"},
            {"--temporal", "", "on|off", "reuse the reprojected history (default on)"},
            {"--filter", "", "atrous|none", "the spatial filter after reprojection (default atrous)"},
+           {"--settled", "", "N",
+            "pixels whose history holds N samples or more skip the filter: their mean is already clean "
+            "(default 16; 0: every pixel is filtered)"},
            {"--max-history", "", "N",
             "samples per pixel the history keeps while the camera moves (default 32)"},
            {"--reference-spp", "", "K",
@@ -95,6 +98,8 @@ int realtimeCommand(const std::vector<std::string>& argv) {
         throw UsageError("option --filter: expected atrous or none, not '" + filter + "'");
     temporal.filter = filter == "atrous" ? Denoiser::Atrous : Denoiser::None;
     temporal.maxHistorySamples = float(args.integer("--max-history", 1, 1 << 20).value_or(32));
+    temporal.settledSamples =
+        float(args.integer("--settled", 0, 1 << 20).value_or(int(TemporalSettings().settledSamples)));
     std::optional<int> referenceSpp;
     if (args.has("--reference-spp")) referenceSpp = args.integer("--reference-spp", 1, 1 << 20);
 

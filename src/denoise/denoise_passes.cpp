@@ -94,7 +94,12 @@ void DenoisePasses::draw(Pass pass, GLuint target,
 }
 
 void DenoisePasses::run(const Renderer& renderer, Denoiser which) {
-    if (which == Denoiser::None) throw Error("internal: DenoisePasses::run with no denoiser");
+    prepare(renderer, which);
+    filter(textures_[kColorA], textures_[kGuide], textures_[kAlbedo], width_, height_, which);
+}
+
+void DenoisePasses::prepare(const Renderer& renderer, Denoiser which) {
+    if (which == Denoiser::None) throw Error("internal: DenoisePasses::prepare with no denoiser");
     if (!renderer.settings().guides)
         throw Error(std::string("the ") + denoiserName(which) +
                     " denoiser needs the first-hit guides: render with RenderSettings::guides set");
@@ -114,12 +119,14 @@ void DenoisePasses::run(const Renderer& renderer, Denoiser which) {
           {"uCounters", renderer.accumulationTexture(kCountersAttachment)},
           {"uNormalDepth", renderer.accumulationTexture(kNormalDepthAttachment)},
           {"uAlbedoSum", renderer.accumulationTexture(kAlbedoAttachment)},
-          {"uSplatSum", splats ? image.splatSum : image.sum}});
-    filter(textures_[kColorA], textures_[kGuide], textures_[kAlbedo], width_, height_, which);
+          {"uSplatSum", splats ? image.splatSum : image.sum},
+          {"uSplatSquares", splats ? image.splatSquares : image.sum}});  // unread without splats
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    glActiveTexture(GLenum(GL_TEXTURE0 + kSpareUnit));
 }
 
-void DenoisePasses::filter(GLuint color, GLuint guide, GLuint modulate, int width, int height,
-                           Denoiser which) {
+void DenoisePasses::filter(GLuint color, GLuint guide, GLuint modulate, int width, int height, Denoiser which,
+                           GLuint settled, float settledSamples) {
     if (which == Denoiser::None) throw Error("internal: DenoisePasses::filter with no denoiser");
     resize(width, height);
     glDisable(GL_SCISSOR_TEST);
@@ -129,8 +136,10 @@ void DenoisePasses::filter(GLuint color, GLuint guide, GLuint modulate, int widt
     // `color` may be colour A).
     GLuint current = color;
     Texture next = kColorB;
+    if (!settled) settledSamples = 0.0f;
     auto pass = [&](Pass p) {
-        draw(p, framebuffers_[next], {{"uColor", current}, {"uGuide", guide}});
+        draw(p, framebuffers_[next],
+             {{"uColor", current}, {"uGuide", guide}, {"uSettled", settled ? settled : guide}});
         current = textures_[next];
         next = next == kColorA ? kColorB : kColorA;
     };
@@ -141,6 +150,7 @@ void DenoisePasses::filter(GLuint color, GLuint guide, GLuint modulate, int widt
         for (int i = 0; i < kAtrousIterations; ++i) {
             program(kAtrous).use();
             program(kAtrous).set("uStep", 1 << i);
+            program(kAtrous).set("uSettledSamples", settledSamples);
             pass(kAtrous);
         }
     }
@@ -149,17 +159,27 @@ void DenoisePasses::filter(GLuint color, GLuint guide, GLuint modulate, int widt
     glActiveTexture(GLenum(GL_TEXTURE0 + kSpareUnit));
 }
 
-Image DenoisePasses::result() const {
-    Image image(width_, height_);
-    std::vector<glm::vec4> rows(size_t(width_) * size_t(height_));
-    glBindFramebuffer(GL_READ_FRAMEBUFFER, framebuffers_[kResult]);
+std::vector<glm::vec4> DenoisePasses::read(Texture texture) const {
+    std::vector<glm::vec4> rows(size_t(width_) * size_t(height_)), pixels(rows.size());
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, framebuffers_[texture]);
     glReadBuffer(GL_COLOR_ATTACHMENT0);
     glPixelStorei(GL_PACK_ALIGNMENT, 4);
     glReadPixels(0, 0, width_, height_, GL_RGBA, GL_FLOAT, rows.data());
     glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
     for (int y = 0; y < height_; ++y)  // GL rows run bottom to top; images here run top to bottom
-        for (int x = 0; x < width_; ++x)
-            image.at(x, y) = glm::vec3(rows[size_t(height_ - 1 - y) * size_t(width_) + size_t(x)]);
+        std::copy_n(rows.begin() + std::ptrdiff_t(height_ - 1 - y) * width_, width_,
+                    pixels.begin() + std::ptrdiff_t(y) * width_);
+    return pixels;
+}
+
+std::vector<glm::vec4> DenoisePasses::prepared() const {
+    return read(kColorA);
+}
+
+Image DenoisePasses::result() const {
+    Image image(width_, height_);
+    std::vector<glm::vec4> pixels = read(kResult);
+    for (size_t i = 0; i < pixels.size(); ++i) image.pixels[i] = glm::vec3(pixels[i]);
     return image;
 }
 

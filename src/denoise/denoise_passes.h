@@ -9,6 +9,9 @@
 //   finish    multiply the albedo back: (radiance, 1)
 #include <array>
 #include <memory>
+#include <vector>
+
+#include <glm/glm.hpp>
 
 #include "denoise/denoiser.h"
 #include "gl/program.h"
@@ -26,11 +29,20 @@ class DenoisePasses {
     // Denoises the renderer's current accumulation with `which` (not None). Throws fp::Error if the
     // render has no guides (RenderSettings::guides) or a pass does not compile.
     void run(const Renderer& renderer, Denoiser which);
+    // The prepare pass alone (what run() does first), and its output read back, rows top first:
+    // (colour, divided by the albedo for atrous; luminance variance of its mean, or -1 below 4 samples).
+    // For tests: what the filters are given.
+    void prepare(const Renderer& renderer, Denoiser which);
+    std::vector<glm::vec4> prepared() const;
     // The filter and finish passes alone, for a front end that prepares its own input (the real-time
     // pipeline, src/realtime/temporal_pipeline.h): `color` holds (demodulated colour, luminance variance
     // of its mean, or -1 to estimate it), `guide` and `modulate` what the prepare pass writes; none is
-    // changed. `which` is not None.
-    void filter(GLuint color, GLuint guide, GLuint modulate, int width, int height, Denoiser which);
+    // changed. `which` is not None. With `settled` (the real-time history: (mean, samples) per pixel) and
+    // settledSamples > 0, the a-trous levels pass pixels whose history holds at least that many samples
+    // through unfiltered: their mean is already as clean as the filter would make it (measured:
+    // glsl/denoise/atrous.frag.glsl), and skipping them is most of the filter's cost on a moving camera.
+    void filter(GLuint color, GLuint guide, GLuint modulate, int width, int height, Denoiser which,
+                GLuint settled = 0, float settledSamples = 0.0f);
     // The last result, (denoised radiance, 1) per pixel, at the accumulation's size.
     GLuint resultTexture() const { return textures_[kResult]; }
     Image result() const;  // rows top first
@@ -44,6 +56,7 @@ class DenoisePasses {
     enum Pass { kPrepare, kVariance, kBilateral, kAtrous, kFinish, kPassCount };
     void resize(int width, int height);
     Program& program(Pass pass);
+    std::vector<glm::vec4> read(Texture texture) const;  // rows top first
     // Draws `pass` into framebuffer `target`, with `inputs` bound to units in order, named `names`.
     void draw(Pass pass, GLuint target, std::initializer_list<std::pair<const char*, GLuint>> inputs);
 

@@ -5,6 +5,7 @@
 #include "core/error.h"
 #include "realtime/realtime_run.h"
 #include "realtime/reference_cache.h"
+#include "realtime/temporal_pipeline.h"
 
 namespace fp {
 
@@ -60,8 +61,9 @@ study::PracticeInput measurePractice(Renderer& renderer, const PracticeOptions& 
     input.fps = o.fps;
     input.orbitDegreesPerSecond = o.orbitDegreesPerSecond;
     input.integrator = integratorName(o.settings.integrator);
+    input.scene = o.sceneName;
+    input.settledSamples = TemporalSettings{}.settledSamples;  // the runs keep the pipeline's defaults
     input.flipThreshold = o.flipThreshold;
-    input.flipThresholdIsStandIn = o.flipThresholdIsStandIn;
     input.outDir = o.outDir;
     auto say = [&](const std::string& line) {
         if (o.progress) o.progress(line);

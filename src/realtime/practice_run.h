@@ -16,13 +16,13 @@ namespace fp {
 struct PracticeOptions {
     RenderSettings settings;  // size, integrator, depth, seed, sampler
     DisplaySettings display;
-    Camera camera;         // the still camera, and where the orbit starts
-    std::string sceneKey;  // names the scene in the references' key
+    Camera camera;          // the still camera, and where the orbit starts
+    std::string sceneName;  // as the report names it (PracticeInput::scene)
+    std::string sceneKey;   // names the scene in the references' key
     int frames = 20;
     int referenceSpp = 128;  // the study's defaults (--practice-frames, --practice-reference-spp)
-    double fps = 30.0, orbitDegreesPerSecond = 10.0;  // `fragpath realtime`'s defaults
-    double flipThreshold = study::kPracticeFlipThresholdStandIn;
-    bool flipThresholdIsStandIn = true;
+    double fps = 30.0, orbitDegreesPerSecond = 10.0;      // `fragpath realtime`'s defaults
+    double flipThreshold = study::kDefaultFlipThreshold;  // the study's --flip-threshold
     // Each run writes DIR/<camera>/<run>/ (frames, frames.csv, strip.png); the references go to
     // DIR/<camera>/references/, emptied first so that a study with other settings never meets them.
     std::string outDir;

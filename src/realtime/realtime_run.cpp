@@ -9,6 +9,7 @@
 #include "core/error.h"
 #include "image/file_io.h"
 #include "image/flip.h"
+#include "image/image_grid.h"
 #include "image/image_stats.h"
 #include "image/png.h"
 #include "realtime/frame_budget.h"
@@ -42,7 +43,8 @@ std::string csvRow(const FrameRow& r) {
 constexpr uint32_t kReferenceOffset = 1u << 28;
 
 // Five frames evenly spread over the run (first and last included), left to right, above their
-// references when there are any, 2-pixel grey gaps between tiles: the run at a glance.
+// references when there are any, 2-pixel grey gaps between tiles, labelled (image/image_grid.h) with
+// their frame numbers and "frames" / "reference": the run at a glance.
 constexpr int kStripFrames = 5;
 bool inStrip(int frame, int frames) {
     for (int i = 0; i < kStripFrames; ++i)
@@ -50,18 +52,21 @@ bool inStrip(int frame, int frames) {
     return false;
 }
 
-Image assembleStrip(const std::vector<Image>& top, const std::vector<Image>& bottom) {
-    const int gap = 2, w = top[0].width, h = top[0].height, rows = bottom.empty() ? 1 : 2;
-    Image strip(int(top.size()) * (w + gap) - gap, rows * (h + gap) - gap);
-    for (glm::vec3& p : strip.pixels) p = glm::vec3(0.2f);
-    for (int r = 0; r < rows; ++r)
-        for (size_t i = 0; i < top.size(); ++i) {
-            const Image& tile = r == 0 ? top[i] : bottom[i];
-            for (int y = 0; y < h; ++y)
-                for (int x = 0; x < w; ++x)
-                    strip.at(int(i) * (w + gap) + x, r * (h + gap) + y) = tile.at(x, y);
-        }
-    return strip;
+Image assembleStrip(const std::vector<Image>& top, const std::vector<Image>& bottom,
+                    const std::vector<int>& frameNumbers, const DisplaySettings& display) {
+    GridLabels labels;
+    std::vector<std::vector<const Image*>> tiles(bottom.empty() ? 1 : 2);
+    for (size_t i = 0; i < top.size(); ++i) {
+        tiles[0].push_back(&top[i]);
+        if (!bottom.empty()) tiles[1].push_back(&bottom[i]);
+        labels.columns.push_back("frame " + std::to_string(frameNumbers[i]));
+    }
+    labels.rows = {"frames"};
+    if (!bottom.empty()) labels.rows.push_back("reference");
+    // White text under the run's exposure and any tone curve: Reinhard's x / (1 + x) encodes to 255 from
+    // about x = 500, ACES and the clamp from 1.
+    labels.colour = glm::vec3(1e3f * std::exp2(-display.exposure));
+    return assembleGrid(tiles, PixelRect{0, 0, top[0].width, top[0].height}, labels);
 }
 
 }  // namespace
@@ -95,6 +100,7 @@ std::vector<FrameRow> renderRealtime(Renderer& renderer, const RealtimeRun& run,
     if (run.referenceSpp && run.referenceCache)
         cache.emplace(*run.referenceCache,
                       ReferenceCache::describe(run.sceneKey, run.settings, *run.referenceSpp));
+    std::vector<int> stripFrameNumbers;
     int spp = run.fixedSpp.value_or(1);
     uint32_t sampleOffset = 0;
     for (int f = 0; f < run.frames && !(stop && stop()); ++f) {
@@ -126,7 +132,10 @@ std::vector<FrameRow> renderRealtime(Renderer& renderer, const RealtimeRun& run,
         writePng(run.outDir + name, image, run.display);
 
         std::vector<float> luma = study::displayLuma(image), referenceLuma;
-        if (inStrip(f, run.frames)) stripFrames.push_back(image);
+        if (inStrip(f, run.frames)) {
+            stripFrames.push_back(image);
+            stripFrameNumbers.push_back(f);
+        }
         if (run.referenceSpp) {
             std::optional<Image> reference = cache ? cache->find(f, camera) : std::nullopt;
             if (!reference) {
@@ -159,11 +168,12 @@ std::vector<FrameRow> renderRealtime(Renderer& renderer, const RealtimeRun& run,
         if (onFrame) onFrame(row);
     }
     if (!stripFrames.empty())
-        writePng(
-            run.outDir + "/strip.png",
-            assembleStrip(stripFrames, stripReferences.size() == stripFrames.size() ? stripReferences
-                                                                                    : std::vector<Image>{}),
-            run.display);
+        writePng(run.outDir + "/strip.png",
+                 assembleStrip(
+                     stripFrames,
+                     stripReferences.size() == stripFrames.size() ? stripReferences : std::vector<Image>{},
+                     stripFrameNumbers, run.display),
+                 run.display);
     return rows;
 }
 

@@ -149,7 +149,7 @@ void TemporalPipeline::run(const Renderer& renderer, const Camera& camera, const
     const auto& targets = textures_[size_t(current_)];
     if (settings.filter != Denoiser::None)
         denoise_.filter(targets[kFilter], targets[kGuide], targets[kModulate], rs.width, rs.height,
-                        settings.filter);
+                        settings.filter, targets[kRadiance], settings.settledSamples);
     glFinish();
     timings_.filterSeconds = secondsSince(start);
 

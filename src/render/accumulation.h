@@ -40,10 +40,12 @@ struct Accumulation {
 };
 
 // The same on the GPU, for a display pass: the (radiance sum, samples) texture and, for bdpt, the light
-// image's (sum, rays) texture and N (0: no light image).
+// image's (sum, rays) texture and N (0: no light image), and its (sum of squares, dropped) texture for
+// the denoisers' variance.
 struct AccumulationTextures {
     uint32_t sum = 0, splatSum = 0;
     float lightPathsPerPixel = 0.0f;
+    uint32_t splatSquares = 0;
 };
 
 }  // namespace fp

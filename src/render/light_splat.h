@@ -45,6 +45,7 @@ class LightSplat {
     // The light image, rows top to bottom.
     void read(std::vector<glm::vec4>& sum, std::vector<glm::vec4>& squares) const;
     GLuint sumTexture() const { return image_[0]; }
+    GLuint squaresTexture() const { return image_[1]; }
 
   private:
     static constexpr int kRecords = kLightVertices + 1;  // the vertices' records, then the statistics

@@ -399,8 +399,8 @@ Accumulation Renderer::readback() const {
 
 AccumulationTextures Renderer::textures() const {
     if (!targets_) throw Error("internal: Renderer::textures before configure");
-    return {targets_->sumTexture(), lightSplat_ ? lightSplat_->sumTexture() : 0u,
-            float(lightPathsPerPixel())};
+    return {targets_->sumTexture(), lightSplat_ ? lightSplat_->sumTexture() : 0u, float(lightPathsPerPixel()),
+            lightSplat_ ? lightSplat_->squaresTexture() : 0u};
 }
 
 }  // namespace fp

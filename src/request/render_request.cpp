@@ -192,7 +192,10 @@ RenderRequest::RenderRequest(const Args& args, const FrontEndDefaults& defaults)
 }
 
 Scene RenderRequest::loadScene() const {
-    Scene scene = scenePath_ ? fp::loadScene(*scenePath_) : builtinCornellBox();
+    return prepareScene(scenePath_ ? fp::loadScene(*scenePath_) : builtinCornellBox());
+}
+
+Scene RenderRequest::prepareScene(Scene scene) const {
     if (flattenInstances_ && !scene.instances.empty()) scene = flattenInstances(std::move(scene));
     switch (environment_) {
         case EnvironmentChoice::Default:

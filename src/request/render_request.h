@@ -73,6 +73,9 @@ class RenderRequest {
     // with the environment --environment asks for: by default a scene without light gets a uniform white
     // sky, with a warning (scene/lighting.h lightIfUnlit).
     Scene loadScene() const;
+    // What loadScene does to the scene it loads (--flatten-instances, --environment), for a scene that
+    // comes from elsewhere (the study's scene set).
+    Scene prepareScene(Scene scene) const;
     const std::optional<std::string>& scenePath() const { return scenePath_; }
 
     RenderSettings settings(const Scene& scene) const;

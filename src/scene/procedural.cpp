@@ -78,6 +78,36 @@ Scene causticScene(float glassRoughness) {
     return scene;
 }
 
+Scene environmentLitScene() {
+    Scene scene;
+    scene.source = "environment-lit scene";
+    Material grey;
+    grey.name = "grey";
+    grey.diffuse = glm::vec3(0.6f);
+    scene.materials = {grey};
+    appendQuad(scene, {-5, 0, -5}, {-5, 0, 5}, {5, 0, 5}, {5, 0, -5}, 0);  // counter-clockwise from above: up
+    appendSphere(scene, {0.0f, 1.0f, 0.0f}, 1.0f, 24, 48, 0, true);
+    appendSphere(scene, {-2.2f, 0.6f, 0.8f}, 0.6f, 24, 48, 0, true);
+    appendSphere(scene, {2.0f, 0.8f, -0.5f}, 0.8f, 24, 48, 0, true);
+    Image sky(256, 128);
+    for (int y = 0; y < sky.height; ++y)
+        for (int x = 0; x < sky.width; ++x) {
+            const float t = float(y) / float(sky.height);
+            glm::vec3 c = y < sky.height / 2 ? glm::vec3(0.3f + 0.4f * t, 0.45f + 0.3f * t, 0.8f - 0.2f * t)
+                                             : glm::vec3(0.25f, 0.2f, 0.15f);
+            if (y >= 20 && y < 24 && x >= 60 && x < 64) c = {400.0f, 300.0f, 200.0f};  // the sun
+            c.r *= 1.0f + 0.3f * std::sin(0.2f * float(x));  // some variation along the horizon
+            sky.at(x, y) = c;
+        }
+    scene.environment.map = std::move(sky);
+    Camera camera;
+    camera.eye = {0.0f, 2.5f, -7.0f};
+    camera.target = {0.0f, 0.8f, 0.0f};
+    camera.fovY = 45.0f;
+    scene.camera = camera;
+    return scene;
+}
+
 namespace {
 
 constexpr float kRoomSize = 2.0f;

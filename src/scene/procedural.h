@@ -29,6 +29,14 @@ Scene causticScene(float glassRoughness);
 // That floor in a 24 x 24 image of causticScene's camera.
 constexpr PixelRect kCausticUnderSphere{6, 13, 12, 6};
 
+// Light from an environment map alone, for the noise study: a 10 x 10 diffuse ground (albedo 0.6) and
+// three smooth UV spheres on it (radii 1, 0.6, 0.8; 24 rings x 48 segments; 6,626 triangles in all)
+// under a 256 x 128 equirectangular sky made in code: a blue gradient above the horizon, brown ground
+// below, and a 4 x 4-texel sun of radiance (400, 300, 200) about 59 degrees up, which casts sharp
+// shadows and whose small solid angle makes the sky's importance sampling matter. The scene of
+// tools/make_env_scene.py (docs/optimisation-log.md, entry 31), built without files.
+Scene environmentLitScene();
+
 // The benchmark scenes below all stand in one lit room, so that their figures differ only by what is in
 // it: a 2 x 2 x 2 box open towards -z (where the camera looks in from, as for the Cornell box), a
 // white floor, ceiling and back wall, a red wall on the image's left and a green one on its right, and a

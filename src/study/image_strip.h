@@ -1,10 +1,13 @@
 #pragma once
 // The image strip: the same crop of the image at several sample counts side by side, one row per
-// integrator and denoiser, the reference last in every row; a grey gap separates the tiles.
+// integrator and denoiser, the reference last in every row; a grey gap separates the tiles, a header
+// names the columns ("4 spp", "reference") and a label column the rows ("nee + atrous"; the integrator
+// alone for the raw image), laid out by image/image_grid.h.
 #include <string>
 #include <vector>
 
 #include "image/image.h"
+#include "image/image_grid.h"
 #include "image/image_stats.h"
 #include "study/sweep.h"
 
@@ -19,6 +22,9 @@ struct StripLayout {
     std::vector<std::pair<std::string, std::string>> rows;  // (integrator, denoiser), top to bottom
     std::vector<int> columns;                               // spp, left to right; then the reference
 };
+
+// The labels of the strip's columns and rows.
+GridLabels stripLabels(const StripLayout& layout);
 
 // Linear radiance of the strip, to be written as PNG with the usual tone map. Throws fp::Error if an
 // image the layout names is missing.

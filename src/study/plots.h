@@ -11,12 +11,12 @@ namespace fp::study {
 // 60 frames per second.
 constexpr double kFrameBudgetSeconds = 1.0 / 60.0;
 
-// The plot files the script writes, in its directory.
-const std::vector<std::string>& plotFileNames();
+// The plot files the script writes for one scene, in its directory: <scene>_error_vs_spp.png, ...
+std::vector<std::string> plotFileNames(const std::string& scene);
 
-// The gnuplot script for `rows` (read back from study.csv in the same directory): relative MSE
-// against samples per pixel and against time (log-log, the 60 FPS budget marked, the noise threshold
-// drawn), and SSIM against samples per pixel.
+// The gnuplot script for `rows` (read back from study.csv in the same directory): for each scene,
+// relative MSE against samples per pixel and against time (log-log, the 60 FPS budget marked, the
+// noise threshold drawn), and SSIM against samples per pixel.
 std::string gnuplotScript(const std::vector<StudyRow>& rows, double relMseThreshold);
 
 // Throws fp::Error with install instructions if gnuplot is not on PATH; checked before rendering.

@@ -103,11 +103,15 @@ std::optional<int> practiceSppReachingThreshold(const PracticeInput& in) {
 
 std::string practiceMarkdown(const PracticeInput& in) {
     std::string md = "## Practice: temporal reuse and a filter against brute force\n\n";
+    // The measurement costs minutes, so the study makes it once, on its first scene (study_command.cpp).
+    const std::string scene = in.scene.empty() ? "the study's first scene" : "`" + in.scene + "`";
     md += formatText(
         "Since SVGF (Schied et al. 2017) real-time path tracers trace few samples per pixel each frame, "
         "reuse the reprojected history of earlier frames and filter it. This section measures that "
-        "pipeline as `fragpath realtime` runs it (1 spp per frame, reprojected history capped at 32 "
-        "samples while the camera moves, variance-guided a-trous filter) against brute force, the same "
+        "pipeline once per study, on %s (the first scene studied), as `fragpath realtime` runs it (1 spp per "
+        "frame, reprojected history capped at 32 "
+        "samples while the camera moves, variance-guided a-trous filter that pixels whose history holds %.0f "
+        "samples skip) against brute force, the same "
         "frames each alone and unfiltered (`--temporal off --filter none`): at 1 spp, and at the samples "
         "per frame that cost the pipeline's time (the pipeline's median ms per frame over a 1-spp brute-"
         "force frame's, rounded down, at least 1). %d frames of %dx%d at %.0f fps, %s, each judged by mean "
@@ -115,8 +119,8 @@ std::string practiceMarkdown(const PracticeInput& in) {
         "shared by every run of a camera (realtime/reference_cache.h). Still camera: the study's camera. "
         "Moving: the orbit `fragpath realtime` uses by default, %.0f degrees per second about the "
         "camera's target.\n\n",
-        in.frames, in.width, in.height, in.fps, in.integrator.c_str(), in.referenceSpp,
-        in.orbitDegreesPerSecond);
+        scene.c_str(), in.settledSamples, in.frames, in.width, in.height, in.fps, in.integrator.c_str(),
+        in.referenceSpp, in.orbitDegreesPerSecond);
     md += formatText(
         "| camera | method | spp per frame | ms per frame (median) | mean FLIP | FLIP, frames %d+ | flicker "
         "| "
@@ -149,11 +153,7 @@ std::string practiceMarkdown(const PracticeInput& in) {
             beatsEqual ? "beats" : "does not beat", against(*pipeline, *equal).c_str());
     }
     std::optional<int> reaching = practiceSppReachingThreshold(in);
-    md += formatText("- FLIP threshold: %.3g%s. ", in.flipThreshold,
-                     in.flipThresholdIsStandIn
-                         ? " (a stand-in, src/study/practice.h kPracticeFlipThresholdStandIn, until the "
-                           "study's own FLIP threshold is wired in)"
-                         : "");
+    md += formatText("- FLIP threshold: %.3g, the study's (`--flip-threshold`). ", in.flipThreshold);
     if (reaching)
         md +=
             formatText("The pipeline on the moving camera gets under it at %d spp per frame.\n\n", *reaching);

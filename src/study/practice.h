@@ -8,11 +8,9 @@
 #include <string>
 #include <vector>
 
-namespace fp::study {
+#include "study/thresholds.h"
 
-// A stand-in for the study's FLIP threshold (`--flip-threshold`, added on another branch) until the
-// lead wires that into PracticeInput::flipThreshold. Not justified here: the report says so.
-constexpr double kPracticeFlipThresholdStandIn = 0.1;
+namespace fp::study {
 
 // Frames before this one are the pipeline's warm-up (its history is still short); the steady figure
 // is the mean from it on.
@@ -57,14 +55,15 @@ PracticeRun summarisePractice(const std::string& camera, PracticeMethod method, 
 int equalTimeSpp(double pipelineMs, double msPerSample);
 
 struct PracticeInput {
+    std::string scene;  // the scene it measured (the study's first), as report.md names it
     int width = 0, height = 0, frames = 0, referenceSpp = 0;
     double fps = 30.0, orbitDegreesPerSecond = 10.0;
-    std::string integrator;  // of every run and reference
-    double flipThreshold = kPracticeFlipThresholdStandIn;
-    bool flipThresholdIsStandIn = true;  // false once the study's own threshold is passed in
-    std::vector<PracticeRun> runs;       // still then moving: brute force 1 spp, pipeline 1 spp, equal time;
-                                         // then the pipeline on the moving camera at 2, 4, ... if needed
-    std::string outDir;                  // where the runs' frames.csv and strips are, relative to report.md
+    double settledSamples = 0.0;  // the pipeline's (realtime TemporalSettings): such pixels skip the filter
+    std::string integrator;       // of every run and reference
+    double flipThreshold = kDefaultFlipThreshold;  // the study's (--flip-threshold)
+    std::vector<PracticeRun> runs;  // still then moving: brute force 1 spp, pipeline 1 spp, equal time;
+                                    // then the pipeline on the moving camera at 2, 4, ... if needed
+    std::string outDir;             // where the runs' frames.csv and strips are, relative to report.md
 };
 
 // The pipeline's smallest samples per frame on the moving camera whose judged FLIP is at most the

@@ -11,6 +11,7 @@
 #include "study/image_strip.h"
 #include "study/practice.h"
 #include "study/sweep.h"
+#include "study/thresholds.h"
 
 namespace fp::study {
 
@@ -18,10 +19,13 @@ namespace fp::study {
 extern const char* const kThresholdRationale;
 constexpr double kDefaultRelMseThreshold = 4e-4;
 
+// One scene's study; the report holds one or more (the scene set).
 struct ReportInput {
     std::string scene, glRenderer, referenceText;  // referenceText: how the reference was made
+    std::string sceneName, sceneWhat;  // the name in file names and headings; what it adds (may be empty)
     int width = 0, height = 0, maxDepth = 0, maxSpp = 0, runs = 1;
     double relMseThreshold = kDefaultRelMseThreshold;
+    double ssimThreshold = kDefaultSsimThreshold, flipThreshold = kDefaultFlipThreshold;
     std::vector<StudyRow> rows;
     std::vector<std::string> integrators, denoisers;
     std::map<std::string, PathCounts> counts;  // per integrator
@@ -49,6 +53,8 @@ struct FeasibilityRow {
 };
 std::vector<FeasibilityRow> feasibilityRows(const ReportInput& input);
 
-std::string reportMarkdown(const ReportInput& input);
+// The common set-up, metrics and thresholds once, then a section per scene. Throws fp::Error without a
+// scene.
+std::string reportMarkdown(const std::vector<ReportInput>& scenes);
 
 }  // namespace fp::study

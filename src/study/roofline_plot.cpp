@@ -32,14 +32,19 @@ std::string dataBlock(const std::string& name, GpuClass gpuClass, const PathWork
 
 }  // namespace
 
-std::string rooflinePlotName(const std::string& integrator) {
-    return "roofline_" + integrator + ".png";
+std::string rooflinePlotName(const std::string& scene, const std::string& integrator) {
+    return scene + "_roofline_" + integrator + ".png";
+}
+
+std::string rooflineScriptName(const std::string& scene) {
+    return scene + "_roofline.gp";
 }
 
 std::string rooflineGnuplotScript(const ReportInput& in) {
     std::string script =
         "# Written by `fragpath study` (src/study/roofline_plot.cpp); edit and rerun with\n"
-        "#   gnuplot roofline.gp\n"
+        "#   gnuplot " +
+        rooflineScriptName(in.sceneName) + "\n" +
         "set terminal pngcairo size 900,560 font 'sans,10'\nset grid\nset key outside right top\n"
         "set logscale y\nset format y '10^{%T}'\nset xlabel 'year'\nset ylabel 'rays per second'\n"
         "set xrange [2013.5:2025.5]\n";
@@ -51,10 +56,11 @@ std::string rooflineGnuplotScript(const ReportInput& in) {
         w.lightEntries = in.lightEntries;
         script += "\n" + dataBlock(integrator + "_x80", GpuClass::X80, w) +
                   dataBlock(integrator + "_flagship", GpuClass::Flagship, w);
-        script += "set output '" + rooflinePlotName(integrator) + "'\n";
+        script += "set output '" + rooflinePlotName(in.sceneName, integrator) + "'\n";
         script += formatText(
-            "set title \"%s: rays/s that 1080p60 needs against each GPU's limits (%.2f rays per path)\"\n",
-            integrator.c_str(), w.counts.rays);
+            "set title \"%s, %s: rays/s that 1080p60 needs against each GPU's limits (%.2f rays per "
+            "path)\"\n",
+            in.sceneName.c_str(), integrator.c_str(), w.counts.rays);
         std::string plot = "plot ";
         const char* limitColours[] = {"#1f77b4", "#2ca02c", "#d62728"};
         const char* limitTitles[] = {"FP32", "memory", "RT cores"};
@@ -80,7 +86,7 @@ std::string rooflineGnuplotScript(const ReportInput& in) {
 
 void drawRooflinePlots(const std::string& dir, const ReportInput& in) {
     if (rooflineIntegrators(in).empty()) return;
-    runGnuplotScript(dir, "roofline.gp", rooflineGnuplotScript(in));
+    runGnuplotScript(dir, rooflineScriptName(in.sceneName), rooflineGnuplotScript(in));
 }
 
 }  // namespace fp::study

@@ -1,6 +1,6 @@
 #pragma once
-// The roofline chart, one per integrator the report's Roofline section shows: the rays per second that
-// 1080p60 needs at the threshold's spp (one line per denoiser) against each GPU's limits by year, in
+// The roofline chart, one per scene and integrator the report's Roofline section shows: the rays per second
+// that 1080p60 needs at the threshold's spp (one line per denoiser) against each GPU's limits by year, in
 // rays per second (paths per second x rays per path), x80 and flagship cards as separate lines.
 #include <string>
 
@@ -8,12 +8,16 @@
 
 namespace fp::study {
 
-std::string rooflinePlotName(const std::string& integrator);  // "roofline_nee.png"
+// One scene's files: "cornell_roofline_nee.png", drawn by "cornell_roofline.gp".
+std::string rooflinePlotName(const std::string& scene, const std::string& integrator);
+std::string rooflineScriptName(const std::string& scene);
 
-// The gnuplot script (its data inline) that draws every chart of `input` in the current directory.
+// The gnuplot script (its data inline) that draws every chart of `input` (one scene) in the current
+// directory.
 std::string rooflineGnuplotScript(const ReportInput& input);
 
-// Writes DIR/roofline.gp and runs gnuplot there (plots.h runGnuplotScript); nothing to draw, no file.
+// Writes DIR/rooflineScriptName(input.sceneName) and runs gnuplot there (plots.h runGnuplotScript);
+// nothing to draw, no file.
 void drawRooflinePlots(const std::string& dir, const ReportInput& input);
 
 }  // namespace fp::study

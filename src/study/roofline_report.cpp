@@ -51,20 +51,8 @@ std::vector<std::string> rooflineIntegrators(const ReportInput& in) {
     return result;
 }
 
-std::string rooflineMarkdown(const ReportInput& in) {
-    std::string md = "## Roofline\n\n";
-    md +=
-        "For each GPU, the paths per second that each of its limits allows for this scene's average path "
-        "(the counts above), the least of which binds (a roofline: Williams, Waterman and Patterson 2009): "
-        "**FP32**, the peak left to FP32 work by the shader's integer instructions, over the FLOPs per path; "
-        "**memory**, the DRAM bandwidth over the bytes per path; and, on GPUs with RT cores, **RT cores**, "
-        "the ray rate over the rays per path. On those GPUs the RT cores traverse the BVH and test the "
-        "triangles, so the FP32 limit counts only the camera ray and the surfaces. Every limit here is at "
-        "100% of its figure; the last columns of the answer put the FP32 limit at the efficiency measured "
-        "on this machine instead. src/study/roofline.h has the byte and integer counts line by line, "
-        "src/study/gpus.cpp the source of every GPU figure.\n\n";
-
-    md += "### GPUs\n\n";
+std::string rooflineGpuMarkdown() {
+    std::string md = "### GPUs\n\n";
     md +=
         "Two classes, one trend line each: the x80 card of each generation, and the flagship, the fastest "
         "GeForce GTX/RTX card on the generation's largest die (the Ti cards until Turing, the x90 cards "
@@ -92,8 +80,24 @@ std::string rooflineMarkdown(const ReportInput& in) {
         "The FP32 limit takes the fraction of the peak that the shader's INT32 instructions leave "
         "(src/study/gpus.h fp32Fraction), not every lane.\n\n",
         gigaRaysPerRtTflops());
+    return md;
+}
 
-    md += "### Bytes and integer work per path\n\n";
+std::string rooflineMarkdown(const ReportInput& in) {
+    std::string md = "### Roofline\n\n";
+    md +=
+        "For each GPU, the paths per second that each of its limits allows for this scene's average path "
+        "(the counts above), the least of which binds (a roofline: Williams, Waterman and Patterson 2009): "
+        "**FP32**, the peak left to FP32 work by the shader's integer instructions, over the FLOPs per path; "
+        "**memory**, the DRAM bandwidth over the bytes per path; and, on GPUs with RT cores, **RT cores**, "
+        "the ray rate over the rays per path. On those GPUs the RT cores traverse the BVH and test the "
+        "triangles, so the FP32 limit counts only the camera ray and the surfaces. Every limit here is at "
+        "100% of its figure; the last columns of the answer put the FP32 limit at the efficiency measured "
+        "on this machine instead. src/study/roofline.h has the byte and integer counts line by line, "
+        "src/study/gpus.cpp the source of every GPU figure; the GPU table is in \"How the feasibility is "
+        "estimated\" above.\n\n";
+
+    md += "#### Bytes and integer work per path\n\n";
     md += formatText(
         "What the shader reads per node visited (%.0f bytes: the 4-wide node's four texels), triangle "
         "tested (%.0f: fetchTriangle's three texels) and surface shaded (%.0f: triangle, vertex normals, "
@@ -129,7 +133,7 @@ std::string rooflineMarkdown(const ReportInput& in) {
         md += "No series reaches the threshold, so there is no need to set against the limits.\n\n";
         return md;
     }
-    md += "### Limits per GPU\n\n";
+    md += "#### Limits per GPU\n\n";
     md += formatText(
         "In giga paths per second; \"spp at 1080p60\" is the binding limit over %.0f x %.0f pixels x %.0f "
         "frames.\n\n",
@@ -137,7 +141,7 @@ std::string rooflineMarkdown(const ReportInput& in) {
     for (const std::string& integrator : shown) {
         PathWork w = workOf(in, integrator);
         md += "**" + integrator + "**";
-        if (in.plots) md += " (chart: `" + rooflinePlotName(integrator) + "`)";
+        if (in.plots) md += " (chart: `" + rooflinePlotName(in.sceneName, integrator) + "`)";
         md +=
             "\n\n| GPU | year | FP32 share left by INT32 | FP32 | memory | RT cores | binds | spp at 1080p60 "
             "|\n|---|---|---|---|---|---|---|---|\n";
@@ -149,10 +153,11 @@ std::string rooflineMarkdown(const ReportInput& in) {
                              l.bindingPathsPerSecond() / requiredPathsPerSecond(1.0));
         }
         md += "\n";
-        if (in.plots) md += "![roofline " + integrator + "](" + rooflinePlotName(integrator) + ")\n\n";
+        if (in.plots)
+            md += "![roofline " + integrator + "](" + rooflinePlotName(in.sceneName, integrator) + ")\n\n";
     }
 
-    md += "### Which GPU reaches 1080p60\n\n";
+    md += "#### Which GPU reaches 1080p60\n\n";
     md +=
         "The first GPU of each class whose binding limit reaches the paths per second the threshold needs; "
         "\"trend\" is where a least-squares fit of log2(binding limit) against the year, within the class, "

@@ -1,6 +1,7 @@
 #pragma once
-// The report's "Roofline" section: the GPU table, bytes and integer work per path, each GPU's limits
-// per integrator and the first GPU of each class that reaches the samples the threshold needs.
+// The report's roofline: the GPU table once, and per scene a "Roofline" section with the bytes and
+// integer work per path, each GPU's limits per integrator and the first GPU of each class that reaches
+// the samples the threshold needs.
 #include <string>
 #include <vector>
 
@@ -16,6 +17,10 @@ std::vector<std::string> rooflineIntegrators(const ReportInput& input);
 // What `integrator`'s average path costs in `input`'s scene; throws std::out_of_range without its counts.
 PathWork workOf(const ReportInput& input, const std::string& integrator);
 
+// The GPU table with its ray-rate and integer-lane notes: the same for every scene, so the report gives
+// it once, in its common part.
+std::string rooflineGpuMarkdown();
+// One scene's section (headed "### Roofline", within the scene's section).
 std::string rooflineMarkdown(const ReportInput& input);
 
 }  // namespace fp::study

@@ -1,5 +1,5 @@
 #pragma once
-// study.csv: one row per integrator x denoiser x samples per pixel (columns in README.md, "Study").
+// study.csv: one row per scene x integrator x denoiser x samples per pixel (columns in README.md, "Study").
 #include <string>
 #include <vector>
 

@@ -16,6 +16,7 @@ namespace fp::study {
 
 // One row of study.csv.
 struct StudyRow {
+    std::string scene;  // the scene set's name for it, or the scene file's stem (study/scene_set.h)
     std::string integrator, denoiser;
     int spp = 0;
     // Rendering the spp samples from scratch (median over the runs): wall seconds and process CPU

@@ -55,7 +55,6 @@ TEST(Docs, TheReadmeListsEveryCompareOption) {
 TEST(Docs, TheReadmeListsEveryRealtimeOption) {
     expectReadmeListsOptionsOf("realtime", 25);
 }
-
 TEST(Docs, TheReadmeListsEveryStudyOption) {
     expectReadmeListsOptionsOf("study", 20);
 }

@@ -106,7 +106,7 @@ TEST_F(FrontEndRequest, StudyTakesTheSceneFilesDefaultsAndFlagsOverrideThem) {
             runFragpath("study " + scene_ + " --size 24x20 --max-spp 1 --reference-spp 2 --integrators nee " +
                         "--denoisers none --count-spp 1 --no-plots --quiet --out " + out + " " + flags);
         EXPECT_EQ(r.exitCode, 0) << r.output;
-        return readImage(out + "/reference.exr");
+        return readImage(out + "/reference_scene.exr");  // named after scene.json
     };
     auto close = [](const Image& a, const Image& b) {
         return a.width == b.width && a.height == b.height && rmse(a, b) <= 1e-6 * (1.0 + mean(b));

@@ -86,6 +86,27 @@ TEST_F(RealtimeCli, ReusesItsCachedReferencesAndRefusesAnotherRunsCache) {
         << "a cache without --reference-spp";
 }
 
+// The strip's labels (image/image_grid.h) are white whatever the exposure and tone curve: at -3 stops
+// under Reinhard a radiance of 1 would show as 0.11 (a dark grey). One frame, no reference: one tile
+// and one row label, "frames" (advances f 6, r 5, a 6, m 7, e 6, s 5: 35) + 2 * 2 padding, so the strip
+// is 39 + 32 = 71 wide and 13 (9 text rows + 2 * 2) + 32 = 45 high.
+TEST_F(RealtimeCli, StripLabelsAreWhiteUnderAnyDisplay) {
+    CliRun run = runFragpath(
+        "realtime --size 32x32 --frames 1 --spp 1 --exposure -3 --tonemap reinhard --out " + path("out"));
+    ASSERT_EQ(run.exitCode, 0) << run.output;
+    Image strip = readImageOrPng(path("out/strip.png"));
+    ASSERT_EQ(strip.width, 71);
+    ASSERT_EQ(strip.height, 45);
+    int white = 0;
+    for (int y = 0; y < 13; ++y)  // the header, over the tile: "frame 0"
+        for (int x = 39; x < 71; ++x) white += strip.at(x, y) == glm::vec3(1.0f);
+    int labelWhite = 0;
+    for (int y = 13; y < 45; ++y)
+        for (int x = 0; x < 39; ++x) labelWhite += strip.at(x, y) == glm::vec3(1.0f);
+    EXPECT_GT(white, 20);
+    EXPECT_GT(labelWhite, 20);
+}
+
 TEST_F(RealtimeCli, RefusesWhatItCannotRender) {
     EXPECT_EQ(runFragpath("realtime --frames 1").exitCode, 2);  // no --out
     CliRun bad = runFragpath("realtime --temporal maybe --out " + path("o"));

@@ -183,7 +183,7 @@ TEST_F(SensibleDefaults, EveryFrontEndThatLoadsAScene) {
                            path("study"));
     ASSERT_EQ(r.exitCode, 0) << r.output;
     EXPECT_NE(r.output.find(kNoLight), std::string::npos) << r.output;
-    Image reference = readImage(path("study/reference.exr"));
+    Image reference = readImage(path("study/reference_quad.exr"));  // named after quad.obj
     EXPECT_EQ(reference.at(0, 0), glm::vec3(1.0f));                             // the sky, seen directly
     EXPECT_GT(meanColor(reference, PixelRect{6, 6, 4, 4}).y, 0.5 * kAlbedo.y);  // the quad, lit (nee, 2 spp)
     // bench: the warning, and with --strict the error before any measuring.

@@ -268,5 +268,31 @@ TEST(TemporalPipeline, DebugViewsShowDisocclusionHistoryLengthAndDeviation) {
     EXPECT_NEAR(ratio, expected, 0.04) << "deviation at 4 frames " << deviation4;
 }
 
+// Settled pixels skip the filter: once a still camera's history holds settledSamples, the image is the
+// history's mean (to rounding) (the fade's weight 1 keeps the "filtered" image, which is then the mean); with
+// the threshold above the history, or at 0, the filter runs and the image differs from the mean.
+TEST(TemporalPipeline, PixelsWithALongHistorySkipTheFilter) {
+    ensureGlContext();
+    Scene scene = wallAndBox();
+    Renderer renderer(scene, testShaders());
+    Camera a = SlidePastTheBox().a;
+    const int size = 32, spp = 2;
+    auto differsFromTheMean = [&](float settledSamples) {
+        TemporalPipeline pipeline(testShaders());
+        TemporalSettings t;
+        t.settledSamples = settledSamples;
+        runFrames(renderer, pipeline, a, size, spp, 0, 3, t);  // 6 samples a pixel
+        Image image = pipeline.result(), mean = pipeline.historyMean();
+        // Demodulating by the albedo and multiplying it back rounds: equal means within 1e-5 relative.
+        int differ = 0;
+        for (size_t i = 0; i < image.pixels.size(); ++i)
+            differ += glm::length(image.pixels[i] - mean.pixels[i]) > 1e-5f * glm::length(mean.pixels[i]);
+        return differ;
+    };
+    EXPECT_EQ(differsFromTheMean(6.0f), 0);
+    EXPECT_GT(differsFromTheMean(7.0f), 100);
+    EXPECT_GT(differsFromTheMean(0.0f), 100);
+}
+
 }  // namespace
 }  // namespace fp::test

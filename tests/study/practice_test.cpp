@@ -77,6 +77,7 @@ PracticeInput madeUpPractice() {
     in.width = in.height = 64;
     in.frames = 30;
     in.referenceSpp = 256;
+    in.settledSamples = 16.0;
     in.integrator = "nee";
     in.flipThreshold = 0.1;
     in.outDir = "practice";
@@ -96,6 +97,7 @@ TEST(Practice, SectionTabulatesEveryRunAndSaysWhichWins) {
     EXPECT_EQ(practiceSppReachingThreshold(in), 4);
     std::string md = practiceMarkdown(in);
     EXPECT_NE(md.find("## Practice: temporal reuse and a filter against brute force"), std::string::npos);
+    EXPECT_NE(md.find("a-trous filter that pixels whose history holds 16 samples skip"), std::string::npos);
     // The still pipeline row: 1 spp, 10 ms, mean 0.13, steady 0.08, flicker 0, history 0.
     EXPECT_NE(md.find("| still | reuse + a-trous | 1 | 10.0 | 0.1300 | 0.0800 | 0.0000 | 0.0 |"),
               std::string::npos)
@@ -220,6 +222,43 @@ TEST(SeedClaim, AnswersBothCriteriaWithTheFirstGpuAndYear) {
     EXPECT_NE(md.find("So, under (a): **no**; under (b): **yes at 1 spp, yes at 4 spp**."), std::string::npos)
         << md;
     EXPECT_NE(md.find("Quake II RTX"), std::string::npos);
+}
+
+// A study of two scenes: the practice was measured on the first only, and the report gives it and the
+// seed's claim once, after both scenes, with the first scene's numbers. The second scene's nee path
+// visits 1000 nodes: 64 000 bytes, so 1 spp at 1080p60 needs 0.124e9 x 64 000 = 8e12 B/s, more than
+// any GPU of the table moves (RTX 5090: 1.79e12): with its counts, (b) at 1 spp would find no GPU.
+TEST(SeedClaim, ReportGivesPracticeAndTheClaimOnceForTheFirstScene) {
+    ReportInput first = madeUpStudy();
+    first.sceneName = "first";
+    first.practice = madeUpPractice();
+    first.practice->scene = "first";
+    ReportInput second = madeUpStudy();
+    second.sceneName = "second";
+    second.counts["nee"] = PathCounts{1000.0, 0.0, 0.0, 1.0};
+    std::string md = reportMarkdown({first, second});
+    size_t secondScene = md.find("## Scene: second");
+    ASSERT_NE(secondScene, std::string::npos);
+    size_t practice = md.find("## Practice:");
+    ASSERT_NE(practice, std::string::npos);
+    EXPECT_GT(practice, secondScene);
+    EXPECT_EQ(md.find("## Practice:", practice + 1), std::string::npos);
+    EXPECT_NE(md.find("once per study, on `first` (the first scene studied)", practice), std::string::npos)
+        << md.substr(practice);
+    EXPECT_NE(md.find("- FLIP threshold: 0.1, the study's (`--flip-threshold`).", practice),
+              std::string::npos);
+    size_t claim = md.find("## The seed's claim, in both senses");
+    ASSERT_NE(claim, std::string::npos);
+    EXPECT_GT(claim, practice);
+    EXPECT_EQ(md.find("## The seed's claim", claim + 1), std::string::npos);
+    EXPECT_NE(md.find("for `first`, the first scene studied", claim), std::string::npos) << md.substr(claim);
+    // The first scene's counts: the GTX 980 of 2014 at 1 spp (SeedClaim.AnswersBothCriteria...).
+    EXPECT_NE(
+        md.find("At 1 spp per frame of nee, 0.124 giga paths per second. First x80 card: GTX 980 (2014)",
+                claim),
+        std::string::npos)
+        << md.substr(claim);
+    EXPECT_NE(md.find("over the FLIP threshold 0.1.", claim), std::string::npos) << md.substr(claim);
 }
 
 }  // namespace
