@@ -16,6 +16,7 @@
 #include "gl/context.h"
 #include "image/file_io.h"
 #include "image/image_stats.h"
+#include "realtime/practice_run.h"
 #include "render/renderer.h"
 #include "request/render_request.h"
 #include "study/cpu_peak.h"
@@ -67,6 +68,11 @@ std::vector<OptionGroup> studyOptions() {
             "report.md says what is measured and what assumed)"},
            {"--runs", "", "R", "timed runs of each sweep; times are medians (default 1)"},
            {"--count-spp", "", "N", "samples per pixel of the counting render (default 4)"},
+           {"--practice-frames", "", "N",
+            "frames of each real-time run that the report's Practice section measures, once, on the first "
+            "scene: the real-time pipeline against brute force, on a still and an orbiting camera, judged "
+            "by --flip-threshold (default 20; 0 skips it)"},
+           {"--practice-reference-spp", "", "K", "samples of each practice frame's reference (default 128)"},
            {"--no-plots", "", "", "skip gnuplot (the CSV, strip and report are still written)"},
            {"--quiet", "", "", "no progress lines"}}}},
         kStudyOptions, kStudyDefaults);
@@ -95,6 +101,10 @@ void printStudyUsage() {
         "  report.md             the thresholds, the spp each needs with their sensitivity band, and the\n"
         "                        real-time feasibility estimate and the roofline, per scene\n"
         "  reference_<scene>.exr the reference it rendered (reuse it with --reference, one scene at a time)\n"
+        "  practice/             the practice runs' frames and frames.csv (unless --practice-frames 0)\n"
+        "Once per study, on the first scene studied (cornell for the whole set; with SCENE, that scene),\n"
+        "it also measures the real-time pipeline against brute force (about 3 CPU-minutes at 128x128):\n"
+        "report.md gives that Practice section and \"The seed's claim, in both senses\" after the scenes.\n"
         "The sweep uses --seed S; the rendered reference S + 1. Camera flags need a single scene.\n",
         stdout);
     std::fputs(formatOptions(studyOptions()).c_str(), stdout);
@@ -150,6 +160,8 @@ int studyCommand(const std::vector<std::string>& argv) {
     const int referenceSpp = args.integer("--reference-spp", 1, 1 << 24).value_or(4096);
     const int runs = args.integer("--runs", 1, 100).value_or(1);
     const int countSpp = args.integer("--count-spp", 1, 1 << 16).value_or(4);
+    const int practiceFrames = args.integer("--practice-frames", 0, 10000).value_or(20);
+    const int practiceReferenceSpp = args.integer("--practice-reference-spp", 1, 1 << 20).value_or(128);
     const double threshold = args.number("--threshold").value_or(float(study::kDefaultRelMseThreshold));
     if (!(threshold > 0.0)) throw Error("--threshold must be a positive relative MSE");
     const double ssimThreshold =
@@ -301,6 +313,24 @@ int studyCommand(const std::vector<std::string>& argv) {
         report.plots = plots;
         report.lightEntries = int(renderer.stats().emitters + renderer.stats().punctualLights);
         report.sceneBytes = double(renderer.stats().gpuBytes);
+        // Practice against brute force costs minutes (README.md, "Study"), so it runs once, on the first
+        // scene, with that scene's renderer, settings and camera; report.md gives it after the scenes.
+        if (practiceFrames > 0 && reports.empty()) {
+            PracticeOptions practice;
+            practice.settings = settings;
+            practice.display = request.display();
+            practice.camera = camera;
+            practice.sceneName = entry.name;
+            practice.sceneKey =
+                report.scene + ", environment " + args.text("--environment").value_or("the scene's");
+            practice.frames = practiceFrames;
+            practice.referenceSpp = practiceReferenceSpp;
+            practice.flipThreshold = flipThreshold;
+            practice.outDir = outPath("practice");
+            if (!quiet) practice.progress = say;
+            report.practice = measurePractice(renderer, practice);
+            report.practice->outDir = "practice";  // as report.md links it
+        }
         allRows.insert(allRows.end(), result.rows.begin(), result.rows.end());
         reports.push_back(std::move(report));
         // What is finished stays on disk if a later scene fails.
@@ -314,7 +344,8 @@ int studyCommand(const std::vector<std::string>& argv) {
     std::string md = study::reportMarkdown(reports);
     writeFileAtomically(outPath("report.md"), std::vector<std::uint8_t>(md.begin(), md.end()));
     say("wrote " + out + "/study.csv, strip_*.png, report.md" +
-        (plots ? ", plots.gp, *_roofline.gp and their PNGs" : ""));
+        (plots ? ", plots.gp, *_roofline.gp and their PNGs" : "") +
+        (practiceFrames > 0 ? ", practice/" : ""));
     return 0;
 }
 

@@ -13,6 +13,7 @@
 #include "study/plots.h"
 #include "study/roofline_report.h"
 #include "study/scene_set.h"
+#include "study/seed_claim.h"
 #include "study/spp_needed.h"
 
 namespace fp::study {
@@ -343,6 +344,10 @@ std::string reportMarkdown(const std::vector<ReportInput>& scenes) {
     md += rooflineGpuMarkdown();
 
     for (const ReportInput& scene : scenes) md += sceneSections(scene);
+    // Once per study, for the first scene: the practice measurement costs minutes (study_command.cpp
+    // makes it there), and the seed's claim uses it with that scene's roofline.
+    if (in.practice) md += practiceMarkdown(*in.practice);
+    md += seedClaimMarkdown(in);
     return md;
 }
 

@@ -2,12 +2,14 @@
 // report.md: the study's setup, the noise threshold and the samples each integrator and denoiser
 // needs to get under it, the plots and the strip, and the real-time feasibility estimate.
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "study/cpu_peak.h"
 #include "study/flop_model.h"
 #include "study/image_strip.h"
+#include "study/practice.h"
 #include "study/sweep.h"
 #include "study/thresholds.h"
 
@@ -35,6 +37,8 @@ struct ReportInput {
     // The scene's light-selection entries and GPU buffer bytes, for the roofline (roofline.h).
     int lightEntries = 0;
     double sceneBytes = 0.0;
+    // The real-time pipeline against brute force (practice.h); unset: not measured (--practice-frames 0).
+    std::optional<PracticeInput> practice;
 };
 
 // The numbers the feasibility section derives for one integrator and denoiser (also for tests).

@@ -33,6 +33,8 @@ std::string answerText(const ClassAnswer& a) {
     return formatText("none up to 2025 (trend ~%.0f)", a.trendYear);
 }
 
+}  // namespace
+
 PathWork workOf(const ReportInput& in, const std::string& integrator) {
     PathWork w;
     w.counts = in.counts.at(integrator);
@@ -40,8 +42,6 @@ PathWork workOf(const ReportInput& in, const std::string& integrator) {
     w.lightEntries = in.lightEntries;
     return w;
 }
-
-}  // namespace
 
 std::vector<std::string> rooflineIntegrators(const ReportInput& in) {
     std::vector<std::string> result;

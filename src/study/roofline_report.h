@@ -6,12 +6,16 @@
 #include <vector>
 
 #include "study/report.h"
+#include "study/roofline.h"
 
 namespace fp::study {
 
 // The integrators of `input` that have path counts and at least one denoiser whose series reaches the
 // threshold (measured or extrapolated): the ones the section and the chart show.
 std::vector<std::string> rooflineIntegrators(const ReportInput& input);
+
+// What `integrator`'s average path costs in `input`'s scene; throws std::out_of_range without its counts.
+PathWork workOf(const ReportInput& input, const std::string& integrator);
 
 // The GPU table with its ray-rate and integer-lane notes: the same for every scene, so the report gives
 // it once, in its common part.

@@ -145,7 +145,8 @@ TEST_F(StudyTest, StudiesSeveralScenesInOneRun) {
     const std::string out = path("set");
     CliRun run = runFragpath(
         "study --scenes cornell,environment --size 16x16 --max-spp 2 --reference-spp 16 --integrators nee "
-        "--denoisers none --no-plots --quiet --flip-threshold 0.1 --ssim-threshold 0.9 --out " +
+        "--denoisers none --no-plots --quiet --flip-threshold 0.1 --ssim-threshold 0.9 --practice-frames 3 "
+        "--practice-reference-spp 16 --out " +
         out);
     ASSERT_EQ(run.exitCode, 0) << run.output;
     std::ifstream csv(out + "/study.csv");
@@ -181,6 +182,19 @@ TEST_F(StudyTest, StudiesSeveralScenesInOneRun) {
     ASSERT_NE(cornellRoofline, std::string::npos);
     EXPECT_LT(cornellRoofline, environment);
     EXPECT_NE(report.find("### Roofline", environment), std::string::npos);
+    // The practice runs once, on the first scene, judged by the study's --flip-threshold; its section and
+    // the seed's claim follow the scenes and name it.
+    size_t practice = report.find("## Practice:");
+    ASSERT_NE(practice, std::string::npos);
+    EXPECT_GT(practice, environment);
+    EXPECT_EQ(report.find("## Practice:", practice + 1), std::string::npos);
+    EXPECT_NE(report.find("on `cornell` (the first scene studied)", practice), std::string::npos);
+    EXPECT_NE(report.find("- FLIP threshold: 0.1, the study's", practice), std::string::npos);
+    EXPECT_TRUE(std::filesystem::exists(out + "/practice/moving/pipeline_1spp/frames.csv"));
+    size_t claim = report.find("## The seed's claim, in both senses");
+    ASSERT_NE(claim, std::string::npos);
+    EXPECT_GT(claim, practice);
+    EXPECT_NE(report.find("`cornell`, the first scene studied", claim), std::string::npos);
 }
 
 TEST_F(StudyTest, RejectsBadRequestsBeforeRendering) {
