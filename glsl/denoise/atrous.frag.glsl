@@ -9,17 +9,11 @@
 // weight tightens as the noise goes.
 #include "denoise/edge_stopping.glsl"
 
-uniform sampler2D uColor;  // (demodulated colour, luminance variance of its mean)
+// (demodulated colour, luminance variance of its mean). A pixel the real-time pipeline passes through
+// unfiltered (denoise/unsettled.frag.glsl) keeps its input, where the variance may be -1 (not estimated):
+// as a neighbour it counts as 0.
+uniform sampler2D uColor;
 uniform int uStep;
-// The real-time pipeline's history, (mean, samples N) per pixel, and the N from which a pixel passes
-// through unfiltered (0: every pixel is filtered, as the spatial denoiser does). Once N is large the
-// variance of the mean is small, eq. 5's luminance weight admits few neighbours and the filter changes
-// little (measured on the Cornell orbit: reuse with and without the filter reach the same FLIP once the
-// history is ten frames long), so skipping those pixels costs little quality and saves most of the
-// taps where the history is long, which on a moving camera is most pixels.
-uniform sampler2D uSettled;
-uniform float uSettledSamples;
-
 out vec4 outColor;
 
 // g_3x3 of eq. 5: the binomial 3x3 Gaussian (1/4, 1/2, 1/4 per axis) over the pixels that have samples.
@@ -31,7 +25,7 @@ float prefilteredVariance(ivec2 p) {
             ivec2 q = p + ivec2(dx, dy);
             if (!inImage(q) || !isNeighbour(texelFetch(uGuide, q, 0))) continue;
             float w = k[dx + 1] * k[dy + 1];
-            sum += w * texelFetch(uColor, q, 0).a;
+            sum += w * max(texelFetch(uColor, q, 0).a, 0.0);
             weights += w;
         }
     return weights > 0.0 ? sum / weights : 0.0;
@@ -40,10 +34,6 @@ float prefilteredVariance(ivec2 p) {
 void main() {
     const float h[5] = float[5](1.0 / 16.0, 1.0 / 4.0, 3.0 / 8.0, 1.0 / 4.0, 1.0 / 16.0);  // B3 spline
     ivec2 p = ivec2(gl_FragCoord.xy);
-    if (uSettledSamples > 0.0 && texelFetch(uSettled, p, 0).a >= uSettledSamples) {
-        outColor = texelFetch(uColor, p, 0);
-        return;
-    }
     vec4 guide = texelFetch(uGuide, p, 0);
     if (guide.w == kEmitter) {
         outColor = texelFetch(uColor, p, 0);
@@ -65,7 +55,7 @@ void main() {
             float w = h[dx + 2] * h[dy + 2] * geometryWeight(guide, g, gradient, vec2(offset)) *
                       luminanceWeight(lp, luminance(c.rgb), varianceP);
             color += w * c.rgb;
-            variance += w * w * c.a;
+            variance += w * w * max(c.a, 0.0);
             weights += w;
         }
     // A pixel without samples has weight 0 itself and takes its neighbours' value (0 if none has any).

@@ -14,9 +14,9 @@ namespace {
 constexpr int kFirstUnit = layout::kFirstFreeUnit + 8;
 constexpr int kSpareUnit = kFirstUnit + 7;
 
-const char* const kPassFiles[] = {"denoise/prepare.frag.glsl", "denoise/variance.frag.glsl",
+const char* const kPassFiles[] = {"denoise/prepare.frag.glsl",   "denoise/variance.frag.glsl",
                                   "denoise/bilateral.frag.glsl", "denoise/atrous.frag.glsl",
-                                  "denoise/finish.frag.glsl"};
+                                  "denoise/finish.frag.glsl",    "denoise/unsettled.frag.glsl"};
 
 }  // namespace
 
@@ -51,6 +51,8 @@ void DenoisePasses::resize(int width, int height) {
         glDeleteFramebuffers(1, &prepareFramebuffer_);
         glDeleteFramebuffers(kTextureCount, framebuffers_.data());
         glDeleteTextures(kTextureCount, textures_.data());
+        glDeleteRenderbuffers(1, &stencil_);
+        glDeleteFramebuffers(1, &copyFramebuffer_);
     }
     width_ = width;
     height_ = height;
@@ -65,6 +67,16 @@ void DenoisePasses::resize(int width, int height) {
         glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
         glBindFramebuffer(GL_FRAMEBUFFER, framebuffers_[size_t(t)]);
         glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, textures_[size_t(t)], 0);
+    }
+    glGenFramebuffers(1, &copyFramebuffer_);
+    glGenRenderbuffers(1, &stencil_);
+    glBindRenderbuffer(GL_RENDERBUFFER, stencil_);
+    glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH24_STENCIL8, width, height);
+    for (Texture t : {kColorA, kColorB}) {
+        glBindFramebuffer(GL_FRAMEBUFFER, framebuffers_[t]);
+        glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_RENDERBUFFER, stencil_);
+        if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
+            throw Error("the denoiser's float render targets with a stencil buffer are not supported here");
     }
     glGenFramebuffers(1, &prepareFramebuffer_);
     glBindFramebuffer(GL_FRAMEBUFFER, prepareFramebuffer_);
@@ -136,10 +148,9 @@ void DenoisePasses::filter(GLuint color, GLuint guide, GLuint modulate, int widt
     // `color` may be colour A).
     GLuint current = color;
     Texture next = kColorB;
-    if (!settled) settledSamples = 0.0f;
+    if (settled && settledSamples > 0.0f) shadeOnlyUnsettled(color, settled, settledSamples);
     auto pass = [&](Pass p) {
-        draw(p, framebuffers_[next],
-             {{"uColor", current}, {"uGuide", guide}, {"uSettled", settled ? settled : guide}});
+        draw(p, framebuffers_[next], {{"uColor", current}, {"uGuide", guide}});
         current = textures_[next];
         next = next == kColorA ? kColorB : kColorA;
     };
@@ -150,13 +161,41 @@ void DenoisePasses::filter(GLuint color, GLuint guide, GLuint modulate, int widt
         for (int i = 0; i < kAtrousIterations; ++i) {
             program(kAtrous).use();
             program(kAtrous).set("uStep", 1 << i);
-            program(kAtrous).set("uSettledSamples", settledSamples);
             pass(kAtrous);
         }
     }
+    glDisable(GL_STENCIL_TEST);
     draw(kFinish, framebuffers_[kResult], {{"uColor", current}, {"uAlbedo", modulate}});
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     glActiveTexture(GLenum(GL_TEXTURE0 + kSpareUnit));
+}
+
+void DenoisePasses::shadeOnlyUnsettled(GLuint color, GLuint settled, float settledSamples) {
+    // A pass-through pixel is never written: both colour textures hold its input from the start.
+    if (color == textures_[kColorA] || color == textures_[kColorB])
+        throw Error("internal: DenoisePasses::filter passes pixels through only from an input of its own");
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, copyFramebuffer_);
+    glFramebufferTexture2D(GL_READ_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, color, 0);
+    glReadBuffer(GL_COLOR_ATTACHMENT0);
+    for (Texture t : {kColorA, kColorB}) {
+        glBindFramebuffer(GL_DRAW_FRAMEBUFFER, framebuffers_[t]);
+        glBlitFramebuffer(0, 0, width_, height_, 0, 0, width_, height_, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+    }
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
+    glBindFramebuffer(GL_FRAMEBUFFER, framebuffers_[kColorA]);
+    glClearStencil(0);
+    glClear(GL_STENCIL_BUFFER_BIT);
+    glEnable(GL_STENCIL_TEST);
+    glStencilMask(0xff);
+    glStencilFunc(GL_ALWAYS, 1, 0xff);
+    glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
+    glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+    program(kUnsettled).use();
+    program(kUnsettled).set("uSettledSamples", settledSamples);
+    draw(kUnsettled, framebuffers_[kColorA], {{"uSettled", settled}});
+    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    glStencilFunc(GL_EQUAL, 1, 0xff);
+    glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
 }
 
 std::vector<glm::vec4> DenoisePasses::read(Texture texture) const {

@@ -38,9 +38,10 @@ class DenoisePasses {
     // pipeline, src/realtime/temporal_pipeline.h): `color` holds (demodulated colour, luminance variance
     // of its mean, or -1 to estimate it), `guide` and `modulate` what the prepare pass writes; none is
     // changed. `which` is not None. With `settled` (the real-time history: (mean, samples) per pixel) and
-    // settledSamples > 0, the a-trous levels pass pixels whose history holds at least that many samples
-    // through unfiltered: their mean is already as clean as the filter would make it (measured:
-    // glsl/denoise/atrous.frag.glsl), and skipping them is most of the filter's cost on a moving camera.
+    // settledSamples > 0, pixels whose history holds at least that many samples pass through unfiltered:
+    // their mean is already as clean as the filter would make it (glsl/denoise/unsettled.frag.glsl). The
+    // stencil buffer keeps the variance and a-trous passes from shading them at all, which on a moving
+    // camera is most of the filter's cost.
     void filter(GLuint color, GLuint guide, GLuint modulate, int width, int height, Denoiser which,
                 GLuint settled = 0, float settledSamples = 0.0f);
     // The last result, (denoised radiance, 1) per pixel, at the accumulation's size.
@@ -53,12 +54,15 @@ class DenoisePasses {
 
   private:
     enum Texture { kColorA, kColorB, kGuide, kAlbedo, kResult, kTextureCount };
-    enum Pass { kPrepare, kVariance, kBilateral, kAtrous, kFinish, kPassCount };
+    enum Pass { kPrepare, kVariance, kBilateral, kAtrous, kFinish, kUnsettled, kPassCount };
     void resize(int width, int height);
     Program& program(Pass pass);
     std::vector<glm::vec4> read(Texture texture) const;  // rows top first
     // Draws `pass` into framebuffer `target`, with `inputs` bound to units in order, named `names`.
     void draw(Pass pass, GLuint target, std::initializer_list<std::pair<const char*, GLuint>> inputs);
+    // Copies `color` into both colour textures and leaves the stencil test on, passing only the pixels
+    // whose history holds fewer than settledSamples samples.
+    void shadeOnlyUnsettled(GLuint color, GLuint settled, float settledSamples);
 
     ShaderLibrary shaders_;
     std::array<std::unique_ptr<Program>, kPassCount> programs_;
@@ -66,6 +70,8 @@ class DenoisePasses {
     std::array<GLuint, kTextureCount> textures_{};
     GLuint prepareFramebuffer_ = 0;                     // writes colour A, guide and albedo
     std::array<GLuint, kTextureCount> framebuffers_{};  // one per texture, for the other passes
+    GLuint stencil_ = 0;          // renderbuffer shared by the colour A and B framebuffers
+    GLuint copyFramebuffer_ = 0;  // reads the filter's input for shadeOnlyUnsettled
     GLuint vertexArray_ = 0;
 };
 

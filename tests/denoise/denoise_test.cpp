@@ -325,5 +325,45 @@ TEST(Denoise, DoesNotBlurAcrossANormalDiscontinuity) {
     }
 }
 
+// The real-time pipeline's pass-through (DenoisePasses::filter with `settled`): pixels whose history is
+// long are never shaded, and their neighbours must read their input at every level. On a flat field
+// (one colour, one plane) with every other pixel settled, every pixel comes out as the input times the
+// albedo. Filtering another image first (1.5 times as bright, close enough for the luminance weight to
+// admit it) leaves that image in the filter's textures, where a neighbour whose input was not copied
+// would show it.
+TEST(Denoise, PassedThroughPixelsLendTheirInputToTheirNeighbours) {
+    ensureGlContext();
+    const int size = 16;
+    auto texture = [&](auto valueAt) {
+        std::vector<glm::vec4> texels;
+        for (int y = 0; y < size; ++y)
+            for (int x = 0; x < size; ++x) texels.push_back(valueAt(x, y));
+        GLuint t = 0;
+        glGenTextures(1, &t);
+        glBindTexture(GL_TEXTURE_2D, t);
+        glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA32F, size, size, 0, GL_RGBA, GL_FLOAT, texels.data());
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+        return t;
+    };
+    const glm::vec4 color(0.2f, 0.4f, 0.6f, 0.01f), old(0.3f, 0.6f, 0.9f, 0.01f);
+    GLuint input = texture([&](int, int) { return color; });
+    GLuint oldInput = texture([&](int, int) { return old; });
+    GLuint guide = texture([](int, int) { return glm::vec4(0.0f, 0.0f, 1.0f, 2.0f); });  // a plane at 2
+    GLuint modulate = texture([](int, int) { return glm::vec4(2.0f, 2.0f, 2.0f, 0.0f); });
+    GLuint settled =
+        texture([](int x, int y) { return glm::vec4(0.0f, 0.0f, 0.0f, (x + y) % 2 ? 0.0f : 16.0f); });
+    DenoisePasses passes;
+    passes.filter(oldInput, guide, modulate, size, size, Denoiser::Atrous);
+    passes.filter(input, guide, modulate, size, size, Denoiser::Atrous, settled, 16.0f);
+    Image out = passes.result();
+    for (int y = 0; y < size; ++y)
+        for (int x = 0; x < size; ++x)
+            for (int c = 0; c < 3; ++c)
+                ASSERT_NEAR(out.at(x, y)[c], 2.0f * color[c], 1e-5f) << "at " << x << "," << y;
+    GLuint textures[] = {input, oldInput, guide, modulate, settled};
+    glDeleteTextures(5, textures);
+}
+
 }  // namespace
 }  // namespace fp::test
