@@ -143,6 +143,7 @@ void DenoisePasses::filter(GLuint color, GLuint guide, GLuint modulate, int widt
     resize(width, height);
     glDisable(GL_SCISSOR_TEST);
     glDisable(GL_BLEND);
+    glDisable(GL_DEPTH_TEST);  // colours A and B have a depth-stencil buffer, for the stencil alone
     glBindVertexArray(vertexArray_);
     // The first pass reads `color`, the others ping-pong between colours A and B (B first, so that
     // `color` may be colour A).
@@ -183,10 +184,10 @@ void DenoisePasses::shadeOnlyUnsettled(GLuint color, GLuint settled, float settl
     }
     glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
     glBindFramebuffer(GL_FRAMEBUFFER, framebuffers_[kColorA]);
+    glStencilMask(0xff);  // glClear writes only the bits the mask lets through
     glClearStencil(0);
     glClear(GL_STENCIL_BUFFER_BIT);
     glEnable(GL_STENCIL_TEST);
-    glStencilMask(0xff);
     glStencilFunc(GL_ALWAYS, 1, 0xff);
     glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
     glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
