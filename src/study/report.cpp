@@ -8,6 +8,7 @@
 #include "core/text.h"
 #include "study/feasibility.h"
 #include "study/flop_model.h"
+#include "study/gpus.h"
 #include "study/metric_answer.h"
 #include "study/metrics.h"
 #include "study/plots.h"
@@ -41,7 +42,8 @@ std::vector<StudyRow> seriesOf(const std::vector<StudyRow>& rows, const std::str
 
 std::string yearText(const YearAnswer& a) {
     if (a.firstGpuYear) return formatText("%d (%s)", *a.firstGpuYear, a.firstGpuName.c_str());
-    return formatText("none up to 2025; the trend line reaches it in ~%.0f", a.extrapolatedYear);
+    return formatText("none up to %d; the trend line reaches it in ~%.0f", gpuTable().back().year,
+                      a.extrapolatedYear);  // the table runs by year
 }
 
 }  // namespace

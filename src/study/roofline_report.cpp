@@ -4,6 +4,7 @@
 
 #include "core/text.h"
 #include "study/feasibility.h"
+#include "study/gpus.h"
 #include "study/roofline.h"
 #include "study/roofline_plot.h"
 
@@ -30,10 +31,14 @@ std::string raysText(const Gpu& g) {
 
 std::string answerText(const ClassAnswer& a) {
     if (a.year) return formatText("%d (%s)", *a.year, a.gpu.c_str());
-    return formatText("none up to 2025 (trend ~%.0f)", a.trendYear);
+    return noGpuReachesText(a);
 }
 
 }  // namespace
+
+std::string noGpuReachesText(const ClassAnswer& a) {
+    return formatText("none up to %d (trend ~%.0f)", gpuTable().back().year, a.trendYear);  // by year
+}
 
 PathWork workOf(const ReportInput& in, const std::string& integrator) {
     PathWork w;

@@ -17,6 +17,10 @@ std::vector<std::string> rooflineIntegrators(const ReportInput& input);
 // What `integrator`'s average path costs in `input`'s scene; throws std::out_of_range without its counts.
 PathWork workOf(const ReportInput& input, const std::string& integrator);
 
+// A class's answer when no GPU of the table reaches the rate: the table's last year and the year the
+// class's trend line gets there ("none up to 2025 (trend ~2031)").
+std::string noGpuReachesText(const ClassAnswer& answer);
+
 // The GPU table with its ray-rate and integer-lane notes: the same for every scene, so the report gives
 // it once, in its common part.
 std::string rooflineGpuMarkdown();

@@ -30,7 +30,7 @@ SeedAnswer answerFor(const ReportInput& in, const std::string& integrator, const
 
 std::string gpuText(const ClassAnswer& a) {
     if (a.year) return formatText("%s (%d)", a.gpu.c_str(), *a.year);
-    return formatText("none up to 2025 (trend ~%.0f)", a.trendYear);
+    return noGpuReachesText(a);
 }
 
 std::string answerText(const SeedAnswer& a) {
