@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "core/error.h"
+#include "core/statistics.h"
 #include "core/text.h"
 
 namespace fp::study {
@@ -12,12 +13,6 @@ namespace {
 
 void requireFinite(double value, const char* what) {
     if (!std::isfinite(value)) throw Error(std::string("practice run: ") + what + " is not finite");
-}
-
-double median(std::vector<double> values) {
-    std::sort(values.begin(), values.end());
-    size_t n = values.size();
-    return n % 2 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
 }
 
 std::string runName(const PracticeRun& r) {
