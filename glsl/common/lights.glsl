@@ -274,8 +274,9 @@ float sphericalSamplingArea(TriangleData tri, vec3 from) {
 
 LightSample sampleLight(vec3 from) {
     LightSample ls = LightSample(vec3(0.0, 0.0, 1.0), 0.0, vec3(0.0), 0.0, vec3(0.0), vec3(0.0), 0.0, false);
+    // The choice between the environment and the emitters draws a number only when there is one to make.
     float pEnvironment = environmentSelection();
-    if (rand() < pEnvironment) {
+    if (pEnvironment > 0.0 && (pEnvironment >= 1.0 || rand() < pEnvironment)) {
         ls.dir = sampleEnvironmentDirection();
         ls.dist = INF;
         ls.radiance = environmentRadiance(ls.dir);

@@ -95,12 +95,15 @@ vec2 randAt(uint pair) {
 // node's four children, chosen per node: Ahmed & Wonka's isotropy) and by a binary Owen scramble per
 // pair, so that pairs do not share one arrangement.
 // Sample k of pixel p depends only on (seed, p, k): any range of samples renders on its own.
-// Dimension layout (the order of the calls): pair 0 the pixel jitter; then per bounce, nee: light
-// choice, emitter pick, point on the emitter (2D), BSDF direction (2D), BSDF lobe, roulette; bsdf and
-// naive: BSDF direction, lobe, roulette; bdpt's light subpath starts at pair 2^31 (its second stream,
-// scrambled per pixel: see rand2). Out of that order (randAt, below): the lens of a thin-lens camera,
-// pair 2^30 of the camera stream, and in the light stream pairs 2^31 + 2^30 + 2s for light tracing's
-// lens point toward light vertex s (camera.glsl; 2s: independent numbers take one counter per number).
+// Dimension layout (the order of the calls): pair 0 the pixel jitter; then per bounce, nee: the choice
+// between the environment and the emitters (only in scenes with both), the emitter and the point on it
+// (one pair, sampleEmitterPoint; a second one for an emitter of under 2^-12 of the power), then
+// drawBounceNumbers' two pairs, the BSDF direction and (lobe choice, roulette); bsdf and naive:
+// drawBounceNumbers' two pairs; a dispersive glass draws the path's wavelength where the path first
+// meets one. bdpt's light subpath starts at pair 2^31 (its second stream, scrambled per pixel: see
+// rand2). Out of that order (randAt, below): the lens of a thin-lens camera, pair 2^30 of the camera
+// stream, and in the light stream pairs 2^31 + 2^30 + 2s for light tracing's lens point toward light
+// vertex s (camera.glsl).
 
 // Laine & Karras 2011 style permutation, with Burley's constants: flips each bit of x depending on
 // the bits below it only.
@@ -136,10 +139,16 @@ uint hashWord(uint v) {
     return (word >> 22u) ^ word;
 }
 
-// The 24 permutations of a node's four children, each as four 2-bit digits (the image of 0 lowest).
-const uint kChildPermutations[24] = uint[24](0xe4u, 0xb4u, 0xd8u, 0x78u, 0x9cu, 0x6cu, 0xe1u, 0xb1u, 0xc9u,
-    0x39u, 0x8du, 0x2du, 0xd2u, 0x72u, 0xc6u, 0x36u, 0x4eu, 0x1eu, 0x93u, 0x63u, 0x87u, 0x27u, 0x4bu,
-    0x1bu);
+// A random permutation of a node's four children (2-bit digits d), uniform over all 24, from hash h.
+// Every permutation of four things is an affine map of GF(2)^2, d -> A d + b: the 6 invertible 2x2
+// matrices A (GL(2, 2), which permutes the three nonzero digits as S3 does) times the 4 shifts b. A is
+// given by the images (a1, a2) of digits 1 and 2, a pair of distinct nonzero digits, packed 4 bits each.
+const uint kInvertibleMatrices = 0xbe7d69u;  // (a1 | a2 << 2): (1,2) (2,1) (1,3) (3,1) (2,3) (3,2)
+
+uint permuteChild(uint d, uint h) {
+    uint a = (kInvertibleMatrices >> (4u * (((h >> 16u) * 6u) >> 16u))) & 15u;
+    return ((d & 1u) * (a & 3u)) ^ ((d >> 1u) * (a >> 2u)) ^ (h & 3u);
+}
 
 const uint kTileLevels = 6u;  // the Z-order covers 64x64 tiles: 12 digits of the shifts
 
@@ -156,9 +165,7 @@ uint shuffledZOrder(uvec2 pixel, uint seed) {
     for (uint level = 0u; level < kTileLevels; ++level) {
         uint shift = 2u * (kTileLevels - 1u - level);  // the digit's place, from the top
         uint node = (z >> (shift + 2u)) | (1u << (2u * level));  // which node: the digits above, tagged
-        uint h = hashWord(tileSeed ^ node);
-        uint permutation = kChildPermutations[((h >> 16u) * 24u) >> 16u];
-        shuffled |= ((permutation >> (2u * ((z >> shift) & 3u))) & 3u) << shift;
+        shuffled |= permuteChild((z >> shift) & 3u, hashWord(tileSeed ^ node)) << shift;
     }
     return shuffled;
 }
@@ -212,15 +219,13 @@ float rand() { return rand2().x; }
 void samplerInit(uint seed, uvec2 pixel, uint sampleIndex) {}
 
 // ---- independent numbers (`--sampler independent`): the plain Monte Carlo of the textbooks ----
-// Uniform in [0, 1): the hash's top 24 bits, so the float is exact.
-float rand() {
-    uint word = pcg4d(rngKey).x;
+// Uniform in [0, 1): the hash's top 24 bits, so the float is exact. A pair takes two of the four words of
+// one hash (one counter), as a Sobol pair takes one dimension pair.
+vec2 rand2() {
+    uvec2 words = pcg4d(rngKey).xy;
     ++rngKey.w;
-    return float(word >> 8u) * (1.0 / 16777216.0);
+    return vec2(words >> 8u) * (1.0 / 16777216.0);
 }
 
-vec2 rand2() {
-    float x = rand();
-    return vec2(x, rand());
-}
+float rand() { return rand2().x; }
 #endif

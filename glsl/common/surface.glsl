@@ -164,14 +164,29 @@ vec3 takeIndirect() {
     return uClampIndirect > 0.0 && m > uClampIndirect ? c * (uClampIndirect / m) : c;
 }
 
+// The random numbers that continue a path from a surface, in the order of rng.glsl's dimension layout:
+// the BSDF direction takes a pair, and the lobe choice and Russian roulette share the next pair, one
+// coordinate each (three pairs would cost the Sobol sampler a third more per bounce, and a (0, 2)-sequence
+// stratifies the two coordinates of a pair jointly as well as apart).
+struct BounceNumbers {
+    vec3 bsdf;       // for bsdfSample: the direction (xy) and the lobe choice (z)
+    float roulette;  // for survivesRoulette
+};
+
+BounceNumbers drawBounceNumbers() {
+    vec2 direction = rand2();
+    vec2 lobeAndRoulette = rand2();
+    return BounceNumbers(vec3(direction, lobeAndRoulette.x), lobeAndRoulette.y);
+}
+
 // Russian roulette (as in pbrt-v4 PathIntegrator::Li): after a few bounces, stop a path with probability
-// 1 - max(beta) and reweight the survivors, which keeps the estimate unbiased.
+// 1 - max(beta) and reweight the survivors, which keeps the estimate unbiased. u: drawBounceNumbers'.
 int gBounces = 0;  // bounces the current path survived, for the bounces view
 
-bool survivesRoulette(inout vec3 beta, int depth) {
+bool survivesRoulette(inout vec3 beta, int depth, float u) {
     if (depth >= 3) {
         float keep = min(1.0, max(beta.r, max(beta.g, beta.b)));
-        if (rand() >= keep) return false;
+        if (u >= keep) return false;
         beta /= keep;
     }
     ++gBounces;

@@ -207,7 +207,8 @@ vec3 radiance(Ray ray) {
         }
 
         BsdfSample bs;
-        if (!bsdfSample(s.material, wo, vec3(rand2(), rand()), s.eta, bs)) break;
+        BounceNumbers u = drawBounceNumbers();
+        if (!bsdfSample(s.material, wo, u.bsdf, s.eta, bs)) break;
         vec3 dir = toWorld(s, bs.wi);
         if (!sameSide(s, bs.wi, dir)) break;
         beta *= bs.weight;
@@ -219,7 +220,7 @@ vec3 radiance(Ray ray) {
             if (t >= 3) gCamera[t - 2].pdfRev = toArea(vertexPdf(z, s.material, dir, -ray.dir), z.p, gCamera[t - 2]);
             pdfDir = bs.pdf;
         }
-        if (!survivesRoulette(beta, depth)) break;
+        if (!survivesRoulette(beta, depth, u.roulette)) break;
         ray = spawnRay(s, dir);
     }
     return L;

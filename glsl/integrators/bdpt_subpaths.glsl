@@ -314,7 +314,7 @@ int traceLightSubpath(int maxDepth) {
         vec3 wo = toLocal(s, -ray.dir);
         if (wo.z <= 0.0) break;  // -ray.dir disagrees with the shading normal: f = 0
         BsdfSample bs;
-        if (!bsdfSample(s.material, wo, vec3(rand2(), rand()), s.eta, bs)) break;
+        if (!bsdfSample(s.material, wo, drawBounceNumbers().bsdf, s.eta, bs)) break;
         vec3 next = toWorld(s, bs.wi);
         if (!sameSide(s, bs.wi, next)) break;
         // Adjoint BSDF (see vertexBsdf): undo the radiance scaling and correct for the shading normal.

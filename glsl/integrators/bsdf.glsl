@@ -16,11 +16,12 @@ vec3 radiance(Ray ray) {
         addLight(L, beta * emittedRadiance(s), depth);
         if (depth == uMaxDepth) break;
         BsdfSample bs;
-        if (!bsdfSample(s.material, toLocal(s, -ray.dir), vec3(rand2(), rand()), s.eta, bs)) break;
+        BounceNumbers u = drawBounceNumbers();
+        if (!bsdfSample(s.material, toLocal(s, -ray.dir), u.bsdf, s.eta, bs)) break;
         vec3 dir = toWorld(s, bs.wi);
         if (!sameSide(s, bs.wi, dir)) break;
         beta *= bs.weight;
-        if (!survivesRoulette(beta, depth)) break;
+        if (!survivesRoulette(beta, depth, u.roulette)) break;
         ray = spawnRay(s, dir);
     }
     return L + takeIndirect();

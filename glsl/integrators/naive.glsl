@@ -18,18 +18,19 @@ vec3 radiance(Ray ray) {
         // The view direction below the shading normal: f = 0, as in the other integrators.
         if (dot(-ray.dir, s.shadingNormal) <= 0.0) break;
         vec3 dir;
+        BounceNumbers u = drawBounceNumbers();
         if (s.material.type == MATERIAL_DIFFUSE) {
-            dir = sampleUniformHemisphere(s.shadingNormal, rand2());
+            dir = sampleUniformHemisphere(s.shadingNormal, u.bsdf.xy);
             if (dot(dir, s.geometricNormal) <= 0.0) break;
             beta *= 2.0 * s.material.diffuse * dot(dir, s.shadingNormal);
         } else {
             BsdfSample bs;
-            if (!bsdfSample(s.material, toLocal(s, -ray.dir), vec3(rand2(), rand()), s.eta, bs)) break;
+            if (!bsdfSample(s.material, toLocal(s, -ray.dir), u.bsdf, s.eta, bs)) break;
             dir = toWorld(s, bs.wi);
             if (!sameSide(s, bs.wi, dir)) break;
             beta *= bs.weight;
         }
-        if (!survivesRoulette(beta, depth)) break;
+        if (!survivesRoulette(beta, depth, u.roulette)) break;
         ray = spawnRay(s, dir);
     }
     // Light is found only where a path hits it, so point, spot and directional lights, which nothing can

@@ -40,14 +40,15 @@ vec3 radiance(Ray ray) {
         }
 
         BsdfSample bs;
-        if (!bsdfSample(s.material, wo, vec3(rand2(), rand()), s.eta, bs)) break;
+        BounceNumbers u = drawBounceNumbers();
+        if (!bsdfSample(s.material, wo, u.bsdf, s.eta, bs)) break;
         vec3 dir = toWorld(s, bs.wi);
         if (!sameSide(s, bs.wi, dir)) break;
         beta *= bs.weight;
         lastPdf = bs.pdf;
         lastPosition = s.position;
         fullWeight = bs.delta;
-        if (!survivesRoulette(beta, depth)) break;
+        if (!survivesRoulette(beta, depth, u.roulette)) break;
         ray = spawnRay(s, dir);
     }
     return L + takeIndirect();

@@ -26,10 +26,11 @@ struct Rng {
         : x((px | (py << 16u)) * 1664525u + 1013904223u),
           y(sample * 1664525u + 1013904223u),
           z(seed * 1664525u + 1013904223u) {}
-    float next() {
-        // Scalar, of only what the returned word needs (z's shift and the second round's y, z and w
-        // feed nothing that is kept): vectorised, the hash spilled to the stack and cost a third of
-        // the reference's speed on the Cornell box.
+    // rng.glsl rand2(): the first two words of the hash of the next counter, as floats in [0, 1).
+    // Scalar, of only what those words need (the second round's z and w feed nothing that is kept):
+    // vectorised, the hash spilled to the stack and cost a third of the reference's speed on the
+    // Cornell box.
+    glm::vec2 next2() {
         uint32_t a = x, b = y, c = z, w = counter++ * 1664525u + 1013904223u;
         a += b * w;
         b += c * a;
@@ -37,8 +38,11 @@ struct Rng {
         w += b * c;
         a ^= a >> 16u;
         b ^= b >> 16u;
+        c ^= c >> 16u;
         w ^= w >> 16u;
-        return float((a + b * w) >> 8u) * (1.0f / 16777216.0f);
+        a += b * w;
+        b += c * a;
+        return glm::vec2(float(a >> 8u), float(b >> 8u)) * (1.0f / 16777216.0f);
     }
 };
 
@@ -190,12 +194,13 @@ class PathTracer {
                          ls.pdf;
             }
 
-            // bsdf.glsl bsdfSample() for a Lambertian surface: cosine-weighted (Malley's method). The
-            // third number is drawn and unused, as the shader draws vec3(rand2(), rand()).
-            float u0 = rng.next(), u1 = rng.next();
-            rng.next();
-            float r = std::sqrt(u0), phi = 2.0f * kPi * u1;
-            glm::vec3 local(r * std::cos(phi), r * std::sin(phi), std::sqrt(std::max(0.0f, 1.0f - u0)));
+            // bsdf.glsl bsdfSample() for a Lambertian surface: cosine-weighted (Malley's method), from
+            // surface.glsl drawBounceNumbers(): a pair for the direction, a pair for the lobe (unused
+            // here) and the roulette.
+            glm::vec2 u = rng.next2();
+            float roulette = rng.next2().y;
+            float r = std::sqrt(u.x), phi = 2.0f * kPi * u.y;
+            glm::vec3 local(r * std::cos(phi), r * std::sin(phi), std::sqrt(std::max(0.0f, 1.0f - u.x)));
             if (!(local.z > 0.0f)) break;
             glm::vec3 dir = s.toWorld(local);
             if (!s.sameSide(local, dir)) break;
@@ -206,7 +211,7 @@ class PathTracer {
             // surface.glsl survivesRoulette() (pbrt-v4 PathIntegrator::Li).
             if (depth >= 3) {
                 float keep = std::min(1.0f, std::max(beta.r, std::max(beta.g, beta.b)));
-                if (rng.next() >= keep) break;
+                if (roulette >= keep) break;
                 beta /= keep;
             }
             ray = spawnRay(s, dir);
@@ -260,8 +265,10 @@ class PathTracer {
     // lights.glsl sampleLight()
     LightSample sampleLight(const glm::vec3& from, Rng& rng) const {
         LightSample ls;
-        if (rng.next() < environmentSelection_) {
-            float z = 1.0f - 2.0f * rng.next(), phi = 2.0f * kPi * rng.next();
+        float pEnvironment = environmentSelection_;
+        if (pEnvironment > 0.0f && (pEnvironment >= 1.0f || rng.next2().x < pEnvironment)) {
+            glm::vec2 u = rng.next2();
+            float z = 1.0f - 2.0f * u.x, phi = 2.0f * kPi * u.y;
             float r = std::sqrt(std::max(0.0f, 1.0f - z * z));
             ls.dir = {r * std::cos(phi), r * std::sin(phi), z};
             ls.dist = kInf;
@@ -272,7 +279,8 @@ class PathTracer {
         if (scene_.lights.empty()) return ls;
         // lights.glsl sampleEmitterPoint(): the pick's number, rescaled to the picked entry's share,
         // is the point's first coordinate (exact: the cdf lies on the 2^-24 grid, buildScene).
-        float v = rng.next();
+        glm::vec2 u = rng.next2();
+        float v = u.x;
         int lo = 0, hi = int(scene_.lights.size()) - 1;
         while (lo < hi) {  // first entry whose cdf exceeds v
             int mid = (lo + hi) / 2;
@@ -283,12 +291,13 @@ class PathTracer {
         }
         const Tri& tri = scene_.tris[scene_.lights[lo].triangle];
         float below = lo > 0 ? scene_.lights[size_t(lo) - 1].cdf : 0.0f;
-        float b0, b1 = rng.next();
+        float b0, b1 = u.y;
         if (tri.lightPmf >= 1.0f / 4096.0f) {
             b0 = (v - below) / tri.lightPmf;
-        } else {  // a pair of its own (the second number is drawn and unused, as in the shader)
-            b0 = rng.next();
-            b1 = rng.next();
+        } else {  // a pair of its own
+            glm::vec2 w = rng.next2();
+            b0 = w.x;
+            b1 = w.y;
         }
         ls.normal = glm::normalize(glm::cross(tri.e1, tri.e2));
         ls.offset = surfaceOffset(tri);
@@ -355,8 +364,7 @@ Result render(const Scene& scene, const Camera& camera, const Settings& settings
             size_t index = size_t(settings.height - 1 - y) * settings.width + x;
             for (int i = 0; i < settings.spp; ++i) {
                 Rng rng(settings.seed, uint32_t(x), uint32_t(y), settings.sampleOffset + uint32_t(i));
-                float jx = rng.next(), jy = rng.next();
-                glm::vec2 ndc = 2.0f * (glm::vec2(x, y) + glm::vec2(jx, jy)) / resolution - 1.0f;
+                glm::vec2 ndc = 2.0f * (glm::vec2(x, y) + rng.next2()) / resolution - 1.0f;
                 glm::vec3 pinhole = frame.forward + ndc.x * frame.right + ndc.y * frame.up;
                 Ray ray{frame.eye, glm::normalize(pinhole)};
                 if (frame.lensRadius > 0.0f) {
@@ -365,9 +373,9 @@ Result render(const Scene& scene, const Camera& camera, const Settings& settings
                     // kLensPair and the next (rng.glsl, randAt), out of the stream's order.
                     uint32_t counter = rng.counter;
                     rng.counter = kLensPair;
-                    float lx = rng.next(), ly = rng.next();
+                    glm::vec2 lens = rng.next2();
                     rng.counter = counter;
-                    glm::vec2 d = frame.lensRadius * concentricDisk(glm::vec2(lx, ly));
+                    glm::vec2 d = frame.lensRadius * concentricDisk(lens);
                     glm::vec3 origin = frame.eye + d.x * rightUnit + d.y * upUnit;
                     ray = Ray{origin, glm::normalize(frame.eye + frame.focusDistance * pinhole - origin)};
                 }

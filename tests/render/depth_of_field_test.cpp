@@ -119,10 +119,8 @@ Camera obliqueCamera(float aperture, std::optional<float> focus) {
     return c;
 }
 
-// The stream's counter after the jitter alone: one pair (Sobol) or two numbers (independent).
-uint32_t counterAfterJitter(Sampler s) {
-    return s == Sampler::Sobol ? 1u : 2u;
-}
+// The stream's counter after the jitter alone: one pair, with either sampler.
+constexpr uint32_t kCounterAfterJitter = 1u;
 
 // Aperture 0 is the pinhole camera as it was before lenses: the very same rays (whatever the focus
 // distance says), and no number drawn for a lens, so that every later dimension of the path is where it
@@ -135,8 +133,7 @@ TEST(DepthOfFieldRays, APinholeDrawsNoLensNumberAndKeepsItsRays) {
             std::vector<ProbeSample> rays = probe(camera, 40, 30, sampler, 5);
             size_t bad = 0;
             for (const ProbeSample& r : rays)
-                if (!r.pinhole || r.origin != glm::dvec3(camera.eye) ||
-                    r.counter != counterAfterJitter(sampler))
+                if (!r.pinhole || r.origin != glm::dvec3(camera.eye) || r.counter != kCounterAfterJitter)
                     ++bad;
             EXPECT_EQ(bad, 0u) << samplerName(sampler) << (focus ? ", focus set" : "");
         }
@@ -162,7 +159,7 @@ TEST(DepthOfFieldRays, LensRaysStartOnTheLensAndMeetThePinholeRayOnThePlaneOfFoc
                 ASSERT_LT(std::abs(glm::dot(offset, b.forward)), 1e-5) << "the lens is across the view";
                 glm::dvec2 lens(glm::dot(offset, b.right), glm::dot(offset, b.up));
                 ASSERT_LE(glm::length(lens), b.lensRadius * (1.0 + 1e-5)) << "on the lens";
-                ASSERT_EQ(r.counter, counterAfterJitter(sampler)) << "the lens has a pair of its own";
+                ASSERT_EQ(r.counter, kCounterAfterJitter) << "the lens has a pair of its own";
                 // Where the pinhole ray through this film position meets the plane of focus.
                 glm::dvec2 ndc(2.0 * r.position.x / width - 1.0, 2.0 * r.position.y / height - 1.0);
                 glm::dvec3 focusPoint =
