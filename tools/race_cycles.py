@@ -6,7 +6,7 @@
 #   LP_NUM_THREADS is set from --threads for fragpath; Cycles gets the same thread count.
 #   tools/race_cycles.py [--scene assets/cornell/cornell.json] [--size 128] [--max-depth 5]
 #                        [--spp 16,64,256] [--reference-spp 8192] [--runs 3] [--threads 2]
-#                        [--integrator nee] [--reference-integrator NAME]
+#                        [--integrator nee] [--reference-integrator NAME] [--light-selection auto]
 #
 # Installs Debian's `blender` package when it is missing (apt-get, with sudo when not root). The scene is
 # a fragpath scene file (an OBJ of Lambertian and emissive materials, and a camera); Cycles renders it
@@ -74,6 +74,7 @@ def main():
     parser.add_argument("--runs", type=int, default=3)
     parser.add_argument("--threads", type=int, default=2)
     parser.add_argument("--integrator", default="nee", help="fragpath's integrator in the race")
+    parser.add_argument("--light-selection", default="auto", help="fragpath's, in the race and the reference")
     parser.add_argument("--reference-integrator", default=None,
                         help="the reference's integrator (default: --integrator; bdpt converges faster on caustics)")
     args = parser.parse_args()
@@ -88,7 +89,8 @@ def main():
 
     def fragpath(spp, seed, path, integrator=args.integrator):
         return [args.fragpath, "render", args.scene, "--size", size, "--spp", str(spp), "--max-depth",
-                str(args.max_depth), "--seed", str(seed), "--integrator", integrator, "--samples-per-pass",
+                str(args.max_depth), "--seed", str(seed), "--integrator", integrator,
+                "--light-selection", args.light_selection, "--samples-per-pass",
                 "16", "--quiet", "-o", path]
 
     def cycles(spp, seed, path):
@@ -106,9 +108,9 @@ def main():
     def rmse(image):
         return math.sqrt(sum((a - b) ** 2 for a, b in zip(image, reference)) / len(reference))
 
-    print("scene %s, %s, max depth %d, %d threads; fragpath %s; reference: fragpath %s, %d spp" %
-          (args.scene, size, args.max_depth, args.threads, args.integrator, reference_integrator,
-           args.reference_spp))
+    print("scene %s, %s, max depth %d, %d threads; fragpath %s, light selection %s; reference: fragpath %s, %d spp" %
+          (args.scene, size, args.max_depth, args.threads, args.integrator, args.light_selection,
+           reference_integrator, args.reference_spp))
     commands = (("fragpath", fragpath), ("cycles", cycles))
     sample_counts = [int(s) for s in args.spp.split(",")]
     # Every measurement alternates the two renderers (fragpath, Cycles, fragpath, ...), so that a drift

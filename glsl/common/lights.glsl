@@ -1,10 +1,19 @@
 // Light sampling for next-event estimation: the environment, or an emissive triangle or punctual light
-// picked with probability proportional to its power (a CDF in the lights buffer, src/pack/layout.h) and,
-// on a triangle, a point uniformly on its area. Area densities become solid-angle densities at the
+// picked with probability proportional to its power (a CDF in the lights buffer, src/pack/layout.h) or,
+// with LIGHT_TREE, by the light tree (light_tree.glsl) and, on a triangle, a point uniformly on its area
+// (or in the solid angle it subtends, below). Area densities become solid-angle densities at the
 // receiving point through d(omega) = cos(theta_light) dA / distance^2, so pdf = pmf / area * distance^2 /
 // cos(theta_light). A punctual light (point, spot, directional: src/scene/scene.h) is a delta
 // distribution: it has one direction toward the receiving point, which only light sampling finds.
 uniform vec3 uEnvironment;  // constant radiance arriving from every direction no surface blocks
+
+// LIGHT_TREE (set by the renderer for nee, src/render/renderer.cpp): 1 chooses emitters by the light tree.
+#ifndef LIGHT_TREE
+#define LIGHT_TREE 0
+#endif
+#if LIGHT_TREE
+#include "common/light_tree.glsl"
+#endif
 
 struct LightSample {
     vec3 dir;       // unit, from the receiving point to the light
@@ -187,7 +196,7 @@ struct EmitterPoint {
     vec2 unitSquare;  // for the point on it: sampleTriangle (uniform by area) or sampleSphericalTriangle
     int triangle;     // tri's index (when punctual is -1)
     int punctual;     // -1: the emitter triangle `tri`; else the punctual light of that number (no tri)
-    float punctualPmf;  // its selection probability
+    float pmf;          // its selection probability
 };
 
 EmitterPoint sampleEmitterPoint() {
@@ -202,8 +211,26 @@ EmitterPoint sampleEmitterPoint() {
     TriangleData tri = fetchTriangle(triangle);
     float below = entry > 0 ? lightTexel(entry - 1).y : 0.0;
     vec2 v = tri.lightPmf >= 1.0 / 4096.0 ? vec2((u.x - below) / tri.lightPmf, u.y) : rand2();
-    return EmitterPoint(tri, v, triangle, -1, 0.0);
+    return EmitterPoint(tri, v, triangle, -1, tri.lightPmf);
 }
+
+#if LIGHT_TREE
+#if PUNCTUAL_LIGHTS
+#error "the light tree does not bound punctual lights (src/pack/pack.cpp packs none for such scenes)"
+#endif
+// As sampleEmitterPoint, but the emitter chosen by the light tree for point p of normal n (one 2D sample
+// again: x descends the tree, rescaled at each level, and places the point with y). triangle -1: no
+// emitter can light p.
+EmitterPoint sampleEmitterPointFor(vec3 p, vec3 n) {
+    vec2 u = rand2();
+    float pmf;
+    int entry = pickLightTree(p, n, u.x, pmf);
+    if (pmf == 0.0) return EmitterPoint(TriangleData(vec3(0.0), vec3(0.0), vec3(0.0), 0, 0.0, 0.0), u, -1, -1, 0.0);
+    int triangle = int(lightTexel(entry).x);
+    TriangleData tri = fetchTriangle(triangle);
+    return EmitterPoint(tri, pmf >= 1.0 / 4096.0 ? u : rand2(), triangle, -1, pmf);
+}
+#endif
 
 // The radiance leaving the front of emitter triangle i at barycentrics b: Ke, times its emission map,
 // times its coverage (opacity.glsl: an emitter with alpha emits only where it covers, as rays see it
@@ -235,7 +262,9 @@ vec2 barycentricsOf(TriangleData tri, vec3 p) {
 // pickLight returns it: the packer stores the cdf on a 2^-24 grid, the resolution of rand(), and the pmf
 // as the exact difference of two entries, pack/pack.cpp) over its area. Every estimator that needs the
 // density of an emitter point reads it from here, so sampling and MIS weights agree to the last bit.
-float emitterAreaPdf(TriangleData tri) { return tri.lightPmf / (0.5 * length(cross(tri.e1, tri.e2))); }
+// With the light tree (light_tree.glsl) the probability of the pick depends on the shading point: pmf.
+float emitterAreaPdf(TriangleData tri, float pmf) { return pmf / (0.5 * length(cross(tri.e1, tri.e2))); }
+float emitterAreaPdf(TriangleData tri) { return emitterAreaPdf(tri, tri.lightPmf); }
 
 // Emitters that subtend more than kMinSphericalArea steradians from the shading point are sampled
 // uniformly in solid angle (sampleSphericalTriangle): that removes the 1 / r^2 and the emitter's cosine
@@ -272,7 +301,8 @@ float sphericalSamplingArea(TriangleData tri, vec3 from) {
 #endif
 }
 
-LightSample sampleLight(vec3 from) {
+// A light sample for point `from` of normal `normal` (which only the light tree reads).
+LightSample sampleLight(vec3 from, vec3 normal) {
     LightSample ls = LightSample(vec3(0.0, 0.0, 1.0), 0.0, vec3(0.0), 0.0, vec3(0.0), vec3(0.0), 0.0, false);
     // The choice between the environment and the emitters draws a number only when there is one to make.
     float pEnvironment = environmentSelection();
@@ -284,7 +314,12 @@ LightSample sampleLight(vec3 from) {
         return ls;
     }
     if (uLightCount == 0) return ls;
+#if LIGHT_TREE
+    EmitterPoint e = sampleEmitterPointFor(from, normal);
+    if (e.triangle < 0) return ls;
+#else
     EmitterPoint e = sampleEmitterPoint();
+#endif
 #if PUNCTUAL_LIGHTS
     // A delta light: the one direction toward it, the irradiance it gives a surface facing it, and the
     // probability of the pick for a "density" (pbrt-v4 section 12.2, PointLight::SampleLi: a delta
@@ -306,7 +341,7 @@ LightSample sampleLight(vec3 from) {
             ls.radiance = punctualIntensity(l, -ls.dir) / dist2;
             if (ls.radiance == vec3(0.0)) return ls;  // outside a spot's cone: pdf 0, no shadow ray
         }
-        ls.pdf = (1.0 - pEnvironment) * e.punctualPmf;
+        ls.pdf = (1.0 - pEnvironment) * e.pmf;
         return ls;
     }
 #endif
@@ -323,7 +358,7 @@ LightSample sampleLight(vec3 from) {
         ls.dist = -dot(a, ls.normal) / cosLight;  // to the emitter's plane along ls.dir
         ls.point = from + ls.dist * ls.dir;
         ls.radiance = emitterRadiance(e.triangle, tri, barycentricsOf(tri, ls.point));
-        ls.pdf = (1.0 - pEnvironment) * tri.lightPmf / solidAngle;
+        ls.pdf = (1.0 - pEnvironment) * e.pmf / solidAngle;
         return ls;
     }
     vec2 b = sampleTriangle(e.unitSquare);
@@ -335,7 +370,7 @@ LightSample sampleLight(vec3 from) {
     float cosLight = -dot(ls.normal, ls.dir);
     if (cosLight <= 0.0 || dist2 == 0.0) return ls;  // one-sided emitter seen from behind
     ls.radiance = emitterRadiance(e.triangle, tri, b);
-    ls.pdf = (1.0 - pEnvironment) * emitterAreaPdf(tri) * dist2 / cosLight;
+    ls.pdf = (1.0 - pEnvironment) * emitterAreaPdf(tri, e.pmf) * dist2 / cosLight;
     return ls;
 }
 
@@ -352,12 +387,18 @@ bool lightVisible(Surface s, LightSample ls) {
     return !occluded(ray, tMax);
 }
 
-// Solid-angle density with which sampleLight(from) would have chosen the emitter point a ray from
+// Solid-angle density with which sampleLight(from, normal) would have chosen the emitter point a ray from
 // `from` hit at hit.t.
-float lightPdf(vec3 from, Ray ray, Hit hit) {
+float lightPdf(vec3 from, vec3 normal, Ray ray, Hit hit) {
     TriangleData tri = fetchTriangle(hit.triangle);
+#if LIGHT_TREE
+    // (An emitter whose power pmf rounded to 0 has no entry, and no tree picks it.)
+    float pick = tri.lightPmf > 0.0 ? lightTreePmf(from, normal, lightEntryOf(hit.triangle)) : 0.0;
+#else
+    float pick = tri.lightPmf;
+#endif
     float solidAngle = sphericalSamplingArea(tri, from);
-    if (solidAngle > 0.0) return (1.0 - environmentSelection()) * tri.lightPmf / solidAngle;
+    if (solidAngle > 0.0) return (1.0 - environmentSelection()) * pick / solidAngle;
     float cosLight = abs(dot(normalize(cross(tri.e1, tri.e2)), ray.dir));
-    return (1.0 - environmentSelection()) * emitterAreaPdf(tri) * hit.t * hit.t / cosLight;
+    return (1.0 - environmentSelection()) * emitterAreaPdf(tri, pick) * hit.t * hit.t / cosLight;
 }

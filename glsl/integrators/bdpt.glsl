@@ -79,11 +79,11 @@ vec3 connectToLight(int t) {
     if (e.punctual >= 0) {
         PunctualLight l = fetchPunctualLight(e.punctual);
         delta = true;
-        pdfFresh = e.punctualPmf;
+        pdfFresh = e.pmf;
         if (l.type == PUNCTUAL_DIRECTIONAL) {
             d = -l.direction;
             Le = l.intensity;
-            scale = 1.0 / e.punctualPmf;
+            scale = 1.0 / e.pmf;
             // The light subpath would reach c from the disk with its area density projected onto c.
             zRevLast = abs(dot(c.ng, d)) / (PI * l.radius * l.radius);
             // A point beyond the scene's bounding sphere (c lies inside it) ends the shadow ray, as pbrt-v3's
@@ -97,7 +97,7 @@ vec3 connectToLight(int t) {
             d *= inversesqrt(dist2);
             Le = punctualIntensity(l, -d);
             if (Le == vec3(0.0)) return vec3(0.0);  // outside a spot's cone
-            scale = 1.0 / (dist2 * e.punctualPmf);
+            scale = 1.0 / (dist2 * e.pmf);
             zRevLast = toArea(punctualDirectionPdf(l, -d), l.position, c);
             // On no surface: a zero normal and offset, so the shadow ray ends at the light itself.
             y = PathVertex(l.position, vec3(0.0), vec3(0.0), -d, vec3(0.0), 0, 1.0, pdfFresh, 0.0, false, false, 0.0);

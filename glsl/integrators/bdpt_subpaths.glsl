@@ -258,14 +258,14 @@ int traceLightSubpath(int maxDepth) {
             origin += l.radius * -dir + r * cos(phi) * t + r * sin(phi) * b;
             diskPdf = 1.0 / (PI * l.radius * l.radius);
             pdfDir = 1.0;
-            beta = l.intensity / (e.punctualPmf * diskPdf);
+            beta = l.intensity / (e.pmf * diskPdf);
         } else {
             dir = samplePunctualDirection(l, rand2());
             // (not punctualDirectionPdf, whose cone test rounding could fail at the cone's edge)
             pdfDir = l.type == PUNCTUAL_POINT ? 1.0 / (4.0 * PI) : 1.0 / (2.0 * PI * (1.0 - l.cosOuter));
-            beta = punctualIntensity(l, dir) / (e.punctualPmf * pdfDir);
+            beta = punctualIntensity(l, dir) / (e.pmf * pdfDir);
         }
-        storeLightVertex(0, PathVertex(origin, dir, dir, dir, l.intensity / e.punctualPmf, 0, 1.0, e.punctualPmf,
+        storeLightVertex(0, PathVertex(origin, dir, dir, dir, l.intensity / e.pmf, 0, 1.0, e.pmf,
                                        0.0, false, false, 0.0));
         if (n == 1 || pdfDir <= 0.0 || beta == vec3(0.0)) return 1;
         ray = Ray(origin, dir);

@@ -7,6 +7,7 @@ vec3 radiance(Ray ray) {
     vec3 L = vec3(0.0), beta = vec3(1.0);
     float lastPdf = 0.0;      // solid-angle density of the direction that led here
     vec3 lastPosition = ray.origin;  // the vertex it left from, where sampleLight would have sampled
+    vec3 lastNormal = vec3(0.0, 0.0, 1.0);  // its shading normal (the light tree's choice depends on it)
     bool fullWeight = true;  // camera rays and delta bounces: no light sample competed
     for (int depth = 0;; ++depth) {
         Hit hit;
@@ -19,12 +20,12 @@ vec3 radiance(Ray ray) {
         applyDispersion(s, beta);
         vec3 Le = emittedRadiance(s);
         if (Le != vec3(0.0))
-            addLight(L, beta * Le * (fullWeight ? 1.0 : powerHeuristic(lastPdf, lightPdf(lastPosition, ray, hit))), depth);
+            addLight(L, beta * Le * (fullWeight ? 1.0 : powerHeuristic(lastPdf, lightPdf(lastPosition, lastNormal, ray, hit))), depth);
         if (depth == uMaxDepth) break;
 
         vec3 wo = toLocal(s, -ray.dir);
         if (!isDeltaOnly(s.material)) {
-            LightSample ls = sampleLight(s.position);
+            LightSample ls = sampleLight(s.position, s.shadingNormal);
             vec3 wi = toLocal(s, ls.dir);
             if (ls.pdf > 0.0 && sameSide(s, wi, ls.dir)) {
                 vec3 f = bsdfEval(s.material, wo, wi, s.eta);
@@ -47,6 +48,7 @@ vec3 radiance(Ray ray) {
         beta *= bs.weight;
         lastPdf = bs.pdf;
         lastPosition = s.position;
+        lastNormal = s.shadingNormal;
         fullWeight = bs.delta;
         if (!survivesRoulette(beta, depth, u.roulette)) break;
         ray = spawnRay(s, dir);

@@ -185,6 +185,9 @@ int benchCommand(const std::vector<std::string>& argv) {
     if (args.has("--native")) {
         if (settings.render.lightSampling != LightSampling::Auto)
             throw Error("--native: the native reference makes the automatic light-sampling choice only");
+        // It chooses emitters by power: so does the shader, unless asked for the tree (refused below).
+        if (settings.render.lightSelection == LightSelection::Auto)
+            settings.render.lightSelection = LightSelection::Power;
         settings.independentSampler = !args.has("--sampler");
         if (settings.independentSampler) settings.render.sampler = Sampler::Independent;
         if (settings.render.sampler != Sampler::Independent)

@@ -110,6 +110,7 @@ nlohmann::json renderStatsJson(const RenderStats& stats) {
         {"integrator", integratorName(settings.integrator)},
         {"sampler", samplerName(settings.sampler)},
         {"light_sampling", lightSamplingName(settings.lightSampling)},
+        {"light_selection", lightSelectionName(settings.lightSelection)},
         {"max_depth", settings.maxDepth},
         {"width", settings.width},
         {"height", settings.height},

@@ -23,6 +23,7 @@ void refuseWhatNativeLacks(const Scene& scene, const BenchSettings& settings) {
     if (r.sampler != Sampler::Independent) asked = std::string("sampler ") + samplerName(r.sampler);
     if (r.lightSampling != LightSampling::Auto)
         asked = std::string("light sampling ") + lightSamplingName(r.lightSampling);
+    if (r.lightSelection == LightSelection::Tree) asked = "the light tree";
     if (r.clampIndirect > 0.0f) asked = "a clamp of indirect light";
     if (!asked.empty())
         throw Error("--native: " + scene.source + " is rendered with " + asked +

@@ -23,7 +23,10 @@
 //                                            (RGB32F positions, 36 bytes, with the rest moved to the
 //                                            normals, rendered the same image 10 % slower on llvmpipe:
 //                                            docs/optimisation-log.md, entry 6.)
-//  normals       RGBA32F    3 per triangle   (n0.xyz, 0) (n1.xyz, 0) (n2.xyz, 0)  unit shading normals
+//  normals       RGBA32F    3 per triangle   (n0.xyz, entry) (n1.xyz, 0) (n2.xyz, 0)  unit shading
+//                                            normals; entry: an emitter's index in the lights buffer's
+//                                            cdf (exact float; 0 for other triangles), for the light
+//                                            tree's MIS density of an emitter a ray hits
 //  nodes         RGBA32UI   4 per node       the 4-wide BVH (bvh/wide_bvh.h), one node in 64 bytes, so one
 //                                            cache line (llvmpipe allocates buffers 64-byte aligned):
 //                                            (grid origin.xyz as float bits, scale exponents)
@@ -91,6 +94,11 @@
 //                                            directional: position = the centre of the sphere its light
 //                                            subpaths start from (scene/punctual_light.h), a = its radius;
 //                                            otherwise 0.
+//                                            In scenes without punctual lights, from texel
+//                                            LIGHT_TREE_FIRST on (PackedScene::lightTreeFirst), the light
+//                                            tree (pack/light_tree.h), 3 per node in heap order:
+//                                            (box lo.xyz, power) (box hi.xyz, cos(cone half-angle))
+//                                            (cone axis.xyz, 0)
 //
 // Only when some material has a texture (the renderer then defines SURFACE_TEXTURES; without it the
 // shader has no texture code at all and the three buffers are not allocated):
@@ -113,6 +121,7 @@
 //
 // Indices stored in float channels are exact integers below 2^24, which every GPU keeps exactly; the
 // node links are integers in an integer format, so no GPU can flush them as denormals.
+#include <cstddef>
 #include <cstdint>
 
 #include "bvh/bvh.h"
@@ -159,6 +168,10 @@ constexpr int kPunctualTexels = 3;  // per punctual light, after the cdf entries
 constexpr int kTexcoordTexels = 3;
 constexpr int kTangentTexels = 3;
 constexpr uint32_t kMaxFloatIndex = 1u << 24;
+
+// Scenes of more emitter triangles get no light tree (pack/light_tree.h): its 2 x 2^depth nodes of 3
+// texels each stay under 7 MB.
+constexpr size_t kMaxLightTreeEmitters = size_t(1) << 16;
 
 // Texture units the scene buffers are bound to while tracing.
 enum Unit : int {

@@ -14,4 +14,12 @@ namespace fp {
 // (scene/instancing.h) meshBvhs over each mesh's triangles, and the instances count as surfaces too.
 bool emittersFaceCloseSurfaces(const Scene& scene, const Bvh& bvh, const std::vector<Bvh>& meshBvhs = {});
 
+// Which emitter choice LightSelection::Auto makes: the light tree (pack/light_tree.h) for scenes of at
+// least kLightTreeMinEmitters emitter triangles, where the power of a far or turned-away emitter would
+// waste samples; below, the pick by power, which costs less per sample (BENCHMARKS.md, "Samplers").
+constexpr uint32_t kLightTreeMinEmitters = 8;
+inline bool lightTreePays(uint32_t emitterTriangles) {
+    return emitterTriangles >= kLightTreeMinEmitters;
+}
+
 }  // namespace fp

@@ -7,6 +7,7 @@
 #include "bvh/wide_bvh.h"
 #include "core/error.h"
 #include "pack/layout.h"
+#include "pack/light_tree.h"
 #include "scene/instancing.h"
 #include "scene/light_selection.h"
 #include "scene/punctual_light.h"
@@ -251,6 +252,7 @@ PackedScene packScene(const Scene& scene, const Bvh& bvh, const std::vector<Bvh>
     out.normals.reserve(n * layout::kNormalTexels);
     if (tangents) out.tangents.reserve(n * layout::kTangentTexels);
     float cdf = 0.0f;
+    std::vector<LightTreeEmitter> treeEmitters;  // the emitter entries, for the light tree
     for (size_t i = 0; i < n; ++i) {
         const Triangle& t = *ordered[i];
         out.triangles.emplace_back(t.p[0], float(t.material));
@@ -265,10 +267,12 @@ PackedScene packScene(const Scene& scene, const Bvh& bvh, const std::vector<Bvh>
                 for (const glm::vec4& tangent : *given) out.tangents.push_back(tangent);
             }
         }
-        for (const glm::vec3& normal : t.n) out.normals.emplace_back(normal, 0.0f);
+        const float entry = pmf[i] > 0.0f ? float(out.lights.size()) : 0.0f;  // its light-table entry
+        for (int v = 0; v < 3; ++v) out.normals.emplace_back(t.n[v], v == 0 ? entry : 0.0f);
         if (pmf[i] > 0.0f) {
             cdf += pmf[i];  // exact: every pmf and partial sum is a multiple of 2^-24 in [0, 1]
             out.lights.emplace_back(float(i), cdf, pmf[i], t.area());
+            treeEmitters.push_back({t.p[0], t.p[1], t.p[2], pmf[i]});
         }
     }
     // Punctual lights: their cdf entries after the triangles', then their data (pack/layout.h). One with
@@ -301,6 +305,14 @@ PackedScene packScene(const Scene& scene, const Bvh& bvh, const std::vector<Bvh>
             out.lights.emplace_back(glm::normalize(l.direction), a);
             out.lights.emplace_back(l.intensity, b);
         }
+    }
+    // The light tree (pack/light_tree.h) after them, in scenes without punctual lights (which it does
+    // not bound) and of at most layout::kMaxLightTreeEmitters emitters.
+    if (punctual.empty() && !treeEmitters.empty() && treeEmitters.size() <= layout::kMaxLightTreeEmitters) {
+        LightTree tree = buildLightTree(treeEmitters);
+        out.lightTreeFirst = uint32_t(out.lights.size());
+        out.lightTreeDepth = uint32_t(tree.depth);
+        for (const glm::vec4& texel : lightTreeTexels(tree)) out.lights.push_back(texel);
     }
 
     if (textured) packTextures(scene, ordered, &out);

@@ -35,6 +35,8 @@ struct PackedScene {
     uint32_t instanceCount = 0, instanceNodeStart = 0;
     uint32_t bvhDepth = 0;         // deepest (wide) node, root = 0: the traversal stack grows with it
     float totalLightPower = 0.0f;  // sum over lights of their power / pi (scene/light_selection.h)
+    // The light tree's root texel in `lights` and its depth (pack/light_tree.h); lightTreeFirst 0: none.
+    uint32_t lightTreeFirst = 0, lightTreeDepth = 0;
 
     bool hasTextures() const { return !textureTable.empty(); }
     size_t bytes() const;

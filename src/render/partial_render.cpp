@@ -132,6 +132,9 @@ std::string renderFingerprint(const Scene& scene, const RenderSettings& settings
     f.value(settings.integrator);
     f.value(settings.sampler);
     f.value(settings.lightSampling);
+    // Only when chosen: the default leaves the fingerprints of renders saved before the light tree as
+    // they were, so that those still resume and merge.
+    if (settings.lightSelection != LightSelection::Auto) f.value(settings.lightSelection);
     f.value(settings.clampIndirect);
     f.value(settings.view);
     char text[17];

@@ -67,6 +67,8 @@ Renderer::Renderer(const Scene& scene, ShaderLibrary shaders, const BvhBuildOpti
     stats_.stackSize = std::max<uint32_t>(32, 3 * packed.bvhDepth + 1);
     lightCount_ = packed.lightCount;
     punctualCount_ = packed.punctualCount;
+    lightTreeFirst_ = packed.lightTreeFirst;
+    lightTreeDepth_ = packed.lightTreeDepth;
     textures_ = std::make_unique<SceneTextures>(std::move(packed));
     stats_.uploadSeconds = secondsSince(start);
     stats_.gpuPinnedBytes = textures_->pinnedBytes();
@@ -98,6 +100,15 @@ std::unique_ptr<Program> Renderer::compile(Integrator integrator, const char* fr
     bool solidAngle = settings_.lightSampling == LightSampling::SolidAngle ||
                       (settings_.lightSampling == LightSampling::Auto && closeEmitters_);
     defines.emplace_back("SPHERICAL_LIGHT_SAMPLING", solidAngle ? "1" : "0");
+    // The light tree: nee's, when asked for or (auto) in a scene of many emitters (pack/light_strategy.h).
+    bool tree = integrator == Integrator::Nee && lightTreeFirst_ > 0 &&
+                (settings_.lightSelection == LightSelection::Tree ||
+                 (settings_.lightSelection == LightSelection::Auto && lightTreePays(stats_.emitters)));
+    defines.emplace_back("LIGHT_TREE", tree ? "1" : "0");
+    if (tree) {
+        defines.emplace_back("LIGHT_TREE_FIRST", std::to_string(lightTreeFirst_));
+        defines.emplace_back("LIGHT_TREE_DEPTH", std::to_string(lightTreeDepth_));
+    }
     defines.emplace_back("GUIDES", settings_.guides ? "1" : "0");
     defines.emplace_back("MATERIAL_TYPES", std::to_string(materialTypes_));
     defines.emplace_back("ENVIRONMENT_MAP", environmentTextures_ ? "1" : "0");
@@ -202,6 +213,14 @@ void Renderer::configure(const RenderSettings& settings, const Camera& camera) {
     if (settings.clampIndirect > 0.0f && (settings.integrator == Integrator::Bdpt ||
                                           (settings.split && settings.split->integrator == Integrator::Bdpt)))
         throw Error("the indirect clamp is implemented for nee, bsdf and naive, not for bdpt");
+    if (settings.lightSelection == LightSelection::Tree && lightTreeFirst_ == 0)
+        throw Error(punctualCount_ > 0
+                        ? "the light tree does not bound point, spot or directional lights, and "
+                          "this scene has some: use --light-selection power"
+                    : stats_.emitters == 0
+                        ? "the light tree needs emitter triangles, and this scene has none"
+                        : "the light tree holds at most " + std::to_string(layout::kMaxLightTreeEmitters) +
+                              " emitter triangles; this scene has " + std::to_string(stats_.emitters));
     // The request and the scene file check the camera (validateCamera); the viewer's panel too, but a
     // focus distance left to the eye-target distance can still overflow.
     if (!(camera.aperture >= 0.0f) || !std::isfinite(camera.aperture))
@@ -214,7 +233,8 @@ void Renderer::configure(const RenderSettings& settings, const Camera& camera) {
     bool recompile = !program_ || settings.integrator != settings_.integrator ||
                      settings.view != settings_.view || settings.guides != settings_.guides ||
                      settings.sampler != settings_.sampler ||
-                     settings.lightSampling != settings_.lightSampling || splitChanged;
+                     settings.lightSampling != settings_.lightSampling ||
+                     settings.lightSelection != settings_.lightSelection || splitChanged;
     if (recompile) {
         // Compile both programs before changing anything, so that a compile error leaves the renderer
         // exactly as it was.

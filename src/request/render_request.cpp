@@ -75,6 +75,11 @@ std::vector<OptionGroup> requestOptionGroups(unsigned options, const FrontEndDef
              "auto: solid angle when an emitter faces a close surface | area |\nsolid-angle "
              "(nee: emitters over 0.1 sr by solid angle) (default: " +
                  sceneOr + lightSamplingName(builtIn.lightSampling) + ")"});
+        path.options.push_back(
+            {"--light-selection", "", "NAME",
+             "auto: the tree for scenes of many emitters | power: by power |\ntree: by a light tree, "
+             "power weighed by distance and orientation (nee)\n(default: " +
+                 sceneOr + lightSelectionName(builtIn.lightSelection) + ")"});
         path.options.push_back({"--clamp-indirect", "", "X",
                                 "scale each sample's indirect light down to at most X per channel:\nfewer "
                                 "fireflies, but BIASED (darker); not with bdpt (default: " +
@@ -152,6 +157,7 @@ RenderRequest::RenderRequest(const Args& args, const FrontEndDefaults& defaults)
     if (auto t = args.text("--integrator")) integrator_ = parseIntegrator(*t);
     if (auto t = args.text("--sampler")) sampler_ = parseSampler(*t);
     if (auto t = args.text("--light-sampling")) lightSampling_ = parseLightSampling(*t);
+    if (auto t = args.text("--light-selection")) lightSelection_ = parseLightSelection(*t);
     clampIndirect_ = args.number("--clamp-indirect");
     if (clampIndirect_ && !(*clampIndirect_ >= 0.0f))
         throw Error("option --clamp-indirect: must be 0 (off) or more");
@@ -226,6 +232,7 @@ RenderSettings RenderRequest::settings(const Scene& scene) const {
     s.integrator = integrator_.value_or(file.integrator.value_or(s.integrator));
     s.sampler = sampler_.value_or(file.sampler.value_or(s.sampler));
     s.lightSampling = lightSampling_.value_or(file.lightSampling.value_or(s.lightSampling));
+    s.lightSelection = lightSelection_.value_or(file.lightSelection.value_or(s.lightSelection));
     s.clampIndirect = clampIndirect_.value_or(file.clampIndirect.value_or(s.clampIndirect));
     s.samplesPerPass = samplesPerPass_.value_or(defaults_.samplesPerPass);
     s.view = view_.value_or(s.view);

@@ -25,7 +25,8 @@ enum RequestOption : unsigned {
     kSppOption = 1u << 1,         // --spp N
     kIntegratorOption = 1u << 2,  // --integrator NAME
     kPathOptions = 1u << 3,       // --max-depth D, --seed S
-    kSamplingOptions = 1u << 4,   // --sampler, --light-sampling, --clamp-indirect, --samples-per-pass
+    kSamplingOptions = 1u << 4,   // --sampler, --light-sampling, --light-selection, --clamp-indirect,
+                                  // --samples-per-pass
     kCameraOptions = 1u << 5,     // --eye, --target, --up, --fov, --aperture, --focus-distance
     kViewOption = 1u << 6,        // --view NAME
     kDisplayOptions = 1u << 7,    // --exposure, --tonemap
@@ -101,6 +102,7 @@ class RenderRequest {
     std::optional<Integrator> integrator_;
     std::optional<Sampler> sampler_;
     std::optional<LightSampling> lightSampling_;
+    std::optional<LightSelection> lightSelection_;
     std::optional<float> clampIndirect_;
     std::optional<View> view_;
     std::optional<glm::vec3> eye_, target_, up_;

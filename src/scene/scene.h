@@ -156,6 +156,7 @@ struct RenderDefaults {
     std::optional<Integrator> integrator;
     std::optional<Sampler> sampler;
     std::optional<LightSampling> lightSampling;
+    std::optional<LightSelection> lightSelection;
     std::optional<float> clampIndirect;  // 0: no clamp (settings/render_settings.h)
 };
 

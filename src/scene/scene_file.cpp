@@ -152,7 +152,7 @@ RenderDefaults parseRender(const json& render, Fields& fields) {
     fields.object(render, "render");
     fields.checkKeys(render, "render.",
                      {"width", "height", "spp", "max_depth", "seed", "integrator", "sampler",
-                      "light_sampling", "clamp_indirect"});
+                      "light_sampling", "light_selection", "clamp_indirect"});
     constexpr long long kIntMax = std::numeric_limits<int>::max();
     RenderDefaults d;
     if (render.contains("width"))
@@ -178,6 +178,7 @@ RenderDefaults parseRender(const json& render, Fields& fields) {
     d.integrator = choice("integrator", parseIntegrator);
     d.sampler = choice("sampler", parseSampler);
     d.lightSampling = choice("light_sampling", parseLightSampling);
+    d.lightSelection = choice("light_selection", parseLightSelection);
     if (render.contains("clamp_indirect")) {
         float clamp = fields.real(render["clamp_indirect"], "render.clamp_indirect");
         if (!(clamp >= 0.0f)) fields.fail("render.clamp_indirect must be 0 (off) or more");

@@ -32,6 +32,15 @@ const char* lightSamplingName(LightSampling sampling) {
     return nameOf(sampling, kNames);
 }
 
+LightSelection parseLightSelection(const std::string& name) {
+    return parseName(name, kAllLightSelections, lightSelectionName, "light selection");
+}
+
+const char* lightSelectionName(LightSelection selection) {
+    static constexpr const char* kNames[] = {"auto", "power", "tree"};  // in enum order
+    return nameOf(selection, kNames);
+}
+
 View parseView(const std::string& name) {
     return parseName(name, kAllViews, viewName, "view");
 }

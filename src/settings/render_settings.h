@@ -30,6 +30,16 @@ constexpr LightSampling kAllLightSamplings[] = {LightSampling::Auto, LightSampli
 LightSampling parseLightSampling(const std::string& name);  // throws fp::Error listing the choices
 const char* lightSamplingName(LightSampling sampling);
 
+// How next-event estimation chooses the emitter it samples (glsl/common/lights.glsl): in proportion to
+// its power, or by descending the light tree (pack/light_tree.h), which weighs power by distance and
+// orientation from the shading point; auto picks the tree for scenes of many emitters
+// (pack/light_strategy.h). nee only: the other integrators choose by power.
+enum class LightSelection { Auto, Power, Tree };
+constexpr LightSelection kAllLightSelections[] = {LightSelection::Auto, LightSelection::Power,
+                                                  LightSelection::Tree};
+LightSelection parseLightSelection(const std::string& name);  // throws fp::Error listing the choices
+const char* lightSelectionName(LightSelection selection);
+
 // What each pixel shows: the rendered radiance, one property of the first hit, or a cost the path
 // tracer pays there (glsl/passes/debug_views.glsl).
 // Cost: per path, (BVH nodes visited, triangles tested, surfaces shaded) summed over all its rays, in RGB.
@@ -73,6 +83,7 @@ struct RenderSettings {
     Integrator integrator = Integrator::Nee;
     Sampler sampler = Sampler::Sobol;
     LightSampling lightSampling = LightSampling::Auto;
+    LightSelection lightSelection = LightSelection::Auto;
     View view = View::Radiance;
     // Samples each pixel takes in one draw call, at most kMaxSamplesPerPass: llvmpipe stops a shader loop
     // after a fixed number of iterations (measured: 256 samples of the 32x32 Cornell box in one pass
