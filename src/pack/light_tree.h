@@ -17,8 +17,8 @@
 
 namespace fp {
 
-// One emitter entry: its triangle's vertices, its selection power (the power pmf of scene/
-// light_selection.h, whose zeros are never picked) and the normal of its emitting side.
+// One emitter entry: its triangle's vertices (their winding gives the emitting side) and its selection
+// power (the power pmf of scene/light_selection.h, whose zeros are never picked).
 struct LightTreeEmitter {
     glm::vec3 p0, p1, p2;
     float power = 0.0f;

@@ -47,17 +47,8 @@ Camera aboveTheFloor() {
 }
 
 Accumulation render(Renderer& renderer, LightSelection selection, int spp, int maxDepth, uint32_t seed) {
-    RenderSettings s;
-    s.sampler = Sampler::Independent;
-    s.lightSelection = selection;
-    s.width = s.height = 32;
-    s.integrator = Integrator::Nee;
-    s.maxDepth = maxDepth;
-    s.seed = seed;
-    s.samplesPerPass = RenderSettings::kMaxSamplesPerPass;
-    renderer.configure(s, aboveTheFloor());
-    renderer.render(spp);
-    return renderer.readback();
+    return renderScene(renderer, aboveTheFloor(), Integrator::Nee, 32, spp, maxDepth, seed,
+                       Sampler::Independent, LightSampling::Auto, selection);
 }
 
 // Depth 3: light reaches the floor from the lamps by light samples and by BSDF samples that hit a lamp,

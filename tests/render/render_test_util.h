@@ -400,10 +400,12 @@ class Rgba8Target {
 inline Accumulation renderScene(Renderer& renderer, const Camera& camera, Integrator integrator, int size,
                                 int spp, int maxDepth, uint32_t seed = 1,
                                 Sampler sampler = Sampler::Independent,
-                                LightSampling lightSampling = LightSampling::Auto) {
+                                LightSampling lightSampling = LightSampling::Auto,
+                                LightSelection lightSelection = LightSelection::Auto) {
     RenderSettings s;
     s.sampler = sampler;
     s.lightSampling = lightSampling;
+    s.lightSelection = lightSelection;
     s.width = s.height = size;
     s.integrator = integrator;
     s.maxDepth = maxDepth;
