@@ -7,7 +7,8 @@
 # Each point of the floor is lit mostly by the few lamps near it; a choice by power spends most of its
 # samples on far ones. Deterministic (fixed seed): rerunning it rewrites the same files.
 #
-#   tools/make_many_lights.py [--out assets/many_lights]
+#   tools/make_many_lights.py [--out assets/many_lights] [--grid 8,12] [--wall-lamps 8]
+# (--grid 2,2 --wall-lamps 0: four ceiling lamps, 8 emitter triangles, for the threshold of `auto`.)
 import argparse
 import os
 import random
@@ -18,6 +19,8 @@ ROOT = os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(__file__)),
 def main():
     parser = argparse.ArgumentParser(description="write the many-lights hall")
     parser.add_argument("--out", default=os.path.join(ROOT, "assets/many_lights"))
+    parser.add_argument("--grid", default="8,12", help="ceiling lamps across and along the hall")
+    parser.add_argument("--wall-lamps", type=int, default=8, help="lamps on each side wall")
     args = parser.parse_args()
     os.makedirs(args.out, exist_ok=True)
     rng = random.Random(7)
@@ -50,9 +53,10 @@ def main():
 
     lamps = []
     s = 0.15
-    for i in range(8):
-        for j in range(12):
-            x, z, y = -7.0 + 2.0 * i, -11.0 + 2.0 * j, h - 0.4
+    across, along = (int(n) for n in args.grid.split(","))
+    for i in range(across):
+        for j in range(along):
+            x, z, y = -w + (i + 0.5) * 2.0 * w / across, -d + (j + 0.5) * 2.0 * d / along, h - 0.4
             name = "lamp%d" % len(lamps)
             warm = rng.random() < 0.5
             power = 1.0 + 19.0 * rng.random() ** 2
@@ -60,8 +64,8 @@ def main():
             lamps.append((name, tuple(power * c for c in colour)))
             quad((x - s, y, z - s), (x + s, y, z - s), (x + s, y, z + s), (x - s, y, z + s), name)  # down
     for side in (-1.0, 1.0):
-        for k in range(8):
-            x, z, y = side * (w - 0.3), -10.5 + 3.0 * k, 2.5
+        for k in range(args.wall_lamps):
+            x, z, y = side * (w - 0.3), -d + (k + 0.5) * 2.0 * d / args.wall_lamps, 2.5
             name = "lamp%d" % len(lamps)
             lamps.append((name, (8.0, 8.0, 7.0)))
             quad((x - s, y, z - s), (x - s, y, z + s), (x + s, y, z + s), (x + s, y, z - s), name)  # up

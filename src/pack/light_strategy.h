@@ -16,8 +16,10 @@ bool emittersFaceCloseSurfaces(const Scene& scene, const Bvh& bvh, const std::ve
 
 // Which emitter choice LightSelection::Auto makes: the light tree (pack/light_tree.h) for scenes of at
 // least kLightTreeMinEmitters emitter triangles, where the power of a far or turned-away emitter would
-// waste samples; below, the pick by power, which costs less per sample (BENCHMARKS.md, "Samplers").
-constexpr uint32_t kLightTreeMinEmitters = 8;
+// waste samples; below, the pick by power, which costs less per sample. Measured in halls of ceiling
+// lamps (BENCHMARKS.md, "Samplers"): the tree needs 1.17x power's time for equal error with 8 emitter
+// triangles, 1.02x with 32, 0.98x with 96 and 0.63-0.67x with 224.
+constexpr uint32_t kLightTreeMinEmitters = 64;
 inline bool lightTreePays(uint32_t emitterTriangles) {
     return emitterTriangles >= kLightTreeMinEmitters;
 }
