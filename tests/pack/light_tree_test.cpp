@@ -6,9 +6,7 @@
 #include <cmath>
 #include <random>
 
-#include "pack/layout.h"
 #include "pack/light_tree.h"
-#include "pack/pack.h"
 
 namespace fp {
 namespace {
@@ -107,42 +105,6 @@ TEST(LightTree, ConeUnionIsTheSmallestThatHoldsBoth) {
     LightBounds empty;
     EXPECT_EQ(unionOf(empty, side).axis, side.axis) << "an empty node adds nothing";
     EXPECT_EQ(unionOf(a, b).thetaO >= b.thetaO, true);
-}
-
-// The packer puts the tree after the light table and each emitter's entry in its first normal's w,
-// which the shader's MIS density reads (glsl/common/light_tree.glsl lightEntryOf): entry e's triangle
-// must be the one whose normal says e.
-TEST(LightTree, PackedEntriesPointBackToTheirTriangles) {
-    Scene s;
-    s.materials.resize(2);
-    s.materials[1].emission = glm::vec3(3.0f);
-    std::mt19937 rng(4);
-    std::uniform_real_distribution<float> u(-1.0f, 1.0f);
-    for (int i = 0; i < 40; ++i) {
-        Triangle t;
-        glm::vec3 c(4.0f * u(rng), 4.0f * u(rng), 4.0f * u(rng));
-        for (auto& p : t.p) p = c + 0.2f * glm::vec3(u(rng), u(rng), u(rng));
-        glm::vec3 n = glm::normalize(t.geometricNormal());
-        t.n = {n, n, n};
-        t.material = uint32_t(i % 2);
-        s.triangles.push_back(t);
-    }
-    AabbArray bounds;
-    for (const Triangle& t : s.triangles) bounds.push_back(t.bounds());
-    PackedScene packed = packScene(s, buildBinnedSah(bounds));
-    ASSERT_EQ(packed.lightCount, 20u);
-    EXPECT_EQ(packed.lightTreeFirst, packed.lightCount) << "right after the table (no punctual lights)";
-    EXPECT_EQ(packed.lightTreeDepth, 5u);
-    EXPECT_EQ(packed.lights.size(), packed.lightCount + 3 * 63u);
-    for (uint32_t e = 0; e < packed.lightCount; ++e) {
-        uint32_t triangle = uint32_t(packed.lights[e].x);
-        EXPECT_EQ(packed.normals[triangle * layout::kNormalTexels].w, float(e));
-        // Its leaf holds its power pmf, and its box holds the packed vertices.
-        glm::vec4 lo = packed.lights[packed.lightTreeFirst + 3 * (31 + e)];
-        EXPECT_EQ(lo.w, packed.lights[e].z);
-        glm::vec3 v0 = glm::vec3(packed.triangles[triangle * layout::kTriangleTexels]);
-        EXPECT_TRUE(glm::all(glm::lessThanEqual(glm::vec3(lo), v0)));
-    }
 }
 
 }  // namespace

@@ -158,6 +158,27 @@ TEST(PackScene, LightCdfIsPowerProportionalAndEndsAtOne) {
     EXPECT_EQ(p.lights[p.lightCount - 1].y, 1.0f);
 }
 
+// The packer puts the light tree (pack/light_tree.h) after the light table and each emitter's entry in
+// its first normal's w, which the shader's MIS density reads (glsl/common/light_tree.glsl
+// lightEntryOf): entry e's triangle must be the one whose normal says e, and e's leaf must hold it.
+TEST(PackScene, LightTreeEntriesPointBackToTheirTriangles) {
+    Scene s = randomScene(30, 4);
+    PackedScene p = packScene(s, buildFor(s));
+    ASSERT_EQ(p.lightCount, 20u);  // materials 1 and 2 emit
+    EXPECT_EQ(p.lightTreeFirst, p.lightCount) << "right after the table (no punctual lights)";
+    EXPECT_EQ(p.lightTreeDepth, 5u);
+    EXPECT_EQ(p.lights.size(), p.lightCount + 3 * 63u);
+    for (uint32_t e = 0; e < p.lightCount; ++e) {
+        uint32_t triangle = uint32_t(p.lights[e].x);
+        EXPECT_EQ(p.normals[triangle * layout::kNormalTexels].w, float(e));
+        // Its leaf holds its power pmf, and its box holds the packed vertices.
+        glm::vec4 lo = p.lights[p.lightTreeFirst + 3 * (31 + e)];
+        EXPECT_EQ(lo.w, p.lights[e].z);
+        glm::vec3 v0 = glm::vec3(p.triangles[triangle * layout::kTriangleTexels]);
+        EXPECT_TRUE(glm::all(glm::lessThanEqual(glm::vec3(lo), v0)));
+    }
+}
+
 TEST(PackScene, BytesPerTriangleAreReported) {
     Scene s = randomScene(1000, 3);
     PackedScene p = packScene(s, buildFor(s));
