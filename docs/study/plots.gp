@@ -11,7 +11,7 @@ set key outside right top
 # cornell
 threshold = 0.0004  # relative MSE under which the report calls an image not noisy
 budget_ms = 16.6667  # one frame at 60 FPS
-set yrange [0.000143746:57.4258]
+set yrange [0.00011789:53.0517]
 set logscale xy
 
 set output 'cornell_error_vs_spp.png'
@@ -36,7 +36,7 @@ plot 'study.csv' every ::1 using (strcol(1) eq 'cornell' && strcol(2) eq 'naive'
 set output 'cornell_error_vs_time.png'
 set title 'cornell: error against render time (this machine; median of the runs)'
 set xlabel 'render + denoise time (ms)'
-set xrange [11.1111:22310.7]
+set xrange [11.1111:16674.2]
 set arrow 1 from budget_ms, graph 0 to budget_ms, graph 1 nohead lc 'red' dt 2 lw 2
 set label 1 '60 FPS frame budget (16.7 ms)' at budget_ms, graph 0.95 offset 0.5, 0 tc 'red'
 plot 'study.csv' every ::1 using (strcol(1) eq 'cornell' && strcol(2) eq 'naive' && strcol(3) eq 'none' ? 1000 * $8 : NaN):10 with linespoints lc 1 dt 1 pt 6 title 'naive', \
@@ -78,7 +78,7 @@ plot 'study.csv' every ::1 using (strcol(1) eq 'cornell' && strcol(2) eq 'naive'
 # cornell-checker
 threshold = 0.0004  # relative MSE under which the report calls an image not noisy
 budget_ms = 16.6667  # one frame at 60 FPS
-set yrange [0.000130437:48.0478]
+set yrange [0.00010783:49.2684]
 set logscale xy
 
 set output 'cornell-checker_error_vs_spp.png'
@@ -103,7 +103,7 @@ plot 'study.csv' every ::1 using (strcol(1) eq 'cornell-checker' && strcol(2) eq
 set output 'cornell-checker_error_vs_time.png'
 set title 'cornell-checker: error against render time (this machine; median of the runs)'
 set xlabel 'render + denoise time (ms)'
-set xrange [11.1111:24896]
+set xrange [11.1111:24584.6]
 set arrow 1 from budget_ms, graph 0 to budget_ms, graph 1 nohead lc 'red' dt 2 lw 2
 set label 1 '60 FPS frame budget (16.7 ms)' at budget_ms, graph 0.95 offset 0.5, 0 tc 'red'
 plot 'study.csv' every ::1 using (strcol(1) eq 'cornell-checker' && strcol(2) eq 'naive' && strcol(3) eq 'none' ? 1000 * $8 : NaN):10 with linespoints lc 1 dt 1 pt 6 title 'naive', \
@@ -145,7 +145,7 @@ plot 'study.csv' every ::1 using (strcol(1) eq 'cornell-checker' && strcol(2) eq
 # cornell-spheres
 threshold = 0.0004  # relative MSE under which the report calls an image not noisy
 budget_ms = 16.6667  # one frame at 60 FPS
-set yrange [0.0002:63.2238]
+set yrange [0.0002:57.4819]
 set logscale xy
 
 set output 'cornell-spheres_error_vs_spp.png'
@@ -170,7 +170,7 @@ plot 'study.csv' every ::1 using (strcol(1) eq 'cornell-spheres' && strcol(2) eq
 set output 'cornell-spheres_error_vs_time.png'
 set title 'cornell-spheres: error against render time (this machine; median of the runs)'
 set xlabel 'render + denoise time (ms)'
-set xrange [11.1111:39498.3]
+set xrange [11.1111:27015]
 set arrow 1 from budget_ms, graph 0 to budget_ms, graph 1 nohead lc 'red' dt 2 lw 2
 set label 1 '60 FPS frame budget (16.7 ms)' at budget_ms, graph 0.95 offset 0.5, 0 tc 'red'
 plot 'study.csv' every ::1 using (strcol(1) eq 'cornell-spheres' && strcol(2) eq 'naive' && strcol(3) eq 'none' ? 1000 * $8 : NaN):10 with linespoints lc 1 dt 1 pt 6 title 'naive', \
@@ -212,7 +212,7 @@ plot 'study.csv' every ::1 using (strcol(1) eq 'cornell-spheres' && strcol(2) eq
 # environment
 threshold = 0.0004  # relative MSE under which the report calls an image not noisy
 budget_ms = 16.6667  # one frame at 60 FPS
-set yrange [0.0002:275.888]
+set yrange [0.0002:242.958]
 set logscale xy
 
 set output 'environment_error_vs_spp.png'
@@ -237,7 +237,7 @@ plot 'study.csv' every ::1 using (strcol(1) eq 'environment' && strcol(2) eq 'na
 set output 'environment_error_vs_time.png'
 set title 'environment: error against render time (this machine; median of the runs)'
 set xlabel 'render + denoise time (ms)'
-set xrange [11.1111:8396.83]
+set xrange [11.1111:5951.11]
 set arrow 1 from budget_ms, graph 0 to budget_ms, graph 1 nohead lc 'red' dt 2 lw 2
 set label 1 '60 FPS frame budget (16.7 ms)' at budget_ms, graph 0.95 offset 0.5, 0 tc 'red'
 plot 'study.csv' every ::1 using (strcol(1) eq 'environment' && strcol(2) eq 'naive' && strcol(3) eq 'none' ? 1000 * $8 : NaN):10 with linespoints lc 1 dt 1 pt 6 title 'naive', \
@@ -279,7 +279,7 @@ plot 'study.csv' every ::1 using (strcol(1) eq 'environment' && strcol(2) eq 'na
 # sphere-1m
 threshold = 0.0004  # relative MSE under which the report calls an image not noisy
 budget_ms = 16.6667  # one frame at 60 FPS
-set yrange [0.000149368:56.691]
+set yrange [0.00012592:43.6218]
 set logscale xy
 
 set output 'sphere-1m_error_vs_spp.png'
@@ -304,7 +304,7 @@ plot 'study.csv' every ::1 using (strcol(1) eq 'sphere-1m' && strcol(2) eq 'naiv
 set output 'sphere-1m_error_vs_time.png'
 set title 'sphere-1m: error against render time (this machine; median of the runs)'
 set xlabel 'render + denoise time (ms)'
-set xrange [11.1111:55607]
+set xrange [11.1111:30258.1]
 set arrow 1 from budget_ms, graph 0 to budget_ms, graph 1 nohead lc 'red' dt 2 lw 2
 set label 1 '60 FPS frame budget (16.7 ms)' at budget_ms, graph 0.95 offset 0.5, 0 tc 'red'
 plot 'study.csv' every ::1 using (strcol(1) eq 'sphere-1m' && strcol(2) eq 'naive' && strcol(3) eq 'none' ? 1000 * $8 : NaN):10 with linespoints lc 1 dt 1 pt 6 title 'naive', \
@@ -346,7 +346,7 @@ plot 'study.csv' every ::1 using (strcol(1) eq 'sphere-1m' && strcol(2) eq 'naiv
 # gltf-showcase
 threshold = 0.0004  # relative MSE under which the report calls an image not noisy
 budget_ms = 16.6667  # one frame at 60 FPS
-set yrange [0.0002:3.75838]
+set yrange [0.0002:4.00745]
 set logscale xy
 
 set output 'gltf-showcase_error_vs_spp.png'
@@ -371,7 +371,7 @@ plot 'study.csv' every ::1 using (strcol(1) eq 'gltf-showcase' && strcol(2) eq '
 set output 'gltf-showcase_error_vs_time.png'
 set title 'gltf-showcase: error against render time (this machine; median of the runs)'
 set xlabel 'render + denoise time (ms)'
-set xrange [11.1111:39981.4]
+set xrange [11.1111:26640.2]
 set arrow 1 from budget_ms, graph 0 to budget_ms, graph 1 nohead lc 'red' dt 2 lw 2
 set label 1 '60 FPS frame budget (16.7 ms)' at budget_ms, graph 0.95 offset 0.5, 0 tc 'red'
 plot 'study.csv' every ::1 using (strcol(1) eq 'gltf-showcase' && strcol(2) eq 'naive' && strcol(3) eq 'none' ? 1000 * $8 : NaN):10 with linespoints lc 1 dt 1 pt 6 title 'naive', \
