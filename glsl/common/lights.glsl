@@ -65,8 +65,7 @@ vec3 punctualIntensity(PunctualLight l, vec3 w) {
 // solid-angle density.
 vec3 samplePunctualDirection(PunctualLight l, vec2 u) {
     if (l.type == PUNCTUAL_POINT) return sampleUniformSphere(u);
-    float z = 1.0 - u.x * (1.0 - l.cosOuter), r = sqrt(max(0.0, 1.0 - z * z)), phi = 2.0 * PI * u.y;
-    return toWorld(vec3(r * cos(phi), r * sin(phi), z), l.direction);
+    return sampleUniformCone(l.direction, l.cosOuter, u);
 }
 
 float punctualDirectionPdf(PunctualLight l, vec3 w) {

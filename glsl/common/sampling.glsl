@@ -30,6 +30,13 @@ vec3 sampleUniformSphere(vec2 u) {
     return vec3(r * cos(phi), r * sin(phi), z);
 }
 
+// Uniform inside the cone of directions within angle acos(cosMax) of unit `axis`; pdf = 1 / (2 pi (1 -
+// cosMax)) (pbrt-v4 A.5.4). cosMax = -1 is the whole sphere.
+vec3 sampleUniformCone(vec3 axis, float cosMax, vec2 u) {
+    float z = 1.0 - u.x * (1.0 - cosMax), r = sqrt(max(0.0, 1.0 - z * z)), phi = 2.0 * PI * u.y;
+    return toWorld(vec3(r * cos(phi), r * sin(phi), z), axis);
+}
+
 // Cosine-weighted around +z, the normal of the local shading frame (Malley's method: uniform on the
 // disk, projected up); pdf = cos(theta) / pi (pbrt-v4 A.5.3).
 vec3 sampleCosineLocal(vec2 u) {

@@ -92,6 +92,18 @@ MaterialData vertexMaterial(bool camera, int i) {
 // light-tracing pass), which made the weights count impossible strategies through smooth glass.
 bool gLightDelta[BDPT_MAX_LIGHT_VERTICES];
 
+#if CAUSTICS_LIGHT_TRACED
+// nee's light pass (integrators/nee.glsl) uses light tracing alone, and only for the caustic paths nee
+// leaves to it: y1 .. y_{s-2} each sampled a delta lobe, and y_{s-1} is joined to the camera through its
+// smooth lobes. Their light subpaths end at the first vertex that samples a smooth lobe.
+bool causticStrategy(int s) {
+    if (s < 3) return false;
+    for (int i = 1; i < s - 1; ++i)
+        if (!gLightDelta[i]) return false;
+    return true;
+}
+#endif
+
 // Whether y0 of the light subpath is a punctual light (a delta position or direction, lights.glsl): then
 // no camera subpath can reach it (strategy s = 0 has density 0 for its paths, and misWeight leaves it
 // out), and y0 itself is never joined to the camera (a light of no size is not seen directly).
@@ -183,6 +195,9 @@ float misWeight(int s, int t, float zRevLast, float zRevPrev, float yRevLast, fl
 #ifdef BDPT_LIGHT_TRACING_ONLY
     return t == 1 ? 1.0 : 0.0;  // a test isolates strategy t = 1 (tests/render/bdpt_test.cpp)
 #endif
+#if CAUSTICS_LIGHT_TRACED
+    return t == 1 && causticStrategy(s) ? 1.0 : 0.0;  // the paths no other estimator sums
+#endif
     float sum = 0.0;
     // Fewer camera vertices: strategy (s + t - i, i) makes z_i a light vertex; i = 1 is light tracing
     // (z_1 joined to z_0, the pinhole or a lens point, which is never delta: its direction is sampled over
@@ -260,9 +275,13 @@ int traceLightSubpath(int maxDepth) {
             pdfDir = 1.0;
             beta = l.intensity / (e.pmf * diskPdf);
         } else {
+#if CAUSTICS_LIGHT_TRACED
+            dir = sampleTowardCasters(origin, rand2(), pdfDir);  // (caustic_casters.glsl)
+#else
             dir = samplePunctualDirection(l, rand2());
             // (not punctualDirectionPdf, whose cone test rounding could fail at the cone's edge)
             pdfDir = l.type == PUNCTUAL_POINT ? 1.0 / (4.0 * PI) : 1.0 / (2.0 * PI * (1.0 - l.cosOuter));
+#endif
             beta = punctualIntensity(l, dir) / (e.pmf * pdfDir);
         }
         storeLightVertex(0, PathVertex(origin, dir, dir, dir, l.intensity / e.pmf, 0, 1.0, e.pmf,
@@ -282,11 +301,19 @@ int traceLightSubpath(int maxDepth) {
         storeLightVertex(0, y0);
         if (n == 1) return 1;
 
+#if CAUSTICS_LIGHT_TRACED
+        // Toward the caustic casters (caustic_casters.glsl): Le cos / (p_A p_dir).
+        dir = sampleTowardCasters(y0.p, rand2(), pdfDir);
+        float cosEmitted = dot(normal, dir);
+        if (cosEmitted <= 0.0 || !(pdfDir > 0.0)) return 1;
+        beta = Le * (cosEmitted / (pdfPosition * pdfDir));
+#else
         // Cosine-weighted emission: Le cos / (p_A * cos / pi) = Le pi / p_A.
         dir = toWorld(sampleCosineLocal(rand2()), normal);
         pdfDir = dot(normal, dir) / PI;
         if (pdfDir <= 0.0) return 1;
         beta = Le * PI / pdfPosition;
+#endif
         ray = Ray(offsetToward(y0.p, normal, y0.offset, dir), dir);
     }
     bool dispersive = false;
@@ -315,6 +342,9 @@ int traceLightSubpath(int maxDepth) {
         if (wo.z <= 0.0) break;  // -ray.dir disagrees with the shading normal: f = 0
         BsdfSample bs;
         if (!bsdfSample(s.material, wo, drawBounceNumbers().bsdf, s.eta, bs)) break;
+#if CAUSTICS_LIGHT_TRACED
+        if (!bs.delta) break;  // no caustic path goes on from here
+#endif
         vec3 next = toWorld(s, bs.wi);
         if (!sameSide(s, bs.wi, next)) break;
         // Adjoint BSDF (see vertexBsdf): undo the radiance scaling and correct for the shading normal.

@@ -3,12 +3,22 @@
 // two so that each covers the paths the other samples badly. Light found by a BSDF-sampled ray is
 // weighted against the density light sampling would have had for it; after a delta lobe (mirror,
 // glass), which light sampling cannot reach, it counts in full.
+//
+// Caustics seen directly (CAUSTICS_LIGHT_TRACED, --caustics light): a path whose first vertex x1 sampled
+// a smooth lobe and whose next vertices x2 .. x_m (m >= 2) each sampled a delta lobe before x_{m+1} on an
+// emitter (a floor lit through a glass ball) is found here only when the BSDF sample at x1 happens to
+// aim, through the glass, at the light. Light tracing finds it from the other end: the light-tracing pass
+// (passes/light_trace.frag.glsl) follows light through the delta vertices to x1 and joins x1 to the
+// camera (bdpt's strategy t = 1, Veach 1997 section 10.2). The two estimators split path space: the
+// light pass sums exactly these paths, with m + 1 <= BDPT_MAX_LIGHT_VERTICES (its light subpaths'
+// length), and this integrator leaves exactly those out, so their sum is unbiased without weights.
 vec3 radiance(Ray ray) {
     vec3 L = vec3(0.0), beta = vec3(1.0);
     float lastPdf = 0.0;      // solid-angle density of the direction that led here
     vec3 lastPosition = ray.origin;  // the vertex it left from, where sampleLight would have sampled
     vec3 lastNormal = vec3(0.0, 0.0, 1.0);  // its shading normal (the light tree's choice depends on it)
     bool fullWeight = true;  // camera rays and delta bounces: no light sample competed
+    bool causticChain = false;  // x1 sampled a smooth lobe and every vertex since a delta one
     for (int depth = 0;; ++depth) {
         Hit hit;
         if (!traceClosest(ray, hit)) {
@@ -19,6 +29,9 @@ vec3 radiance(Ray ray) {
         Surface s = surfaceAt(ray, hit);
         applyDispersion(s, beta);
         vec3 Le = emittedRadiance(s);
+#if CAUSTICS_LIGHT_TRACED
+        if (causticChain && depth >= 2 && depth < BDPT_MAX_LIGHT_VERTICES) Le = vec3(0.0);  // the light pass's
+#endif
         if (Le != vec3(0.0))
             addLight(L, beta * Le * (fullWeight ? 1.0 : powerHeuristic(lastPdf, lightPdf(lastPosition, lastNormal, ray, hit))), depth);
         if (depth == uMaxDepth) break;
@@ -34,7 +47,7 @@ vec3 radiance(Ray ray) {
                     // A punctual light (point, spot, directional) is a delta light that only light
                     // sampling can find: weight 1, as in pbrt-v4's PathIntegrator::SampleLd (section
                     // 13.4). The light such a light sends through a mirror or smooth glass onto a diffuse
-                    // surface (a caustic) is not found here at all (bdpt finds it).
+                    // surface (a caustic) no camera path can find: the light pass does (above).
                     addLight(L, beta * f * ls.radiance * w / ls.pdf, depth + 1);
                 }
             }
@@ -50,6 +63,7 @@ vec3 radiance(Ray ray) {
         lastPosition = s.position;
         lastNormal = s.shadingNormal;
         fullWeight = bs.delta;
+        causticChain = depth == 0 ? !bs.delta : causticChain && bs.delta;
         if (!survivesRoulette(beta, depth, u.roulette)) break;
         ray = spawnRay(s, dir);
     }

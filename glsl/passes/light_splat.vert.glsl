@@ -1,19 +1,27 @@
 // The splat pass: one point per light-tracing record (light_trace.frag.glsl), drawn with additive
-// blending into the light image at the pixel the record names. Vertex k of path j reads record k of the
-// j-th pixel of the launch region; the last record of each path (its statistics) goes to the path's own
-// pixel. A record that lands nowhere is put outside the clip volume, so it makes no fragment.
+// blending into the light image at the pixel the record names. The records drawn are uFirstRecord ..
+// BDPT_MAX_LIGHT_VERTICES of each launched path (the earlier ones are empty in nee's light pass);
+// vertex k of path j reads record uFirstRecord + k of slot j (light_launch.glsl); the last record of
+// each path (its statistics) goes to the path's own pixel. A record that lands nowhere, or a slot past
+// the region's end, is put outside the clip volume, so it makes no fragment.
 uniform sampler2DArray uRecords;  // one layer per record
-uniform ivec2 uLaunchOrigin;      // the launch region's lower-left pixel
-uniform int uLaunchWidth;
+#include "passes/light_launch.glsl"
+uniform int uFirstRecord;
 
 flat out vec4 vSum;      // (contribution, rays traced)
 flat out vec4 vSquares;  // (squared contribution, contributions dropped)
 
 void main() {
-    int k = gl_VertexID % (BDPT_MAX_LIGHT_VERTICES + 1), path = gl_VertexID / (BDPT_MAX_LIGHT_VERTICES + 1);
-    ivec2 source = uLaunchOrigin + ivec2(path % uLaunchWidth, path / uLaunchWidth);
+    int drawn = BDPT_MAX_LIGHT_VERTICES + 1 - uFirstRecord;
+    int k = uFirstRecord + gl_VertexID % drawn, path = gl_VertexID / drawn;
+    int perRow = launchSlotsPerRow(), slot = path % perRow, row = path / perRow;
+    ivec2 source;  // the path's pixel
     ivec2 size = textureSize(uRecords, 0).xy;
-    vec4 r = texelFetch(uRecords, ivec3(source, k), 0);
+    if (!launchPixel(slot, row, source)) {
+        gl_Position = vec4(2.0, 2.0, 2.0, 1.0);
+        return;
+    }
+    vec4 r = texelFetch(uRecords, ivec3(slot, row, k), 0);
     int target;
     if (k < BDPT_MAX_LIGHT_VERTICES) {
         target = int(r.a);

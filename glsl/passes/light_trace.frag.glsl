@@ -1,8 +1,10 @@
 // Light tracing, bdpt's strategies t = 1 (see integrators/bdpt.glsl): each fragment traces the light
-// subpath of sample uLightSample of its pixel (the same subpath the camera pass joins to), joins each of
-// its vertices y_{s-1} to the pinhole (or to a point of a thin lens) by a shadow ray, and writes one record
-// per vertex: the weighted contribution and the pixel it lands on. The splat pass (light_splat.*.glsl) then adds the records
-// into the light image.
+// subpath of sample uLightSample of a launching pixel (light_launch.glsl; for bdpt the same subpath its
+// camera pass joins to), joins each of its vertices y_{s-1} to the pinhole (or to a point of a thin lens)
+// by a shadow ray, and writes one record per vertex: the weighted contribution and the pixel it lands on.
+// The splat pass (light_splat.*.glsl) then adds the records into the light image. With
+// CAUSTICS_LIGHT_TRACED it is nee's light pass instead (integrators/nee.glsl): light subpaths aimed at the
+// caustic casters (common/caustic_casters.glsl), only the caustic strategies, weight 1.
 #include "common/rng.glsl"
 #include "common/sampling.glsl"
 #include "common/scene_data.glsl"
@@ -12,16 +14,18 @@
 #include "common/surface.glsl"
 #include "common/lights.glsl"
 #include "common/camera.glsl"
+#include "common/caustic_casters.glsl"
 
 uniform int uMaxDepth;
 uniform uint uSeed;
-uniform uint uLightSample;  // the sample index (sample offset included) whose light subpaths are traced
+#include "passes/light_launch.glsl"
+uniform float uLaunchWeight;  // region pixels / launching pixels (src/render/light_splat.cpp)
 
 #include "integrators/bdpt_subpaths.glsl"
 
 // Record s - 1: (weighted contribution of strategy (s, 1), index of the pixel it lands on; -1: none).
 layout(location = 0) out vec4 outRecords[BDPT_MAX_LIGHT_VERTICES];
-// (rays traced, non-finite contributions dropped, 0, 0), added at this fragment's own pixel.
+// (rays traced, non-finite contributions dropped, 0, 0), added at the pixel of the path (the splat pass).
 layout(location = BDPT_MAX_LIGHT_VERTICES) out vec4 outStats;
 
 // Strategy (s, 1): y = y_{s-1} joined to the eye z0. The unweighted contribution is
@@ -78,7 +82,12 @@ vec3 lightToCamera(int s, out vec2 pixel) {
 }
 
 void main() {
-    ivec2 pixel = ivec2(gl_FragCoord.xy);
+    ivec2 pixel;  // the pixel whose light path this fragment traces (its records are at its slot)
+    if (!launchPixel(int(gl_FragCoord.x), int(gl_FragCoord.y), pixel)) {
+        for (int s = 0; s < BDPT_MAX_LIGHT_VERTICES; ++s) outRecords[s] = vec4(0.0, 0.0, 0.0, -1.0);
+        outStats = vec4(0.0);
+        return;
+    }
     gRayCount = 0.0;
     gWavelength = 0.0;
     gSpectralWeight = vec3(1.0);
@@ -87,7 +96,11 @@ void main() {
     float dropped = 0.0;
     for (int s = 1; s <= BDPT_MAX_LIGHT_VERTICES; ++s) {
         vec4 record = vec4(0.0, 0.0, 0.0, -1.0);
+#if CAUSTICS_LIGHT_TRACED
+        if (s <= n && causticStrategy(s)) {  // nee's light pass: the others weigh 0 (misWeight)
+#else
         if (s <= n) {
+#endif
             vec2 target;
             vec3 c = lightToCamera(s, target);
             // A NaN or Inf would poison a pixel of the light image forever: count it and drop it.
@@ -95,7 +108,7 @@ void main() {
                 dropped += 1.0;
             } else if (c != vec3(0.0)) {
                 ivec2 t = ivec2(target);
-                record = vec4(c, float(t.y * int(uResolution.x) + t.x));
+                record = vec4(c * uLaunchWeight, float(t.y * int(uResolution.x) + t.x));
             }
         }
         outRecords[s - 1] = record;

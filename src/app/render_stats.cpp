@@ -111,6 +111,7 @@ nlohmann::json renderStatsJson(const RenderStats& stats) {
         {"sampler", samplerName(settings.sampler)},
         {"light_sampling", lightSamplingName(settings.lightSampling)},
         {"light_selection", lightSelectionName(settings.lightSelection)},
+        {"caustics", causticsName(settings.caustics)},
         {"max_depth", settings.maxDepth},
         {"width", settings.width},
         {"height", settings.height},

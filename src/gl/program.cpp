@@ -91,5 +91,8 @@ void Program::set(const char* name, const glm::vec3& v) {
 void Program::set(const char* name, const glm::ivec2& v) {
     glUniform2i(location(name), v.x, v.y);
 }
+void Program::set(const char* name, const std::vector<glm::vec4>& values) {
+    if (!values.empty()) glUniform4fv(location(name), GLsizei(values.size()), &values[0].x);
+}
 
 }  // namespace fp

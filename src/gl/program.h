@@ -2,6 +2,7 @@
 // A linked GLSL program built from two files of a ShaderLibrary, with cached uniform locations.
 #include <string>
 #include <unordered_map>
+#include <vector>
 
 #include <glm/glm.hpp>
 
@@ -29,6 +30,7 @@ class Program {
     void set(const char* name, const glm::vec2& value);
     void set(const char* name, const glm::vec3& value);
     void set(const char* name, const glm::ivec2& value);
+    void set(const char* name, const std::vector<glm::vec4>& values);  // a vec4 array, from element 0
 
   private:
     GLint location(const char* name);

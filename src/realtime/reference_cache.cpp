@@ -77,10 +77,10 @@ std::string ReferenceCache::describe(const std::string& scene, const RenderSetti
     std::snprintf(
         text, sizeof text,
         "scene %s\nsize %dx%d\nintegrator %s\nmax depth %d\nseed %u\nsampler %s\nlight sampling %s\n"
-        "light selection %s\nclamp indirect %.9g\nreference spp %d\n",
+        "light selection %s\ncaustics %s\nclamp indirect %.9g\nreference spp %d\n",
         scene.c_str(), s.width, s.height, integratorName(s.integrator), s.maxDepth, s.seed,
         samplerName(s.sampler), lightSamplingName(s.lightSampling), lightSelectionName(s.lightSelection),
-        s.clampIndirect, referenceSpp);
+        causticsName(s.caustics), s.clampIndirect, referenceSpp);
     return text;
 }
 

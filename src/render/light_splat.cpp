@@ -81,16 +81,55 @@ void LightSplat::clear() {
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
 }
 
+// As launchSlotsPerRow in glsl/passes/light_launch.glsl: 4 slots per launching block a row can meet.
+static int slotsPerRow(const PixelRegion& launch, int stride) {
+    if (stride == 1) return launch.width;
+    int blocks = ((launch.x + launch.width - 1) >> 2) - (launch.x >> 2) + 1;
+    return 4 * ((blocks + stride - 1) / stride);
+}
+
+// The pixels of `launch` that launch a light path for sample `sampleIndex` (light_launch.glsl).
+static int64_t launchingPixels(const PixelRegion& launch, int stride, uint32_t sampleIndex) {
+    if (stride == 1) return int64_t(launch.width) * launch.height;
+    int phase = int(sampleIndex % uint32_t(stride));
+    int64_t count = 0;
+    for (int y = launch.y; y < launch.y + launch.height; ++y)
+        for (int b = launch.x >> 2; 4 * b < launch.x + launch.width; ++b)
+            if ((b + (y >> 2) + phase) % stride == 0)
+                count += std::min(4 * b + 4, launch.x + launch.width) - std::max(4 * b, launch.x);
+    return count;
+}
+
 void LightSplat::trace(Program& tracer, uint32_t sampleIndex, const PixelRegion& launch,
-                       const PixelRegion& splatRegion) {
+                       const PixelRegion& splatRegion, Launch how) {
     if (launch.empty() || splatRegion.empty()) return;
-    // The trace pass writes every record of every launched pixel, so the records need no clearing.
+    // No larger than the region's diagonals of blocks, so that every phase launches some block; a region
+    // too narrow for the slots launches every pixel.
+    int diagonals = ((launch.x + launch.width - 1) >> 2) - (launch.x >> 2) +
+                    ((launch.y + launch.height - 1) >> 2) - (launch.y >> 2) + 1;
+    how.stride = std::min(how.stride, diagonals);
+    if (slotsPerRow(launch, how.stride) > width_) how.stride = 1;
+    int64_t launching = launchingPixels(launch, how.stride, sampleIndex);
+    int perRow = slotsPerRow(launch, how.stride);
+    // Every pixel's light path has the same distribution, so the launching ones, each counted
+    // (pixels / launching) times, estimate the light image of every pixel launching one: exactly, in
+    // expectation, whatever the pattern, the tiling or the sample count.
+    float weight = float(double(launch.width) * launch.height / double(launching));
+    auto setLaunch = [&](Program& p) {
+        p.set("uLightSample", unsigned(sampleIndex));
+        p.set("uLaunchStride", how.stride);
+        p.set("uLaunchOrigin", glm::ivec2(launch.x, launch.y));
+        p.set("uLaunchWidth", launch.width);
+    };
+    // One fragment per slot (light_launch.glsl), in the records' lower-left corner; the trace pass writes
+    // every record of every slot, so the records need no clearing.
     tracer.use();
-    tracer.set("uLightSample", unsigned(sampleIndex));
+    setLaunch(tracer);
+    tracer.set("uLaunchWeight", weight);
     glBindFramebuffer(GL_FRAMEBUFFER, recordFramebuffer_);
     glViewport(0, 0, width_, height_);
     glEnable(GL_SCISSOR_TEST);
-    glScissor(launch.x, launch.y, launch.width, launch.height);
+    glScissor(0, 0, perRow, launch.height);
     glBindVertexArray(vertexArray_);
     glDrawArrays(GL_TRIANGLES, 0, 3);
 
@@ -99,14 +138,14 @@ void LightSplat::trace(Program& tracer, uint32_t sampleIndex, const PixelRegion&
     glBindTexture(GL_TEXTURE_2D_ARRAY, recordTexture_);
     splat_->use();
     splat_->set("uRecords", unit);
-    splat_->set("uLaunchOrigin", glm::ivec2(launch.x, launch.y));
-    splat_->set("uLaunchWidth", launch.width);
+    setLaunch(*splat_);
+    splat_->set("uFirstRecord", how.firstRecord);
     glBindFramebuffer(GL_FRAMEBUFFER, imageFramebuffer_);
     glScissor(splatRegion.x, splatRegion.y, splatRegion.width, splatRegion.height);
     glEnable(GL_BLEND);
     glBlendEquation(GL_FUNC_ADD);
     glBlendFunc(GL_ONE, GL_ONE);
-    glDrawArrays(GL_POINTS, 0, launch.width * launch.height * kRecords);
+    glDrawArrays(GL_POINTS, 0, perRow * launch.height * (kRecords - how.firstRecord));
     glDisable(GL_BLEND);
     glDisable(GL_SCISSOR_TEST);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);

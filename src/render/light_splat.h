@@ -1,6 +1,7 @@
 #pragma once
-// bdpt's light-tracing pass (strategies t = 1, glsl/integrators/bdpt.glsl): light paths traced in a
-// fragment pass (glsl/passes/light_trace.frag.glsl, one path per launched pixel) write one record per
+// The light-tracing pass of bdpt (strategies t = 1, glsl/integrators/bdpt.glsl) and of nee's caustics
+// (--caustics light, glsl/integrators/nee.glsl): light paths traced in a fragment pass
+// (glsl/passes/light_trace.frag.glsl, one path per launching pixel) write one record per
 // light vertex (its weighted contribution and the pixel it lands on); a point pass
 // (light_splat.*.glsl) adds the records with additive blending into the light image, two RGBA32F
 // attachments: (sum of contributions, rays traced by the paths launched at the pixel) and (sum of
@@ -37,11 +38,18 @@ class LightSplat {
     // GPU memory of the records (kRecords RGBA32F layers) and the light image (2 RGBA32F attachments).
     size_t bytes() const { return size_t(width_) * size_t(height_) * (kRecords + 2) * 16; }
     void clear();
-    // Traces one light path from each pixel of `launch` with `tracer` (light_trace.frag.glsl, bound and
-    // with every uniform set but uLightSample) for sample index `sampleIndex`, and adds the records that
-    // land inside `splatRegion` to the light image.
+    // Which pixels launch light paths and which records they fill: every pixel and every record for
+    // bdpt; for nee's caustics one pixel in `stride` (light_trace.frag.glsl's launches()), whose
+    // records before `firstRecord` are always empty and are not drawn.
+    struct Launch {
+        int stride = 1;
+        int firstRecord = 0;
+    };
+    // Traces one light path from each launching pixel of `launch` with `tracer` (light_trace.frag.glsl,
+    // bound and with every uniform set but uLightSample and uLaunchStride) for sample index
+    // `sampleIndex`, and adds the records that land inside `splatRegion` to the light image.
     void trace(Program& tracer, uint32_t sampleIndex, const PixelRegion& launch,
-               const PixelRegion& splatRegion);
+               const PixelRegion& splatRegion, Launch how);
     // The light image, rows top to bottom.
     void read(std::vector<glm::vec4>& sum, std::vector<glm::vec4>& squares) const;
     GLuint sumTexture() const { return image_[0]; }

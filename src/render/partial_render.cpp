@@ -135,6 +135,7 @@ std::string renderFingerprint(const Scene& scene, const RenderSettings& settings
     // Only when chosen: the default leaves the fingerprints of renders saved before the light tree as
     // they were, so that those still resume and merge.
     if (settings.lightSelection != LightSelection::Auto) f.value(settings.lightSelection);
+    if (settings.caustics != Caustics::Auto) f.value(settings.caustics);
     f.value(settings.clampIndirect);
     f.value(settings.view);
     char text[17];

@@ -8,6 +8,7 @@
 #include "core/error.h"
 #include "core/log.h"
 #include "gpu/layout_defines.h"
+#include "pack/caustic_casters.h"
 #include "pack/layout.h"
 #include "pack/light_strategy.h"
 #include "scene/spectrum.h"
@@ -18,6 +19,10 @@ namespace {
 
 constexpr int kSumUnit = layout::kFirstFreeUnit;  // then the other attachments, in order
 constexpr int kSpareUnit = kSumUnit + RenderTargets::kAttachments;
+// nee's caustic light paths: one pixel in this many launches one per sample (glsl/passes/light_launch.glsl).
+// On the glass Cornell box (128x128, 64 spp) more paths did not lower the image's variance (one in 1, 4,
+// 16 and 64: 3.64e-4, 3.63e-4, 3.65e-4, 3.73e-4) but cost 60 %, 30 % and 5 % more CPU time at 1, 4 and 16.
+constexpr int kCausticLaunchStride = 16;
 
 }  // namespace
 
@@ -49,6 +54,7 @@ Renderer::Renderer(const Scene& scene, ShaderLibrary shaders, const BvhBuildOpti
 
     start = SteadyClock::now();
     closeEmitters_ = emittersFaceCloseSurfaces(scene, bvh, meshBvhs);
+    causticCasters_ = causticCasterSpheres(scene);
     PackedScene packed = packScene(scene, bvh, meshBvhs);
     stats_.triangles = uint32_t(scene.triangleCount());
     stats_.storedTriangles = packed.triangleCount;
@@ -109,6 +115,8 @@ std::unique_ptr<Program> Renderer::compile(Integrator integrator, const char* fr
         defines.emplace_back("LIGHT_TREE_FIRST", std::to_string(lightTreeFirst_));
         defines.emplace_back("LIGHT_TREE_DEPTH", std::to_string(lightTreeDepth_));
     }
+    defines.emplace_back("CAUSTICS_LIGHT_TRACED", causticsByLight(integrator, settings_) ? "1" : "0");
+    defines.emplace_back("MAX_CAUSTIC_CASTERS", std::to_string(kMaxCausticCasters));
     defines.emplace_back("GUIDES", settings_.guides ? "1" : "0");
     defines.emplace_back("MATERIAL_TYPES", std::to_string(materialTypes_));
     defines.emplace_back("ENVIRONMENT_MAP", environmentTextures_ ? "1" : "0");
@@ -142,12 +150,23 @@ std::unique_ptr<Program> Renderer::compile(Integrator integrator, const char* fr
     return std::make_unique<Program>(shaders_, "passes/fullscreen.vert.glsl", fragmentShader, defines);
 }
 
-// Compiles every program settings_ needs (bdpt's radiance adds the light-tracing pass) and only then
-// replaces the current ones, so that a compile error changes nothing.
+// Whether nee leaves caustics seen directly to a light pass (settings/render_settings.h, Caustics):
+// asked for, or (auto) in a scene with caustic casters and a light for the light paths to start from,
+// unless the indirect light is clamped (the light pass's caustics would escape the clamp).
+bool Renderer::causticsByLight(Integrator integrator, const RenderSettings& settings) const {
+    if (integrator != Integrator::Nee || settings.view != View::Radiance) return false;
+    if (settings.caustics == Caustics::Auto)
+        return !causticCasters_.empty() && lightCount_ > 0 && settings.clampIndirect == 0.0f;
+    return settings.caustics == Caustics::Light;
+}
+
+// Compiles every program settings_ needs (bdpt's radiance and nee's light-traced caustics add the
+// light-tracing pass) and only then replaces the current ones, so that a compile error changes nothing.
 void Renderer::compilePrograms(const RenderSettings& settings) {
     auto camera = [&](Integrator i) { return compile(i, "passes/trace.frag.glsl"); };
     auto light = [&](Integrator i) -> std::unique_ptr<Program> {
-        bool splats = i == Integrator::Bdpt && settings.view == View::Radiance;
+        bool splats =
+            (i == Integrator::Bdpt && settings.view == View::Radiance) || causticsByLight(i, settings);
         return splats ? compile(i, "passes/light_trace.frag.glsl") : nullptr;
     };
     std::unique_ptr<Program> program = camera(settings.integrator), lightProgram = light(settings.integrator);
@@ -213,6 +232,14 @@ void Renderer::configure(const RenderSettings& settings, const Camera& camera) {
     if (settings.clampIndirect > 0.0f && (settings.integrator == Integrator::Bdpt ||
                                           (settings.split && settings.split->integrator == Integrator::Bdpt)))
         throw Error("the indirect clamp is implemented for nee, bsdf and naive, not for bdpt");
+    if (settings.caustics == Caustics::Light && settings.clampIndirect > 0.0f)
+        throw Error("light-traced caustics are not clamped: use --caustics path with --clamp-indirect");
+    if (settings.caustics == Caustics::Light && causticCasters_.empty())
+        throw Error(
+            "light-traced caustics need a surface with a smooth (delta) lobe, glass or a mirror, "
+            "and this scene has none");
+    if (settings.caustics == Caustics::Light && lightCount_ == 0)
+        throw Error("light-traced caustics need an emitter or a punctual light, and this scene has none");
     if (settings.lightSelection == LightSelection::Tree && lightTreeFirst_ == 0)
         throw Error(punctualCount_ > 0
                         ? "the light tree does not bound point, spot or directional lights, and "
@@ -230,11 +257,12 @@ void Renderer::configure(const RenderSettings& settings, const Camera& camera) {
         throw Error("the focus distance must be a finite number above 0");
     bool splitChanged = settings.split.has_value() != settings_.split.has_value() ||
                         (settings.split && settings.split->integrator != settings_.split->integrator);
-    bool recompile = !program_ || settings.integrator != settings_.integrator ||
-                     settings.view != settings_.view || settings.guides != settings_.guides ||
-                     settings.sampler != settings_.sampler ||
-                     settings.lightSampling != settings_.lightSampling ||
-                     settings.lightSelection != settings_.lightSelection || splitChanged;
+    bool recompile =
+        !program_ || settings.integrator != settings_.integrator || settings.view != settings_.view ||
+        settings.guides != settings_.guides || settings.sampler != settings_.sampler ||
+        settings.lightSampling != settings_.lightSampling ||
+        settings.lightSelection != settings_.lightSelection || settings.caustics != settings_.caustics ||
+        settings.clampIndirect != settings_.clampIndirect || splitChanged;
     if (recompile) {
         // Compile both programs before changing anything, so that a compile error leaves the renderer
         // exactly as it was.
@@ -295,6 +323,8 @@ void Renderer::setTraceUniforms(Program& p, int maxDepth) {
         p.set("uEnvironmentRotation", environmentRotation_);
         environmentTextures_->bind(stats_.sceneReads);
     }
+    p.set("uCasters", causticCasters_);
+    p.set("uCasterCount", int(causticCasters_.size()));
     p.set("uMaxDepth", maxDepth);
     p.set("uSeed", settings_.seed);
     p.set("uClampIndirect", settings_.clampIndirect);
@@ -342,17 +372,20 @@ void Renderer::drawPass(const PixelRegion& area, int samples) {
         Program* light;
         int maxDepth;
         PixelRegion region;
+        Integrator integrator;
     };
     PixelRegion full = targets_->full();
     int half = settings_.width / 2;
     std::vector<Part> parts;
     if (splitProgram_) {
         parts.push_back({program_.get(), lightProgram_.get(), settings_.maxDepth,
-                         clip(full, {0, 0, half, settings_.height})});
+                         clip(full, {0, 0, half, settings_.height}), settings_.integrator});
         parts.push_back({splitProgram_.get(), splitLightProgram_.get(), settings_.split->maxDepth,
-                         clip(full, {half, 0, settings_.width, settings_.height})});
+                         clip(full, {half, 0, settings_.width, settings_.height}),
+                         settings_.split->integrator});
     } else {
-        parts.push_back({program_.get(), lightProgram_.get(), settings_.maxDepth, full});
+        parts.push_back(
+            {program_.get(), lightProgram_.get(), settings_.maxDepth, full, settings_.integrator});
     }
     for (const Part& part : parts) draw(*part.camera, part.maxDepth, clip(area, part.region), samples);
     if (!lightSplat_) return;
@@ -361,9 +394,13 @@ void Renderer::drawPass(const PixelRegion& area, int samples) {
     for (const Part& part : parts) {
         if (!part.light) continue;
         setTraceUniforms(*part.light, part.maxDepth);
+        // nee's caustic light paths leave from one pixel in kCausticLaunchStride, and their records of
+        // strategies s = 1 and 2 are empty (glsl/passes/light_trace.frag.glsl).
+        bool caustic = part.integrator == Integrator::Nee;
+        LightSplat::Launch launch{caustic ? kCausticLaunchStride : 1, caustic ? 2 : 0};
         for (int i = 0; i < samples; ++i)
             lightSplat_->trace(*part.light, settings_.sampleOffset + uint32_t(samples_ + i), area,
-                               part.region);
+                               part.region, launch);
     }
     launchedLightPaths_ += uint64_t(area.width) * uint64_t(area.height) * uint64_t(samples);
     glActiveTexture(GLenum(GL_TEXTURE0 + kSpareUnit));

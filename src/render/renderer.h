@@ -82,6 +82,7 @@ class Renderer {
   private:
     std::unique_ptr<Program> compile(Integrator integrator, const char* fragmentShader) const;
     void compilePrograms(const RenderSettings& settings);
+    bool causticsByLight(Integrator integrator, const RenderSettings& settings) const;
     void updateLightSplat(bool rebuild);
     void setTraceUniforms(Program& program, int maxDepth);
     void draw(Program& program, int maxDepth, const PixelRegion& region, int samples);
@@ -101,17 +102,20 @@ class Renderer {
     uint32_t punctualCount_ = 0;      // of them punctual lights: compile them in (PUNCTUAL_LIGHTS)
     uint32_t instanceNodeStart_ = 0;  // two-level BVH (INSTANCE_NODES_START); 0: one level
     bool closeEmitters_ = false;      // LightSampling::Auto samples by solid angle (pack/light_strategy.h)
-    bool surfaceTextures_ = false;    // some material has a texture: compile the lookups in
-    int surfaceMaps_ = 0;             // which kinds of map (layout::MapBit): SURFACE_MAPS
-    bool surfaceOpacity_ = false;     // some material has alpha or is single-sided: SURFACE_OPACITY
+    std::vector<glm::vec4>
+        causticCasters_;            // spheres nee's caustic light paths aim at (pack/caustic_casters.h)
+    bool surfaceTextures_ = false;  // some material has a texture: compile the lookups in
+    int surfaceMaps_ = 0;           // which kinds of map (layout::MapBit): SURFACE_MAPS
+    bool surfaceOpacity_ = false;   // some material has alpha or is single-sided: SURFACE_OPACITY
     std::unique_ptr<SceneTextures> textures_;
     std::unique_ptr<EnvironmentTextures> environmentTextures_;  // only for an environment map
     std::unique_ptr<RenderTargets> targets_;
     std::unique_ptr<Program> program_, splitProgram_;
-    std::unique_ptr<Program> lightProgram_, splitLightProgram_;  // bdpt's light tracing, else null
-    std::unique_ptr<LightSplat> lightSplat_;                     // when either is set
-    int restoredLightPaths_ = 0;                                 // per pixel, in a resumed mean
-    uint64_t launchedLightPaths_ = 0;  // light paths traced into the light image (over all pixels)
+    // bdpt's light tracing, or nee's for caustics (causticsByLight), else null
+    std::unique_ptr<Program> lightProgram_, splitLightProgram_;
+    std::unique_ptr<LightSplat> lightSplat_;  // when either is set
+    int restoredLightPaths_ = 0;              // per pixel, in a resumed mean
+    uint64_t launchedLightPaths_ = 0;         // light paths traced into the light image (over all pixels)
     GLuint vertexArray_ = 0;
     RenderSettings settings_;
     Camera camera_;

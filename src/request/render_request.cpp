@@ -80,6 +80,11 @@ std::vector<OptionGroup> requestOptionGroups(unsigned options, const FrontEndDef
              "auto: the tree for scenes of many emitters | power: by power |\ntree: by a light tree, "
              "power weighed by distance and orientation (nee)\n(default: " +
                  sceneOr + lightSelectionName(builtIn.lightSelection) + ")"});
+        path.options.push_back(
+            {"--caustics", "", "NAME",
+             "auto: light where glass or mirrors meet a light | path: camera paths\nalone | light: "
+             "light paths traced to glass and mirrors, joined to\nthe camera (nee) (default: " +
+                 sceneOr + causticsName(builtIn.caustics) + ")"});
         path.options.push_back({"--clamp-indirect", "", "X",
                                 "scale each sample's indirect light down to at most X per channel:\nfewer "
                                 "fireflies, but BIASED (darker); not with bdpt (default: " +
@@ -158,6 +163,7 @@ RenderRequest::RenderRequest(const Args& args, const FrontEndDefaults& defaults)
     if (auto t = args.text("--sampler")) sampler_ = parseSampler(*t);
     if (auto t = args.text("--light-sampling")) lightSampling_ = parseLightSampling(*t);
     if (auto t = args.text("--light-selection")) lightSelection_ = parseLightSelection(*t);
+    if (auto t = args.text("--caustics")) caustics_ = parseCaustics(*t);
     clampIndirect_ = args.number("--clamp-indirect");
     if (clampIndirect_ && !(*clampIndirect_ >= 0.0f))
         throw Error("option --clamp-indirect: must be 0 (off) or more");
@@ -233,6 +239,7 @@ RenderSettings RenderRequest::settings(const Scene& scene) const {
     s.sampler = sampler_.value_or(file.sampler.value_or(s.sampler));
     s.lightSampling = lightSampling_.value_or(file.lightSampling.value_or(s.lightSampling));
     s.lightSelection = lightSelection_.value_or(file.lightSelection.value_or(s.lightSelection));
+    s.caustics = caustics_.value_or(file.caustics.value_or(s.caustics));
     s.clampIndirect = clampIndirect_.value_or(file.clampIndirect.value_or(s.clampIndirect));
     s.samplesPerPass = samplesPerPass_.value_or(defaults_.samplesPerPass);
     s.view = view_.value_or(s.view);

@@ -103,6 +103,7 @@ class RenderRequest {
     std::optional<Sampler> sampler_;
     std::optional<LightSampling> lightSampling_;
     std::optional<LightSelection> lightSelection_;
+    std::optional<Caustics> caustics_;
     std::optional<float> clampIndirect_;
     std::optional<View> view_;
     std::optional<glm::vec3> eye_, target_, up_;

@@ -157,6 +157,7 @@ struct RenderDefaults {
     std::optional<Sampler> sampler;
     std::optional<LightSampling> lightSampling;
     std::optional<LightSelection> lightSelection;
+    std::optional<Caustics> caustics;
     std::optional<float> clampIndirect;  // 0: no clamp (settings/render_settings.h)
 };
 

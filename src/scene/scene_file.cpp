@@ -179,6 +179,7 @@ RenderDefaults parseRender(const json& render, Fields& fields) {
     d.sampler = choice("sampler", parseSampler);
     d.lightSampling = choice("light_sampling", parseLightSampling);
     d.lightSelection = choice("light_selection", parseLightSelection);
+    d.caustics = choice("caustics", parseCaustics);
     if (render.contains("clamp_indirect")) {
         float clamp = fields.real(render["clamp_indirect"], "render.clamp_indirect");
         if (!(clamp >= 0.0f)) fields.fail("render.clamp_indirect must be 0 (off) or more");

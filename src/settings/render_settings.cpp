@@ -41,6 +41,15 @@ const char* lightSelectionName(LightSelection selection) {
     return nameOf(selection, kNames);
 }
 
+Caustics parseCaustics(const std::string& name) {
+    return parseName(name, kAllCaustics, causticsName, "caustics");
+}
+
+const char* causticsName(Caustics caustics) {
+    static constexpr const char* kNames[] = {"auto", "path", "light"};  // in enum order
+    return nameOf(caustics, kNames);
+}
+
 View parseView(const std::string& name) {
     return parseName(name, kAllViews, viewName, "view");
 }

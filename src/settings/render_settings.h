@@ -40,6 +40,17 @@ constexpr LightSelection kAllLightSelections[] = {LightSelection::Auto, LightSel
 LightSelection parseLightSelection(const std::string& name);  // throws fp::Error listing the choices
 const char* lightSelectionName(LightSelection selection);
 
+// How nee finds caustics seen directly (light through smooth glass or off a mirror onto a surface the
+// camera sees; glsl/integrators/nee.glsl): by camera paths alone, which reach a small light through the
+// glass only by chance, or by light paths traced from the lights toward the caustic casters and joined to
+// the camera (a second pass, as LuxCoreRender's hybrid back/forward path tracing does); auto picks light
+// for scenes with surfaces of a delta lobe and a light the light paths can start from
+// (pack/caustic_casters.h). nee only; unbiased either way.
+enum class Caustics { Auto, Path, Light };
+constexpr Caustics kAllCaustics[] = {Caustics::Auto, Caustics::Path, Caustics::Light};
+Caustics parseCaustics(const std::string& name);  // throws fp::Error listing the choices
+const char* causticsName(Caustics caustics);
+
 // What each pixel shows: the rendered radiance, one property of the first hit, or a cost the path
 // tracer pays there (glsl/passes/debug_views.glsl).
 // Cost: per path, (BVH nodes visited, triangles tested, surfaces shaded) summed over all its rays, in RGB.
@@ -84,6 +95,7 @@ struct RenderSettings {
     Sampler sampler = Sampler::Sobol;
     LightSampling lightSampling = LightSampling::Auto;
     LightSelection lightSelection = LightSelection::Auto;
+    Caustics caustics = Caustics::Auto;
     View view = View::Radiance;
     // Samples each pixel takes in one draw call, at most kMaxSamplesPerPass: llvmpipe stops a shader loop
     // after a fixed number of iterations (measured: 256 samples of the 32x32 Cornell box in one pass

@@ -12,7 +12,8 @@ bool sameAccumulation(const RenderSettings& a, const RenderSettings& b) {
     return a.width == b.width && a.height == b.height && a.maxDepth == b.maxDepth && a.seed == b.seed &&
            a.integrator == b.integrator && a.view == b.view && a.samplesPerPass == b.samplesPerPass &&
            a.sampleOffset == b.sampleOffset && a.sampler == b.sampler && a.lightSampling == b.lightSampling &&
-           a.lightSelection == b.lightSelection && a.clampIndirect == b.clampIndirect && sameSplit;
+           a.lightSelection == b.lightSelection && a.caustics == b.caustics &&
+           a.clampIndirect == b.clampIndirect && sameSplit;
 }
 
 glm::ivec2 AccumulationPolicy::scaled(glm::ivec2 window, float scale) {

@@ -57,6 +57,20 @@ const char* countUnit(View view) {
     }
 }
 
+// A combo box over every value of an enum (`all`), each shown by `name`.
+template <typename E, size_t N>
+bool enumCombo(const char* label, E& value, const E (&all)[N], const char* (*name)(E)) {
+    int current = 0;
+    const char* names[N];
+    for (size_t i = 0; i < N; ++i) {
+        names[i] = name(all[i]);
+        if (all[i] == value) current = int(i);
+    }
+    if (!ImGui::Combo(label, &current, names, int(N))) return false;
+    value = all[current];
+    return true;
+}
+
 bool integratorCombo(const char* label, Integrator& integrator) {
     bool changed = false;
     if (!ImGui::BeginCombo(label, integratorName(integrator))) return false;
@@ -149,30 +163,25 @@ void statistics(const ViewerControls& c, const PanelInfo& info) {
 void renderSettings(ViewerControls& c) {
     integratorCombo("integrator", c.render.integrator);
     depthSlider("max depth", c.render.maxDepth);
-    int view = 0;
-    const char* names[std::size(kAllViews)];
-    for (size_t i = 0; i < std::size(kAllViews); ++i) {
-        names[i] = viewName(kAllViews[i]);
-        if (kAllViews[i] == c.render.view) view = int(i);
-    }
-    if (ImGui::Combo("view", &view, names, int(std::size(names)))) c.render.view = kAllViews[view];
+    enumCombo("view", c.render.view, kAllViews, viewName);
     ImGui::InputInt("target spp", &c.targetSpp);
     c.targetSpp = std::max(c.targetSpp, 0);
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("stop rendering at this many samples per pixel; 0: never");
 }
 
 void samplingSettings(ViewerControls& c) {
-    int sampler = 0;
-    const char* samplerNames[std::size(kAllSamplers)];
-    for (size_t i = 0; i < std::size(kAllSamplers); ++i) {
-        samplerNames[i] = samplerName(kAllSamplers[i]);
-        if (kAllSamplers[i] == c.render.sampler) sampler = int(i);
-    }
-    if (ImGui::Combo("sampler", &sampler, samplerNames, int(std::size(samplerNames))))
-        c.render.sampler = kAllSamplers[sampler];
+    enumCombo("sampler", c.render.sampler, kAllSamplers, samplerName);
     if (ImGui::IsItemHovered())
         ImGui::SetTooltip(
             "sobol: stratified points, error spread as blue noise; independent: the textbook's");
+    if (c.render.integrator == Integrator::Nee) {
+        enumCombo("caustics", c.render.caustics, kAllCaustics, causticsName);
+        if (ImGui::IsItemHovered())
+            ImGui::SetTooltip(
+                "light through glass or off a mirror onto a surface the camera sees: path: found by\n"
+                "camera paths alone | light: by light paths aimed at the glass | auto: light where\n"
+                "the scene has glass or mirrors (and no clamp)");
+    }
     if (c.render.integrator == Integrator::Bdpt) {
         c.render.clampIndirect = 0.0f;  // bdpt has no clamp (its strategies share paths)
     } else {

@@ -74,6 +74,7 @@ Accumulation renderPasses(Renderer& renderer, const Camera& camera, Integrator i
     s.seed = seed;
     s.samplesPerPass = 16;
     s.sampler = Sampler::Independent;  // the z-scores take pixels' errors as independent
+    s.caustics = Caustics::Path;       // nee by camera paths alone, against which bdpt's strategies are told
     renderer.configure(s, camera);
     renderer.render(spp);
     Accumulation acc = renderer.readback();
@@ -110,23 +111,10 @@ TEST(Bdpt, ConvergesToNeeOnAGlossyCornellBox) {
     expectSameImage(bdpt, nee, 4, 0.02f);
 }
 
-// Delta vertices in the middle of paths: a smooth plastic (a delta coat over a diffuse base: vertices
-// that are delta or not depending on the lobe sampled) for the white surfaces and a perfect mirror for
-// the red wall, which no strategy can join to.
+// Delta vertices in the middle of paths (cornellWithDeltaSurfaces), which no strategy can join to.
 TEST(Bdpt, ConvergesToNeeWithDeltaSurfaces) {
     ensureGlContext();
-    Scene scene = builtinCornellBox();
-    for (Material& m : scene.materials) {
-        if (m.name == "white") {
-            m.type = MaterialType::Plastic;
-            m.specular = glm::vec3(1.0f);
-            m.roughness = 0.0f;
-        } else if (m.name == "red") {
-            m.type = MaterialType::Conductor;
-            m.specular = glm::vec3(0.9f, 0.3f, 0.3f);
-            m.roughness = 0.0f;
-        }
-    }
+    Scene scene = cornellWithDeltaSurfaces();
     Accumulation bdpt = render(scene, *scene.camera, Integrator::Bdpt, 32, 256, 4);
     Accumulation nee = render(scene, *scene.camera, Integrator::Nee, 32, 512, 4, 2);
     expectSameImage(bdpt, nee, 4, 0.02f);

@@ -345,16 +345,18 @@ TEST(PunctualLight, NeeAndBdptAgreeWithLampSpotAndDirectionalLight) {
     expectSameImage(bdpt, nee, 4, 0.02f, "bdpt against nee, lamp + spot + directional");
 }
 
-// ---- a caustic only bdpt finds ----
+// ---- a caustic only light paths find ----
 
 // The caustic scene (procedural.h) lit by a point light where its lamp was: light -> glass -> glass ->
 // floor -> camera has one strategy left, light tracing (s = 0 cannot hit the light, and the delta glass
 // vertices cannot be joined), so bdpt's weight for it must be 1: bdpt and light tracing alone agree
-// block by block under the sphere. nee cannot find it at all (its shadow rays stop at the glass): the
-// floor under the sphere stays in shadow there, as the README says.
+// block by block under the sphere. nee's camera paths cannot find it at all (their shadow rays stop at
+// the glass): with --caustics path the floor under the sphere stays in shadow there; nee's light pass
+// (--caustics light, auto's choice here) must find what bdpt finds.
 // Caught: bdpt counting strategy s = 0 (misWeight's deltaLight ignored: the caustic ten times dimmer,
-// max |z| 27).
-TEST(PunctualLight, BdptFindsThePointLightsCausticThroughGlassThatNeeCannot) {
+// max |z| 27); nee's light paths from a point light weighted by the sphere's density, not the cones'
+// (caustic_casters.glsl: pdf 1 / (4 pi) in place of sampleTowardCasters' pdf: 64x bdpt's caustic).
+TEST(PunctualLight, OnlyLightPathsFindThePointLightsCausticThroughGlass) {
     ensureGlContext();
     Scene scene = causticScene(0.0f);
     for (Material& m : scene.materials) m.emission = glm::vec3(0.0f);
@@ -365,7 +367,13 @@ TEST(PunctualLight, BdptFindsThePointLightsCausticThroughGlassThatNeeCannot) {
     const PixelRect& r = kCausticUnderSphere;
     Renderer renderer(scene, testShaders());
     Accumulation bdpt = renderScene(renderer, *scene.camera, Integrator::Bdpt, 24, 256, 5, 1);
-    Accumulation nee = renderScene(renderer, *scene.camera, Integrator::Nee, 24, 256, 5, 2);
+    Accumulation nee =
+        renderScene(renderer, *scene.camera, Integrator::Nee, 24, 256, 5, 2, Sampler::Independent,
+                    LightSampling::Auto, LightSelection::Auto, Caustics::Path);
+    Accumulation neeLight =
+        renderScene(renderer, *scene.camera, Integrator::Nee, 24, 256, 5, 4, Sampler::Independent,
+                    LightSampling::Auto, LightSelection::Auto, Caustics::Light);
+    expectSameImage(neeLight, bdpt, 2, 0.03f, "nee's light pass against bdpt under the sphere", &r);
     Renderer tracing(scene, lightTracingOnly());
     Accumulation light = renderScene(tracing, *scene.camera, Integrator::Bdpt, 24, 256, 5, 3);
     std::vector<float> z = blockZScores(bdpt, light, 2, r);

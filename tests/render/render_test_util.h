@@ -194,6 +194,25 @@ inline Material lampMaterial(glm::vec3 radiance) {
     return m;
 }
 
+// The built-in Cornell box with delta vertices in the middle of paths: a smooth plastic (a delta coat
+// over a diffuse base: vertices that are delta or not depending on the lobe sampled) for the white
+// surfaces and a perfect mirror for the red wall.
+inline Scene cornellWithDeltaSurfaces() {
+    Scene scene = builtinCornellBox();
+    for (Material& m : scene.materials) {
+        if (m.name == "white") {
+            m.type = MaterialType::Plastic;
+            m.specular = glm::vec3(1.0f);
+            m.roughness = 0.0f;
+        } else if (m.name == "red") {
+            m.type = MaterialType::Conductor;
+            m.specular = glm::vec3(0.9f, 0.3f, 0.3f);
+            m.roughness = 0.0f;
+        }
+    }
+    return scene;
+}
+
 // The closed box [lo, hi] (12 triangles), faces outward: a solid for glass.
 inline void appendBox(Scene& scene, glm::vec3 lo, glm::vec3 hi, uint32_t material) {
     glm::vec3 c[8];
@@ -401,11 +420,13 @@ inline Accumulation renderScene(Renderer& renderer, const Camera& camera, Integr
                                 int spp, int maxDepth, uint32_t seed = 1,
                                 Sampler sampler = Sampler::Independent,
                                 LightSampling lightSampling = LightSampling::Auto,
-                                LightSelection lightSelection = LightSelection::Auto) {
+                                LightSelection lightSelection = LightSelection::Auto,
+                                Caustics caustics = Caustics::Auto) {
     RenderSettings s;
     s.sampler = sampler;
     s.lightSampling = lightSampling;
     s.lightSelection = lightSelection;
+    s.caustics = caustics;
     s.width = s.height = size;
     s.integrator = integrator;
     s.maxDepth = maxDepth;

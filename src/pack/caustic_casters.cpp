@@ -1,0 +1,91 @@
+#include "pack/caustic_casters.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <map>
+
+#include "core/aabb.h"
+#include "scene/instancing.h"
+
+namespace fp {
+
+namespace {
+
+// The smallest sphere that holds spheres a and b.
+glm::vec4 sphereUnion(const glm::vec4& a, const glm::vec4& b) {
+    glm::vec3 d = glm::vec3(b) - glm::vec3(a);
+    float distance = glm::length(d);
+    if (distance + b.w <= a.w) return a;
+    if (distance + a.w <= b.w) return b;
+    float radius = 0.5f * (distance + a.w + b.w);
+    glm::vec3 centre = glm::vec3(a) + d * ((radius - a.w) / distance);
+    return glm::vec4(centre, radius);
+}
+
+// The sphere about the box's centre that holds `points`; a box alone (the instances') is held by the
+// sphere through its corners.
+glm::vec4 sphereAbout(const Aabb& box, const std::vector<glm::vec3>& points) {
+    glm::vec3 centre = box.center();
+    float radius2 = 0.0f;
+    for (const glm::vec3& p : points) radius2 = std::max(radius2, glm::dot(p - centre, p - centre));
+    if (points.empty()) radius2 = 0.25f * glm::dot(box.extent(), box.extent());
+    return glm::vec4(centre, std::sqrt(radius2));
+}
+
+}  // namespace
+
+bool hasDeltaLobe(const Material& m) {
+    if (m.type == MaterialType::Diffuse) return false;
+    return m.roughness < kSmoothRoughness || m.metallicRoughnessTexture >= 0;
+}
+
+std::vector<glm::vec4> causticCasterSpheres(const Scene& scene) {
+    std::vector<glm::vec4> spheres;
+    // World triangles, one sphere per material.
+    std::map<uint32_t, std::pair<Aabb, std::vector<glm::vec3>>> byMaterial;
+    for (const Triangle& t : scene.triangles) {
+        if (t.material >= scene.materials.size() || !hasDeltaLobe(scene.materials[t.material])) continue;
+        auto& [box, points] = byMaterial[t.material];
+        for (const glm::vec3& p : t.p) {
+            box.grow(p);
+            points.push_back(p);
+        }
+    }
+    for (const auto& [material, group] : byMaterial)
+        spheres.push_back(sphereAbout(group.first, group.second));
+    // Instances: the box of each mesh's caster triangles, placed.
+    std::vector<Aabb> meshCasters(scene.meshes.size());
+    for (size_t i = 0; i < scene.meshes.size(); ++i)
+        for (const Triangle& t : scene.meshes[i].triangles)
+            if (t.material < scene.materials.size() && hasDeltaLobe(scene.materials[t.material]))
+                meshCasters[i].grow(t.bounds());
+    for (const Instance& instance : scene.instances)
+        if (instance.mesh < meshCasters.size() && !meshCasters[instance.mesh].empty())
+            spheres.push_back(
+                sphereAbout(instanceBounds(meshCasters[instance.mesh], instance.objectToWorld), {}));
+
+    if (spheres.size() > 64) {
+        glm::vec4 all = spheres[0];
+        for (const glm::vec4& s : spheres) all = sphereUnion(all, s);
+        return {all};
+    }
+    while (spheres.size() > size_t(kMaxCausticCasters)) {
+        size_t bestA = 0, bestB = 1;
+        float best = std::numeric_limits<float>::infinity();
+        for (size_t a = 0; a < spheres.size(); ++a)
+            for (size_t b = a + 1; b < spheres.size(); ++b) {
+                float r = sphereUnion(spheres[a], spheres[b]).w;
+                if (r < best) {
+                    best = r;
+                    bestA = a;
+                    bestB = b;
+                }
+            }
+        spheres[bestA] = sphereUnion(spheres[bestA], spheres[bestB]);
+        spheres.erase(spheres.begin() + std::ptrdiff_t(bestB));
+    }
+    return spheres;
+}
+
+}  // namespace fp

@@ -1,0 +1,30 @@
+#pragma once
+// The caustic casters: the surfaces whose material has a delta lobe (smooth glass, a mirror, a smooth
+// coat), bounded by a few spheres. nee's light pass (--caustics light, glsl/common/caustic_casters.glsl)
+// aims its light paths at them: a caustic path's first bounce after the light is on one of them.
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "scene/scene.h"
+
+namespace fp {
+
+// At most this many spheres (the shaders' MAX_CAUSTIC_CASTERS), so that each light path's direction
+// costs a few cone tests.
+constexpr int kMaxCausticCasters = 8;
+// Roughness under which a lobe is a delta lobe: glsl/common/bsdf.glsl's kSmooth.
+constexpr float kSmoothRoughness = 0.01f;
+
+// Whether some point of a surface of this material can have a delta lobe: every model but the
+// Lambertian has a specular lobe, a delta one below kSmoothRoughness, and a roughness map can only
+// lower the roughness (it multiplies the factor), so a mapped material counts as one.
+bool hasDeltaLobe(const Material& m);
+
+// (centre, radius) spheres that together hold every triangle of a material with a delta lobe, world
+// triangles and instances' alike; empty when there is none. One sphere per such material (per instance
+// for instanced meshes), centred on its box; while there are more than kMaxCausticCasters, the two whose
+// union is smallest are merged (over 64, all of them into one).
+std::vector<glm::vec4> causticCasterSpheres(const Scene& scene);
+
+}  // namespace fp

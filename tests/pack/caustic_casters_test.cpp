@@ -1,0 +1,93 @@
+// The caustic casters' spheres (src/pack/caustic_casters.h): nee's light pass sends light paths only
+// into the cones they subtend, so a caster vertex outside every sphere would lose its caustic (the camera
+// pass leaves it to the light pass): every vertex of every material with a delta lobe must be inside one.
+#include <gtest/gtest.h>
+
+#include <random>
+
+#include "pack/caustic_casters.h"
+#include "scene/procedural.h"
+
+namespace fp {
+namespace {
+
+Material material(MaterialType type, float roughness) {
+    Material m;
+    m.type = type;
+    m.roughness = roughness;
+    return m;
+}
+
+bool insideSome(const std::vector<glm::vec4>& spheres, const glm::vec3& p) {
+    for (const glm::vec4& s : spheres)
+        if (glm::length(p - glm::vec3(s)) <= s.w * (1.0f + 1e-5f) + 1e-6f) return true;
+    return false;
+}
+
+TEST(CausticCasters, DeltaLobesAreSmoothSpecularLobesOrMaybeMappedOnes) {
+    EXPECT_FALSE(hasDeltaLobe(material(MaterialType::Diffuse, 0.0f)));
+    EXPECT_TRUE(hasDeltaLobe(material(MaterialType::Dielectric, 0.0f)));
+    EXPECT_FALSE(hasDeltaLobe(material(MaterialType::Dielectric, 0.3f)));
+    EXPECT_TRUE(hasDeltaLobe(material(MaterialType::Conductor, 0.005f)));
+    EXPECT_TRUE(hasDeltaLobe(material(MaterialType::Plastic, 0.0f)));
+    EXPECT_FALSE(hasDeltaLobe(material(MaterialType::MetallicRoughness, 0.5f)));
+    Material mapped = material(MaterialType::MetallicRoughness, 0.5f);
+    mapped.metallicRoughnessTexture = 0;  // the map may scale the roughness down to 0
+    EXPECT_TRUE(hasDeltaLobe(mapped));
+}
+
+// Twelve caster materials scattered over a room (more than kMaxCausticCasters: merged), diffuse ones
+// among them, and an instanced glass mesh placed twice.
+TEST(CausticCasters, EveryCasterVertexIsInsideASphere) {
+    Scene scene;
+    scene.materials.push_back(material(MaterialType::Diffuse, 0.0f));
+    std::mt19937 rng(7);
+    std::uniform_real_distribution<float> u(-5.0f, 5.0f);
+    for (int i = 0; i < 24; ++i) {
+        uint32_t m = uint32_t(scene.materials.size());
+        scene.materials.push_back(i % 2 ? material(MaterialType::Dielectric, 0.0f)
+                                        : material(MaterialType::Diffuse, 0.0f));
+        appendSphere(scene, glm::vec3(u(rng), u(rng), u(rng)), 0.2f + 0.05f * float(i % 5), 6, 12, m, true);
+    }
+    InstancedMesh mesh;
+    mesh.name = "glass ball";
+    Scene ball;
+    appendSphere(ball, glm::vec3(0.0f), 1.0f, 6, 12, 2, true);  // material 2: glass
+    mesh.triangles = ball.triangles;
+    scene.meshes.push_back(mesh);
+    Instance a, b;
+    a.objectToWorld = glm::mat4(2.0f);
+    a.objectToWorld[3] = glm::vec4(20.0f, 0.0f, 0.0f, 1.0f);
+    b.objectToWorld[3] = glm::vec4(-20.0f, 3.0f, 1.0f, 1.0f);
+    scene.instances = {a, b};
+
+    std::vector<glm::vec4> spheres = causticCasterSpheres(scene);
+    ASSERT_FALSE(spheres.empty());
+    EXPECT_LE(spheres.size(), size_t(kMaxCausticCasters));
+    int casterVertices = 0;
+    for (const Triangle& t : scene.triangles)
+        if (hasDeltaLobe(scene.materials[t.material]))
+            for (const glm::vec3& p : t.p) {
+                EXPECT_TRUE(insideSome(spheres, p)) << p.x << " " << p.y << " " << p.z;
+                ++casterVertices;
+            }
+    for (const Instance& instance : scene.instances)
+        for (const Triangle& t : mesh.triangles)
+            for (const glm::vec3& p : t.p) {
+                glm::vec3 placed = glm::vec3(instance.objectToWorld * glm::vec4(p, 1.0f));
+                EXPECT_TRUE(insideSome(spheres, placed)) << placed.x << " " << placed.y << " " << placed.z;
+                ++casterVertices;
+            }
+    EXPECT_GT(casterVertices, 1000);
+}
+
+TEST(CausticCasters, NoneWithoutADeltaLobe) {
+    Scene scene;
+    scene.materials = {material(MaterialType::Diffuse, 0.0f), material(MaterialType::Dielectric, 0.4f)};
+    appendSphere(scene, glm::vec3(0.0f), 1.0f, 6, 12, 0, true);
+    appendSphere(scene, glm::vec3(3.0f), 1.0f, 6, 12, 1, true);
+    EXPECT_TRUE(causticCasterSpheres(scene).empty());
+}
+
+}  // namespace
+}  // namespace fp

@@ -1,0 +1,138 @@
+// nee's light-traced caustics (--caustics light: glsl/integrators/nee.glsl, passes/light_trace.frag.glsl,
+// common/caustic_casters.glsl). The light pass sums exactly the paths the camera pass leaves out, so the
+// two together must converge to the image of camera paths alone, and to bdpt's; at equal samples the
+// caustic's variance must fall (and a point light's caustic, which no camera path can find, must appear
+// as bdpt finds it: punctual_light_test.cpp); and a light pass launched from one block of pixels in
+// several must not depend on the tiling.
+#include <gtest/gtest.h>
+
+#include <cstdio>
+
+#include "core/error.h"
+#include "render_test_util.h"
+
+namespace fp::test {
+namespace {
+
+Accumulation renderNee(const Scene& scene, Caustics caustics, int size, int spp, int depth, uint32_t seed) {
+    Renderer renderer(scene, testShaders());
+    return renderScene(renderer, *scene.camera, Integrator::Nee, size, spp, depth, seed, Sampler::Independent,
+                       LightSampling::Auto, LightSelection::Auto, caustics);
+}
+
+double regionVariance(const Accumulation& acc, const PixelRect& r) {
+    return meanColor(acc.varianceOfMean(), r).y * double(r.width) * double(r.height);
+}
+
+// A small light above smooth glass above a floor (causticScene): light -> glass -> glass -> floor ->
+// camera. Camera paths alone find that caustic too rarely for their variance estimate to hold (a
+// z-score against them means little under the sphere), so the image is compared with bdpt's, which
+// finds it by light tracing: over the image and, block by block, under the sphere.
+// Fails (seen): with the camera pass keeping the caustic paths too (the caustic twice: 2.08x bdpt's
+// under the sphere) and without the launch weight (light_trace.frag.glsl: 0.15x).
+TEST(Caustics, LightPassAddsUpToBdptsImage) {
+    ensureGlContext();
+    Scene scene = causticScene(0.0f);
+    Accumulation light = renderNee(scene, Caustics::Light, 24, 256, 5, 1);
+    Renderer bdptRenderer(scene, testShaders());
+    Accumulation bdpt = renderScene(bdptRenderer, *scene.camera, Integrator::Bdpt, 24, 256, 5, 3);
+    expectSameImage(light, bdpt, 4, 0.05f, "light against bdpt");  // the glass itself is noisy
+    const PixelRect& r = kCausticUnderSphere;
+    expectSameImage(light, bdpt, 2, 0.03f, "light against bdpt under the sphere", &r);
+    EXPECT_GT(meanColor(light.mean(), r).y, 2.0f * meanColor(light.mean(), PixelRect{0, 0, 24, 4}).y)
+        << "the caustic must be there";
+}
+
+// Smooth plastic walls (a delta coat over a diffuse base: a vertex is delta or not by the lobe it
+// samples) and a mirror wall (cornellWithDeltaSurfaces): caustic chains of one and two delta vertices,
+// at depth 2, where the light subpath's length and the camera path's limit meet, and 5. Fails (seen) with
+// the camera pass keeping the caustic paths too: the red mirror's caustic twice, mean z 6-7 in red.
+TEST(Caustics, LightPassAddsUpToCameraPathsWithMirrorsAndSmoothCoats) {
+    ensureGlContext();
+    Scene scene = cornellWithDeltaSurfaces();
+    for (int depth : {2, 5}) {
+        Accumulation light = renderNee(scene, Caustics::Light, 32, 1024, depth, 1);
+        Accumulation path = renderNee(scene, Caustics::Path, 32, 1024, depth, 2);
+        expectSameImage(light, path, 4, 0.02f, "depth " + std::to_string(depth));
+    }
+}
+
+// The point of the light pass: under the sphere its variance at equal samples is far below that of
+// camera paths, which reach the small light through the glass only by chance.
+TEST(Caustics, LightPassCutsTheCausticsVariance) {
+    ensureGlContext();
+    Scene scene = causticScene(0.0f);
+    Accumulation light = renderNee(scene, Caustics::Light, 24, 256, 5, 1);
+    Accumulation path = renderNee(scene, Caustics::Path, 24, 256, 5, 2);
+    double vl = regionVariance(light, kCausticUnderSphere), vp = regionVariance(path, kCausticUnderSphere);
+    std::printf(
+        "under the sphere, 256 spp: variance of the mean summed over the region: light %.4g, path %.4g\n", vl,
+        vp);
+    EXPECT_LT(vl, 0.25 * vp);
+}
+
+// auto: the light pass where glass or a mirror meets a light, not in a diffuse box, not with a clamp;
+// and only for nee.
+TEST(Caustics, AutoRunsTheLightPassOnlyWhereItCan) {
+    ensureGlContext();
+    auto lightImage = [](const Scene& scene, Integrator integrator, Caustics caustics, float clamp) {
+        Renderer renderer(scene, testShaders());
+        RenderSettings s;
+        s.width = s.height = 8;
+        s.integrator = integrator;
+        s.caustics = caustics;
+        s.clampIndirect = clamp;
+        renderer.configure(s, *scene.camera);
+        renderer.render(1);
+        return !renderer.readback().splatSum.empty();
+    };
+    Scene glass = causticScene(0.0f), box = builtinCornellBox(), roughGlass = causticScene(0.3f);
+    EXPECT_TRUE(lightImage(glass, Integrator::Nee, Caustics::Auto, 0.0f));
+    EXPECT_FALSE(lightImage(glass, Integrator::Nee, Caustics::Auto, 10.0f));
+    EXPECT_FALSE(lightImage(glass, Integrator::Nee, Caustics::Path, 0.0f));
+    EXPECT_FALSE(lightImage(glass, Integrator::Bsdf, Caustics::Light, 0.0f));
+    EXPECT_FALSE(lightImage(box, Integrator::Nee, Caustics::Auto, 0.0f));
+    EXPECT_FALSE(lightImage(roughGlass, Integrator::Nee, Caustics::Auto, 0.0f))
+        << "rough glass has no delta lobe";
+}
+
+TEST(Caustics, AskingForTheLightPassWhereItCannotWorkIsAnError) {
+    ensureGlContext();
+    auto configure = [](const Scene& scene, Caustics caustics, float clamp) {
+        Renderer renderer(scene, testShaders());
+        RenderSettings s;
+        s.width = s.height = 8;
+        s.caustics = caustics;
+        s.clampIndirect = clamp;
+        renderer.configure(s, *scene.camera);
+    };
+    EXPECT_THROW(configure(builtinCornellBox(), Caustics::Light, 0.0f), Error);
+    EXPECT_THROW(configure(causticScene(0.0f), Caustics::Light, 10.0f), Error);
+    EXPECT_NO_THROW(configure(causticScene(0.0f), Caustics::Light, 0.0f));
+}
+
+// The light paths leave from one 4 x 4 block in several, in a pattern that moves with the sample, each
+// weighted by the region's pixels over the launching ones; tiles (the viewer) launch their own share,
+// at any alignment (5 does not divide 24), even tiles too small for the pattern. The image must not
+// change: the tiled render against a whole-frame one, independent of it. Fails (seen) when the slots of
+// a row run 4 pixels past the region's ends (paths launched by two tiles: 2.24x under the sphere).
+TEST(Caustics, TilesGiveTheWholeFrameImage) {
+    ensureGlContext();
+    Scene scene = causticScene(0.0f);
+    Renderer renderer(scene, testShaders());
+    Accumulation whole =
+        renderScene(renderer, *scene.camera, Integrator::Nee, 24, 256, 5, 1, Sampler::Independent,
+                    LightSampling::Auto, LightSelection::Auto, Caustics::Light);
+    RenderSettings s = renderer.settings();
+    s.seed = 2;
+    renderer.configure(s, *scene.camera);
+    for (int completed = 0; completed < 128;)
+        if (renderer.renderTile(5)) ++completed;
+    Accumulation tiled = renderer.readback();
+    const PixelRect& r = kCausticUnderSphere;
+    expectSameImage(tiled, whole, 2, 0.03f, "tiled against whole frames, under the sphere", &r);
+    expectSameImage(tiled, whole, 4, 0.05f, "tiled against whole frames");
+}
+
+}  // namespace
+}  // namespace fp::test
