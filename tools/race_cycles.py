@@ -7,6 +7,7 @@
 #   tools/race_cycles.py [--scene assets/cornell/cornell.json] [--size 128] [--max-depth 5]
 #                        [--spp 16,64,256] [--reference-spp 8192] [--runs 3] [--threads 2]
 #                        [--integrator nee] [--reference-integrator NAME] [--light-selection auto]
+#                        [--caustics auto]
 #
 # Installs Debian's `blender` package when it is missing (apt-get, with sudo when not root). The scene is
 # a fragpath scene file (an OBJ of Lambertian and emissive materials, and a camera); Cycles renders it
@@ -75,6 +76,7 @@ def main():
     parser.add_argument("--threads", type=int, default=2)
     parser.add_argument("--integrator", default="nee", help="fragpath's integrator in the race")
     parser.add_argument("--light-selection", default="auto", help="fragpath's, in the race and the reference")
+    parser.add_argument("--caustics", default="auto", help="fragpath's, in the race (the reference keeps auto)")
     parser.add_argument("--reference-integrator", default=None,
                         help="the reference's integrator (default: --integrator; bdpt converges faster on caustics)")
     args = parser.parse_args()
@@ -87,10 +89,10 @@ def main():
     env = dict(os.environ, LP_NUM_THREADS=str(args.threads))
     size = "%dx%d" % (args.size, args.size)
 
-    def fragpath(spp, seed, path, integrator=args.integrator):
+    def fragpath(spp, seed, path, integrator=args.integrator, caustics=args.caustics):
         return [args.fragpath, "render", args.scene, "--size", size, "--spp", str(spp), "--max-depth",
                 str(args.max_depth), "--seed", str(seed), "--integrator", integrator,
-                "--light-selection", args.light_selection, "--samples-per-pass",
+                "--light-selection", args.light_selection, "--caustics", caustics, "--samples-per-pass",
                 "16", "--quiet", "-o", path]
 
     def cycles(spp, seed, path):
@@ -102,15 +104,16 @@ def main():
 
     reference_path = os.path.join(out, "reference.pfm")
     reference_integrator = args.reference_integrator or args.integrator
-    subprocess.run(fragpath(args.reference_spp, 1000, reference_path, reference_integrator), check=True, env=env)
+    subprocess.run(fragpath(args.reference_spp, 1000, reference_path, reference_integrator, "auto"), check=True,
+                   env=env)
     reference = read_pfm(reference_path)
 
     def rmse(image):
         return math.sqrt(sum((a - b) ** 2 for a, b in zip(image, reference)) / len(reference))
 
-    print("scene %s, %s, max depth %d, %d threads; fragpath %s, light selection %s; reference: fragpath %s, %d spp" %
-          (args.scene, size, args.max_depth, args.threads, args.integrator, args.light_selection,
-           reference_integrator, args.reference_spp))
+    print("scene %s, %s, max depth %d, %d threads; fragpath %s, light selection %s, caustics %s; reference: "
+          "fragpath %s, %d spp" % (args.scene, size, args.max_depth, args.threads, args.integrator,
+                                   args.light_selection, args.caustics, reference_integrator, args.reference_spp))
     commands = (("fragpath", fragpath), ("cycles", cycles))
     sample_counts = [int(s) for s in args.spp.split(",")]
     # Every measurement alternates the two renderers (fragpath, Cycles, fragpath, ...), so that a drift

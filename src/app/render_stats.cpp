@@ -31,6 +31,7 @@ RenderStats collectRenderStats(const Renderer& renderer, const Accumulation& acc
     s.sceneStats = renderer.stats();
     s.settings = renderer.settings();
     s.imageBytes = renderer.imageBytes();
+    s.lightImage = !acc.splatSum.empty();
     s.spp = times.spp;
     s.paths = uint64_t(s.settings.width) * uint64_t(s.settings.height) * uint64_t(std::max(times.spp, 0));
     s.rays = uint64_t(std::llround(acc.raysTraced()));
@@ -68,7 +69,7 @@ std::string formatRenderStats(const RenderStats& stats) {
     text += formatText("scene reads      %s\n", sceneReadsName(s.sceneReads));
     text += formatText("image buffers    %zu bytes (%.0f per pixel: accumulation%s)\n", stats.imageBytes,
                        per(double(stats.imageBytes), double(settings.width) * settings.height),
-                       settings.integrator == Integrator::Bdpt ? " and bdpt's light image" : "");
+                       stats.lightImage ? " and the light image" : "");
     text +=
         formatText("first frame      %.3f s after start (load, build, upload, shader compile, first pass)\n",
                    stats.firstFrameSeconds);

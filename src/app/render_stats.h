@@ -17,7 +17,8 @@ struct RenderStats {
     std::string output;    // the -o file
     SceneStats sceneStats;
     RenderSettings settings;
-    size_t imageBytes = 0;  // Renderer::imageBytes
+    size_t imageBytes = 0;    // Renderer::imageBytes
+    bool lightImage = false;  // a light-tracing pass (bdpt, nee's caustics) filled a light image
     // This run's samples per pixel (a resumed render: those rendered now), and its paths (one per
     // pixel and sample) and rays (camera, bounce and shadow rays of those paths).
     int spp = 0;
