@@ -43,3 +43,37 @@ vec3 sampleTowardCasters(vec3 p, vec2 u, out float pdf) {
     pdf = holding / (2.0 * PI * total);
     return dir;
 }
+
+// For a directional light, whose rays all travel along unit `dir`: a ray origin on the plane through
+// `planePoint` perpendicular to dir, uniform over the union of the disks the spheres cast on it (one
+// chosen in proportion to its area, counted with multiplicity). pdf: the area density of that point,
+// the number of disks that hold it over their total area.
+vec3 sampleAlongToCasters(vec3 dir, vec3 planePoint, vec2 u, out float pdf) {
+    float total = 0.0;
+    for (int i = 0; i < uCasterCount; ++i) total += uCasters[i].w * uCasters[i].w;
+    float target = u.x * total;
+    int pick = uCasterCount - 1;
+    for (int i = 0; i < uCasterCount; ++i) {
+        float w = uCasters[i].w * uCasters[i].w;
+        if (target < w || i == uCasterCount - 1) {
+            pick = i;
+            u.x = clamp(target / w, 0.0, 1.0);
+            break;
+        }
+        target -= w;
+    }
+    vec3 t, b;
+    orthonormalBasis(dir, t, b);
+    vec3 c = uCasters[pick].xyz;
+    vec3 centre = c - dot(c - planePoint, dir) * dir;  // the sphere's centre, projected on the plane
+    vec2 d = uCasters[pick].w * sampleConcentricDisk(u);
+    vec3 origin = centre + d.x * t + d.y * b;
+    float holding = 1.0;  // the picked disk holds the point, whatever the rounding at its edge
+    for (int i = 0; i < uCasterCount; ++i) {
+        vec3 q = uCasters[i].xyz - planePoint;
+        vec3 offset = (origin - planePoint) - (q - dot(q, dir) * dir);
+        if (i != pick && dot(offset, offset) <= uCasters[i].w * uCasters[i].w) holding += 1.0;
+    }
+    pdf = holding / (PI * total);
+    return origin;
+}

@@ -266,12 +266,17 @@ int traceLightSubpath(int maxDepth) {
         vec3 origin = l.position;
         if (l.type == PUNCTUAL_DIRECTIONAL) {
             dir = l.direction;
+#if CAUSTICS_LIGHT_TRACED
+            // Only where the caster spheres stand in its way (caustic_casters.glsl).
+            origin = sampleAlongToCasters(dir, origin - l.radius * dir, rand2(), diskPdf);
+#else
             vec3 t, b;
             orthonormalBasis(dir, t, b);
             vec2 u = rand2();
             float r = l.radius * sqrt(u.x), phi = 2.0 * PI * u.y;  // uniform on the disk
             origin += l.radius * -dir + r * cos(phi) * t + r * sin(phi) * b;
             diskPdf = 1.0 / (PI * l.radius * l.radius);
+#endif
             pdfDir = 1.0;
             beta = l.intensity / (e.pmf * diskPdf);
         } else {

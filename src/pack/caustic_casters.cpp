@@ -35,9 +35,19 @@ glm::vec4 sphereAbout(const Aabb& box, const std::vector<glm::vec3>& points) {
 
 }  // namespace
 
-bool hasDeltaLobe(const Material& m) {
+bool hasDeltaLobe(const Material& m, const std::vector<Texture>& textures) {
     if (m.type == MaterialType::Diffuse) return false;
-    return m.roughness < kSmoothRoughness || m.metallicRoughnessTexture >= 0;
+    float smallest = 1.0f;  // of the roughness map's G channel, in [0, 1]
+    if (m.metallicRoughnessTexture >= 0) {
+        if (size_t(m.metallicRoughnessTexture) >= textures.size()) return true;
+        const std::vector<uint8_t>& texels = textures[size_t(m.metallicRoughnessTexture)].image.texels;
+        uint8_t g = 255;
+        for (size_t i = 1; i < texels.size(); i += 4) g = std::min(g, texels[i]);
+        smallest = float(g) / 255.0f;
+    }
+    // Twice the threshold: the GPU's filtered value may round below the smallest texel, and a delta lobe
+    // missed here would lose its caustics (the camera pass leaves them to the light pass).
+    return m.roughness * smallest < 2.0f * kSmoothRoughness;
 }
 
 std::vector<glm::vec4> causticCasterSpheres(const Scene& scene) {
@@ -45,7 +55,9 @@ std::vector<glm::vec4> causticCasterSpheres(const Scene& scene) {
     // World triangles, one sphere per material.
     std::map<uint32_t, std::pair<Aabb, std::vector<glm::vec3>>> byMaterial;
     for (const Triangle& t : scene.triangles) {
-        if (t.material >= scene.materials.size() || !hasDeltaLobe(scene.materials[t.material])) continue;
+        if (t.material >= scene.materials.size() ||
+            !hasDeltaLobe(scene.materials[t.material], scene.textures))
+            continue;
         auto& [box, points] = byMaterial[t.material];
         for (const glm::vec3& p : t.p) {
             box.grow(p);
@@ -58,7 +70,8 @@ std::vector<glm::vec4> causticCasterSpheres(const Scene& scene) {
     std::vector<Aabb> meshCasters(scene.meshes.size());
     for (size_t i = 0; i < scene.meshes.size(); ++i)
         for (const Triangle& t : scene.meshes[i].triangles)
-            if (t.material < scene.materials.size() && hasDeltaLobe(scene.materials[t.material]))
+            if (t.material < scene.materials.size() &&
+                hasDeltaLobe(scene.materials[t.material], scene.textures))
                 meshCasters[i].grow(t.bounds());
     for (const Instance& instance : scene.instances)
         if (instance.mesh < meshCasters.size() && !meshCasters[instance.mesh].empty())

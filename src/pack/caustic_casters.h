@@ -17,9 +17,10 @@ constexpr int kMaxCausticCasters = 8;
 constexpr float kSmoothRoughness = 0.01f;
 
 // Whether some point of a surface of this material can have a delta lobe: every model but the
-// Lambertian has a specular lobe, a delta one below kSmoothRoughness, and a roughness map can only
-// lower the roughness (it multiplies the factor), so a mapped material counts as one.
-bool hasDeltaLobe(const Material& m);
+// Lambertian has a specular lobe, a delta one below kSmoothRoughness. A roughness map multiplies the
+// factor by its G channel, filtered bilinearly, so by at least its smallest texel: `textures` (the
+// scene's) bound it; a map that is not there counts as one that can reach 0.
+bool hasDeltaLobe(const Material& m, const std::vector<Texture>& textures);
 
 // (centre, radius) spheres that together hold every triangle of a material with a delta lobe, world
 // triangles and instances' alike; empty when there is none. One sphere per such material (per instance

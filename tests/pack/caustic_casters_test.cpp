@@ -24,16 +24,26 @@ bool insideSome(const std::vector<glm::vec4>& spheres, const glm::vec3& p) {
     return false;
 }
 
-TEST(CausticCasters, DeltaLobesAreSmoothSpecularLobesOrMaybeMappedOnes) {
-    EXPECT_FALSE(hasDeltaLobe(material(MaterialType::Diffuse, 0.0f)));
-    EXPECT_TRUE(hasDeltaLobe(material(MaterialType::Dielectric, 0.0f)));
-    EXPECT_FALSE(hasDeltaLobe(material(MaterialType::Dielectric, 0.3f)));
-    EXPECT_TRUE(hasDeltaLobe(material(MaterialType::Conductor, 0.005f)));
-    EXPECT_TRUE(hasDeltaLobe(material(MaterialType::Plastic, 0.0f)));
-    EXPECT_FALSE(hasDeltaLobe(material(MaterialType::MetallicRoughness, 0.5f)));
-    Material mapped = material(MaterialType::MetallicRoughness, 0.5f);
-    mapped.metallicRoughnessTexture = 0;  // the map may scale the roughness down to 0
-    EXPECT_TRUE(hasDeltaLobe(mapped));
+TEST(CausticCasters, DeltaLobesAreSmoothSpecularLobesOrMappedOnesThatReachSmooth) {
+    const std::vector<Texture> none;
+    EXPECT_FALSE(hasDeltaLobe(material(MaterialType::Diffuse, 0.0f), none));
+    EXPECT_TRUE(hasDeltaLobe(material(MaterialType::Dielectric, 0.0f), none));
+    EXPECT_FALSE(hasDeltaLobe(material(MaterialType::Dielectric, 0.3f), none));
+    EXPECT_TRUE(hasDeltaLobe(material(MaterialType::Conductor, 0.005f), none));
+    EXPECT_TRUE(hasDeltaLobe(material(MaterialType::Plastic, 0.0f), none));
+    EXPECT_FALSE(hasDeltaLobe(material(MaterialType::MetallicRoughness, 0.5f), none));
+    // A roughness map scales the factor by its G channel: by 128/255 everywhere it stays rough; one
+    // texel of G 1 takes it to 0.004, smooth.
+    Material mapped = material(MaterialType::MetallicRoughness, 1.0f);
+    mapped.metallicRoughnessTexture = 0;
+    Texture map;
+    map.image.width = 2;
+    map.image.height = 1;
+    map.image.texels = {0, 128, 0, 255, 0, 128, 0, 255};
+    EXPECT_FALSE(hasDeltaLobe(mapped, {map}));
+    map.image.texels[5] = 1;
+    EXPECT_TRUE(hasDeltaLobe(mapped, {map}));
+    EXPECT_TRUE(hasDeltaLobe(mapped, none)) << "a map that is not there";
 }
 
 // Twelve caster materials scattered over a room (more than kMaxCausticCasters: merged), diffuse ones
@@ -66,7 +76,7 @@ TEST(CausticCasters, EveryCasterVertexIsInsideASphere) {
     EXPECT_LE(spheres.size(), size_t(kMaxCausticCasters));
     int casterVertices = 0;
     for (const Triangle& t : scene.triangles)
-        if (hasDeltaLobe(scene.materials[t.material]))
+        if (hasDeltaLobe(scene.materials[t.material], scene.textures))
             for (const glm::vec3& p : t.p) {
                 EXPECT_TRUE(insideSome(spheres, p)) << p.x << " " << p.y << " " << p.z;
                 ++casterVertices;
