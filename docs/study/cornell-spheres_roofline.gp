@@ -35,7 +35,7 @@ plot $naive_x80 using 1:2 with linespoints lc rgb '#1f77b4' dt 1 pt 7 title 'x80
      $naive_flagship using 1:2 with linespoints lc rgb '#1f77b4' dt 2 pt 5 title 'flagship: FP32', \
      $naive_flagship using 1:3 with linespoints lc rgb '#2ca02c' dt 2 pt 5 title 'flagship: memory', \
      $naive_flagship using 1:4 with linespoints lc rgb '#d62728' dt 2 pt 5 title 'flagship: RT cores', \
-     3.71165e+13 with lines lc 'black' dt 3 lw 2 title 'need: none, 8.35e+04 spp'
+     3.71119e+13 with lines lc 'black' dt 3 lw 2 title 'need: none, 8.35e+04 spp'
 
 $bsdf_x80 << EOD
 # year fp32 memory rt_cores (rays per second)
@@ -63,7 +63,7 @@ plot $bsdf_x80 using 1:2 with linespoints lc rgb '#1f77b4' dt 1 pt 7 title 'x80:
      $bsdf_flagship using 1:2 with linespoints lc rgb '#1f77b4' dt 2 pt 5 title 'flagship: FP32', \
      $bsdf_flagship using 1:3 with linespoints lc rgb '#2ca02c' dt 2 pt 5 title 'flagship: memory', \
      $bsdf_flagship using 1:4 with linespoints lc rgb '#d62728' dt 2 pt 5 title 'flagship: RT cores', \
-     2.36211e+13 with lines lc 'black' dt 3 lw 2 title 'need: none, 5.3e+04 spp'
+     2.36153e+13 with lines lc 'black' dt 3 lw 2 title 'need: none, 5.3e+04 spp'
 
 $nee_x80 << EOD
 # year fp32 memory rt_cores (rays per second)
@@ -91,7 +91,7 @@ plot $nee_x80 using 1:2 with linespoints lc rgb '#1f77b4' dt 1 pt 7 title 'x80: 
      $nee_flagship using 1:2 with linespoints lc rgb '#1f77b4' dt 2 pt 5 title 'flagship: FP32', \
      $nee_flagship using 1:3 with linespoints lc rgb '#2ca02c' dt 2 pt 5 title 'flagship: memory', \
      $nee_flagship using 1:4 with linespoints lc rgb '#d62728' dt 2 pt 5 title 'flagship: RT cores', \
-     4.99973e+12 with lines lc 'black' dt 3 lw 2 title 'need: none, 7.07e+03 spp'
+     4.85405e+12 with lines lc 'black' dt 3 lw 2 title 'need: none, 6.87e+03 spp'
 
 $bdpt_x80 << EOD
 # year fp32 memory rt_cores (rays per second)
@@ -119,4 +119,4 @@ plot $bdpt_x80 using 1:2 with linespoints lc rgb '#1f77b4' dt 1 pt 7 title 'x80:
      $bdpt_flagship using 1:2 with linespoints lc rgb '#1f77b4' dt 2 pt 5 title 'flagship: FP32', \
      $bdpt_flagship using 1:3 with linespoints lc rgb '#2ca02c' dt 2 pt 5 title 'flagship: memory', \
      $bdpt_flagship using 1:4 with linespoints lc rgb '#d62728' dt 2 pt 5 title 'flagship: RT cores', \
-     9.28723e+12 with lines lc 'black' dt 3 lw 2 title 'need: none, 6.21e+03 spp'
+     9.28009e+12 with lines lc 'black' dt 3 lw 2 title 'need: none, 6.21e+03 spp'

@@ -35,7 +35,7 @@ plot $naive_x80 using 1:2 with linespoints lc rgb '#1f77b4' dt 1 pt 7 title 'x80
      $naive_flagship using 1:2 with linespoints lc rgb '#1f77b4' dt 2 pt 5 title 'flagship: FP32', \
      $naive_flagship using 1:3 with linespoints lc rgb '#2ca02c' dt 2 pt 5 title 'flagship: memory', \
      $naive_flagship using 1:4 with linespoints lc rgb '#d62728' dt 2 pt 5 title 'flagship: RT cores', \
-     2.61943e+12 with lines lc 'black' dt 3 lw 2 title 'need: none, 1.03e+04 spp'
+     2.62997e+12 with lines lc 'black' dt 3 lw 2 title 'need: none, 1.03e+04 spp'
 
 $bsdf_x80 << EOD
 # year fp32 memory rt_cores (rays per second)
@@ -63,7 +63,7 @@ plot $bsdf_x80 using 1:2 with linespoints lc rgb '#1f77b4' dt 1 pt 7 title 'x80:
      $bsdf_flagship using 1:2 with linespoints lc rgb '#1f77b4' dt 2 pt 5 title 'flagship: FP32', \
      $bsdf_flagship using 1:3 with linespoints lc rgb '#2ca02c' dt 2 pt 5 title 'flagship: memory', \
      $bsdf_flagship using 1:4 with linespoints lc rgb '#d62728' dt 2 pt 5 title 'flagship: RT cores', \
-     2.61943e+12 with lines lc 'black' dt 3 lw 2 title 'need: none, 1.03e+04 spp'
+     2.62997e+12 with lines lc 'black' dt 3 lw 2 title 'need: none, 1.03e+04 spp'
 
 $nee_x80 << EOD
 # year fp32 memory rt_cores (rays per second)
@@ -91,7 +91,7 @@ plot $nee_x80 using 1:2 with linespoints lc rgb '#1f77b4' dt 1 pt 7 title 'x80: 
      $nee_flagship using 1:2 with linespoints lc rgb '#1f77b4' dt 2 pt 5 title 'flagship: FP32', \
      $nee_flagship using 1:3 with linespoints lc rgb '#2ca02c' dt 2 pt 5 title 'flagship: memory', \
      $nee_flagship using 1:4 with linespoints lc rgb '#d62728' dt 2 pt 5 title 'flagship: RT cores', \
-     9.01195e+11 with lines lc 'black' dt 3 lw 2 title 'need: none, 2.73e+03 spp'
+     9.14554e+11 with lines lc 'black' dt 3 lw 2 title 'need: none, 2.77e+03 spp'
 
 $bdpt_x80 << EOD
 # year fp32 memory rt_cores (rays per second)
@@ -119,4 +119,4 @@ plot $bdpt_x80 using 1:2 with linespoints lc rgb '#1f77b4' dt 1 pt 7 title 'x80:
      $bdpt_flagship using 1:2 with linespoints lc rgb '#1f77b4' dt 2 pt 5 title 'flagship: FP32', \
      $bdpt_flagship using 1:3 with linespoints lc rgb '#2ca02c' dt 2 pt 5 title 'flagship: memory', \
      $bdpt_flagship using 1:4 with linespoints lc rgb '#d62728' dt 2 pt 5 title 'flagship: RT cores', \
-     4.52586e+11 with lines lc 'black' dt 3 lw 2 title 'need: none, 784 spp'
+     4.33763e+11 with lines lc 'black' dt 3 lw 2 title 'need: none, 752 spp'
