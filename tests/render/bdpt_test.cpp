@@ -124,10 +124,6 @@ TEST(Bdpt, ConvergesToNeeWithDeltaSurfaces) {
 
 const PixelRect kUnderSphere = kCausticUnderSphere;
 
-double regionVariance(const Accumulation& acc, const PixelRect& r) {
-    return meanColor(acc.varianceOfMean(), r).y * double(r.width) * double(r.height);
-}
-
 // The shaders with BDPT_LIGHT_TRACING_ONLY defined: every MIS weight is 0 but those of the
 // light-tracing strategies, which are 1. Light tracing alone then estimates every path whose
 // camera-side vertex z_1 is not delta and that has at most BDPT_MAX_LIGHT_VERTICES light vertices.

@@ -20,10 +20,6 @@ Accumulation renderNee(const Scene& scene, Caustics caustics, int size, int spp,
                        LightSampling::Auto, LightSelection::Auto, caustics);
 }
 
-double regionVariance(const Accumulation& acc, const PixelRect& r) {
-    return meanColor(acc.varianceOfMean(), r).y * double(r.width) * double(r.height);
-}
-
 // A small light above smooth glass above a floor (causticScene): light -> glass -> glass -> floor ->
 // camera. Camera paths alone find that caustic too rarely for their variance estimate to hold (a
 // z-score against them means little under the sphere), so the image is compared with bdpt's, which

@@ -147,6 +147,11 @@ inline ImageEstimate estimate(const Accumulation& acc, int x0 = 0, int y0 = 0, i
     return {glm::vec3(sum / count), glm::vec3(glm::sqrt(varSum) / count)};
 }
 
+// The variance of the mean in the luminance channel G, summed over the pixels of `r`.
+inline double regionVariance(const Accumulation& acc, const PixelRect& r) {
+    return meanColor(acc.varianceOfMean(), r).y * double(r.width) * double(r.height);
+}
+
 // z-scores of the difference of two independent estimates over blocks of b x b pixels inside `rect`.
 inline std::vector<float> blockZScores(const Accumulation& a, const Accumulation& b, int block,
                                        const PixelRect& rect) {
