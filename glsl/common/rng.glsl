@@ -55,6 +55,7 @@ void rngInitSecondStream(uint seed, uvec2 pixel, uint sampleIndex) {
 const uint kLensPair = 0x40000000u;  // far beyond the few hundred pairs a path draws, below kSecondStream
 
 vec2 rand2();
+vec2 rand2Coherent();  // the next pair, shared by a block of pixels where the sampler allows (below)
 
 // The 2D point of pair `pair` of the current stream (the camera's or bdpt's light stream), without moving
 // the stream on.
@@ -98,8 +99,9 @@ vec2 randAt(uint pair) {
 // Dimension layout (the order of the calls): pair 0 the pixel jitter; then per bounce, nee: the choice
 // between the environment and the emitters (only in scenes with both), the emitter and the point on it
 // (one pair, sampleEmitterPoint; a second one for an emitter of under 2^-12 of the power), then
-// drawBounceNumbers' two pairs, the BSDF direction and (lobe choice, roulette); bsdf and naive:
-// drawBounceNumbers' two pairs; a dispersive glass draws the path's wavelength where the path first
+// drawBounceNumbers' two pairs, the BSDF direction and (lobe choice, roulette), the latter coherent over
+// 8x8 pixels from the roulette's first bounce on (rand2Coherent); bsdf and naive: drawBounceNumbers'
+// two pairs; a dispersive glass draws the path's wavelength where the path first
 // meets one. bdpt's light subpath starts at pair 2^31 (its second stream, scrambled per pixel: see
 // rand2). Out of that order (randAt, below): the lens of a thin-lens camera, pair 2^30 of the camera
 // stream, and in the light stream pairs 2^31 + 2^30 + 2s for light tracing's lens point toward light
@@ -174,12 +176,20 @@ uint gZOrderReversed;  // the pixel's shuffled Z-order index, its bits reversed
 uint gSampleReversed;  // the sample index, its bits reversed
 uvec3 gZOrderOf = uvec3(0xffffffffu);  // the (pixel, seed) gZOrderReversed belongs to
 
+// Coherent pairs (rand2Coherent): the scramble is one per 8x8 block of pixels, hashed from the block, and
+// no pixel's shift applies, so the block's pixels take the same point. The block key never equals the
+// blue-noise pairs' constant (0x5eed50b1u): x and y of a block are below 2^11.
+const uint kCoherentBlockLevels = 3u;
+uint gCoherentBlockKey;
+
 void samplerInit(uint seed, uvec2 pixel, uint sampleIndex) {
     if (gZOrderOf != uvec3(pixel, seed)) {  // once per pixel of a pass, not once per sample
         gZOrderReversed = bitfieldReverse(shuffledZOrder(pixel, seed));
         gZOrderOf = uvec3(pixel, seed);
     }
     gSampleReversed = bitfieldReverse(sampleIndex);
+    uvec2 block = pixel >> kCoherentBlockLevels;
+    gCoherentBlockKey = block.x | (block.y << 16u);
 }
 
 // Digit q of the result is the XOR of the bits i of z with i a subset of q (a subset, or zeta,
@@ -192,18 +202,19 @@ uint subsetParities(uint z) {
     return z ^ (z << 16u);
 }
 
-vec2 rand2() {
+vec2 sobolPair(bool blockWide) {
     // The camera stream's scrambles are the same for every pixel (blue noise). bdpt's light subpaths
     // (the second stream) land anywhere on the screen, where a neighbour means nothing, and a shared
     // scramble makes all pixels' light paths of one sample one stratified set whose splats pile up
     // (Cornell, 16 spp: relative MSE 2.2x that of independent numbers); they keep scrambles of their own
     // per pixel and no shift, and are then better than independent numbers (0.73x).
     bool lightStream = rngKey.w >= kSecondStream;
-    uvec4 h = pcg4d(uvec4(rngKey.z, rngKey.w, lightStream ? rngKey.x : 0x5eed50b1u, 0x0b1ad5u));
+    uint scrambleKey = lightStream ? rngKey.x : blockWide ? gCoherentBlockKey : 0x5eed50b1u;
+    uvec4 h = pcg4d(uvec4(rngKey.z, rngKey.w, scrambleKey, 0x0b1ad5u));
     ++rngKey.w;
     uint i = bitfieldReverse(laineKarrasPermutation(gSampleReversed, h.x));  // shuffle the samples, per pair
     // The pixel's Z-order index, Owen-scrambled per pair.
-    uint z = lightStream ? 0u
+    uint z = lightStream || blockWide ? 0u
                          : bitfieldReverse(laineKarrasPermutation(gZOrderReversed, h.w)) &
                                ((1u << (2u * kTileLevels)) - 1u);
     // All values in reversed-bit form (bit q is the digit of 2^-(q+1)): the first dimension is the
@@ -213,6 +224,16 @@ vec2 rand2() {
     uint y = laineKarrasPermutation(sobolSecondReversed(i) ^ subsetParities(sobolSecondReversed(z)), h.z);
     return vec2(uvec2(bitfieldReverse(x), bitfieldReverse(y)) >> 8u) * (1.0 / 16777216.0);
 }
+
+vec2 rand2() { return sobolPair(false); }
+
+// A pair for a decision that ends or branches a path (Russian roulette, the lobe choice) where a blue-noise
+// arrangement buys nothing visible: the pixels of an 8x8 block take the same point, so that their paths,
+// which llvmpipe runs in lanes of one vector (and a GPU in one warp), end and branch together and the
+// vector loops for fewer bounces. Each pixel's points are still the same randomized (0, 2)-sequence, so each
+// pixel's estimate is as good; only neighbours' errors are correlated (docs/optimisation-log.md,
+// "Coherent roulette").
+vec2 rand2Coherent() { return sobolPair(true); }
 
 float rand() { return rand2().x; }
 #else
@@ -226,6 +247,8 @@ vec2 rand2() {
     ++rngKey.w;
     return vec2(words >> 8u) * (1.0 / 16777216.0);
 }
+
+vec2 rand2Coherent() { return rand2(); }  // independent numbers stay the textbook's: no sharing
 
 float rand() { return rand2().x; }
 #endif

@@ -207,7 +207,7 @@ vec3 radiance(Ray ray) {
         }
 
         BsdfSample bs;
-        BounceNumbers u = drawBounceNumbers();
+        BounceNumbers u = drawBounceNumbers(depth);
         if (!bsdfSample(s.material, wo, u.bsdf, s.eta, bs)) break;
         vec3 dir = toWorld(s, bs.wi);
         if (!sameSide(s, bs.wi, dir)) break;

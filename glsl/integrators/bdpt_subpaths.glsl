@@ -346,7 +346,8 @@ int traceLightSubpath(int maxDepth) {
         vec3 wo = toLocal(s, -ray.dir);
         if (wo.z <= 0.0) break;  // -ray.dir disagrees with the shading normal: f = 0
         BsdfSample bs;
-        if (!bsdfSample(s.material, wo, drawBounceNumbers().bsdf, s.eta, bs)) break;
+        // (The light stream's pairs are the pixel's own at every depth: rng.glsl's rand2Coherent.)
+        if (!bsdfSample(s.material, wo, drawBounceNumbers(count - 1).bsdf, s.eta, bs)) break;
 #if CAUSTICS_LIGHT_TRACED
         if (!bs.delta) break;  // no caustic path goes on from here
 #endif

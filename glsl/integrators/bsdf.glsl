@@ -16,7 +16,7 @@ vec3 radiance(Ray ray) {
         addLight(L, beta * emittedRadiance(s), depth);
         if (depth == uMaxDepth) break;
         BsdfSample bs;
-        BounceNumbers u = drawBounceNumbers();
+        BounceNumbers u = drawBounceNumbers(depth);
         if (!bsdfSample(s.material, toLocal(s, -ray.dir), u.bsdf, s.eta, bs)) break;
         vec3 dir = toWorld(s, bs.wi);
         if (!sameSide(s, bs.wi, dir)) break;

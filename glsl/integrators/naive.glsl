@@ -18,7 +18,7 @@ vec3 radiance(Ray ray) {
         // The view direction below the shading normal: f = 0, as in the other integrators.
         if (dot(-ray.dir, s.shadingNormal) <= 0.0) break;
         vec3 dir;
-        BounceNumbers u = drawBounceNumbers();
+        BounceNumbers u = drawBounceNumbers(depth);
         if (s.material.type == MATERIAL_DIFFUSE) {
             dir = sampleUniformHemisphere(s.shadingNormal, u.bsdf.xy);
             if (dot(dir, s.geometricNormal) <= 0.0) break;

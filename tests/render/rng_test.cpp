@@ -83,11 +83,13 @@ std::vector<uint32_t> streams(Program& program, uint32_t seed, uint32_t sample) 
     return numbers;
 }
 
-// Samples 0 .. count-1 of one pixel: the 2D points of dimension pairs 0 (xy) and 1 (zw).
-std::vector<glm::vec4> pixelSamples(Program& program, uint32_t seed, glm::uvec2 pixel, int count) {
+// Samples 0 .. count-1 of one pixel: the 2D points of dimension pairs 0 (xy) and 1 (zw); pair 0 drawn
+// by rand2Coherent when `coherentFirst`.
+std::vector<glm::vec4> pixelSamples(Program& program, uint32_t seed, glm::uvec2 pixel, int count,
+                                    bool coherentFirst = false) {
     const int width = 64;
     program.use();
-    program.set("uMode", 1);
+    program.set("uMode", coherentFirst ? 2 : 1);
     program.set("uSeed", seed);
     program.set("uPixel", glm::ivec2(pixel));
     program.set("uWidth", width);
@@ -127,12 +129,10 @@ TEST(RandomStreams, NoTwoStreamsShareNumbers) {
 // dimension pair is a (0, m, 2)-net, one point in each elementary interval [i / 2^a, (i + 1) / 2^a) x
 // [j / 2^b, (j + 1) / 2^b) with a + b = m. Catches a wrong generator matrix, a scramble that is not
 // nested (flipping a digit by anything but the digits above it), or an index shuffle that is not.
-TEST(SobolSampler, EveryPowerOfTwoPrefixIsStratified) {
-    ensureGlContext();
-    Program program = probeProgram(1);
+void expectEveryPrefixStratified(Program& program, bool coherentFirst) {
     for (uint32_t seed : {0u, 7u})
         for (glm::uvec2 pixel : {glm::uvec2(0, 0), glm::uvec2(5, 300)}) {
-            std::vector<glm::vec4> points = pixelSamples(program, seed, pixel, 1024);
+            std::vector<glm::vec4> points = pixelSamples(program, seed, pixel, 1024, coherentFirst);
             for (int pair = 0; pair < 2; ++pair)
                 for (int m = 0; m <= 10; ++m)
                     for (int a = 0; a <= m; ++a) {
@@ -145,11 +145,57 @@ TEST(SobolSampler, EveryPowerOfTwoPrefixIsStratified) {
                             ++cells[size_t(i) << b | size_t(j)];
                         }
                         for (int c : cells)
-                            ASSERT_EQ(c, 1) << "seed " << seed << ", pixel " << pixel.x << "," << pixel.y
-                                            << ", pair " << pair << ": " << (1 << m)
-                                            << " points in cells of 2^-" << a << " x 2^-" << b;
+                            ASSERT_EQ(c, 1)
+                                << "seed " << seed << ", pixel " << pixel.x << "," << pixel.y << ", pair "
+                                << pair << (coherentFirst ? " (coherent first)" : "") << ": " << (1 << m)
+                                << " points in cells of 2^-" << a << " x 2^-" << b;
                     }
         }
+}
+
+TEST(SobolSampler, EveryPowerOfTwoPrefixIsStratified) {
+    ensureGlContext();
+    Program program = probeProgram(1);
+    expectEveryPrefixStratified(program, false);
+}
+
+// rand2Coherent (rng.glsl, for Russian roulette): the pixels of an aligned 8x8 block take one point, other
+// blocks other points, and each pixel's samples are still a (0, 2)-sequence, as are the blue-noise pair's
+// drawn after it. Catches a shared pair keyed by the pixel (no coherence: no saving) or by nothing (one
+// point for the whole image: every pixel's roulette decided at once); both checked.
+TEST(SobolSampler, CoherentPairsAreOnePerEightByEightBlockAndStillStratified) {
+    ensureGlContext();
+    Program program = probeProgram(1);
+    expectEveryPrefixStratified(program, true);
+
+    const int size = 32;
+    program.use();
+    program.set("uMode", 3);
+    program.set("uSeed", 5u);
+    for (uint32_t sample : {0u, 1u, 6u}) {
+        program.set("uSample", sample);
+        std::vector<glm::vec4> points = drawProbe(program, size, size)[0];
+        std::vector<glm::vec2> blockPoints;
+        int neighboursDiffer = 0, neighbourPairs = 0;
+        for (int y = 0; y < size; ++y)
+            for (int x = 0; x < size; ++x) {
+                glm::vec4 p = points[size_t(y * size + x)];
+                glm::vec4 corner = points[size_t((y & ~7) * size + (x & ~7))];
+                ASSERT_EQ(glm::vec2(p), glm::vec2(corner))
+                    << "sample " << sample << ", pixel " << x << "," << y;
+                if (x % 8 == 0 && y % 8 == 0) blockPoints.push_back(glm::vec2(p));
+                if (x + 1 < size) {
+                    ++neighbourPairs;
+                    neighboursDiffer += glm::vec2(p.z, p.w) != glm::vec2(points[size_t(y * size + x + 1)].z,
+                                                                         points[size_t(y * size + x + 1)].w);
+                }
+            }
+        for (size_t i = 0; i < blockPoints.size(); ++i)
+            for (size_t j = 0; j < i; ++j)
+                EXPECT_NE(blockPoints[i], blockPoints[j])
+                    << "sample " << sample << ": blocks " << i << ", " << j;
+        EXPECT_EQ(neighboursDiffer, neighbourPairs) << "sample " << sample << ": the next pair is shared too";
+    }
 }
 
 // The scramble is a pure function of (seed, pixel, sample, pair): the same numbers twice, other numbers
