@@ -46,8 +46,8 @@
 // there.
 //
 // Fragment-shader limits (fixed arrays, no recursion):
-//   BDPT_MAX_LIGHT_VERTICES  light subpath vertices stored (y0..y3 by default; the renderer sets it, as the
-//                            light image has one record per light vertex); strategies with more light
+//   BDPT_MAX_LIGHT_VERTICES  light subpath vertices stored (y0..y3: bdpt_subpaths.glsl; the light image has
+//                            LIGHT_RECORDS >= 4 records per light path); strategies with more light
 //                            vertices are not used, and the weights leave them out.
 //   BDPT_MAX_DEPTH           --max-depth is clamped to this (camera vertices z0..z_{D+1} are stored);
 //                            above it the image is that of depth BDPT_MAX_DEPTH.

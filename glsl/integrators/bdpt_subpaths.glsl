@@ -4,7 +4,16 @@
 // (passes/light_trace.frag.glsl) joins its vertices to the camera. Both trace the same light subpath for
 // sample k of pixel p (traceLightSubpathFor), so each sample's light subpath serves every strategy, as
 // in pbrt-v3 (section 16.3). See bdpt.glsl for the strategies and the limits below.
-#ifndef BDPT_MAX_LIGHT_VERTICES
+// Light subpath vertices stored: bdpt's y0 .. y3 (bdpt.glsl), and in nee's light pass (CAUSTICS_LIGHT_TRACED)
+// LIGHT_RECORDS, one more, for light that goes through a glass ball (two delta vertices), reaches the
+// floor and bounces once more (causticStrategy). LIGHT_RECORDS, the light image's records per path, is
+// set by the renderer (src/render/light_splat.h).
+#ifndef LIGHT_RECORDS
+#define LIGHT_RECORDS 5
+#endif
+#if CAUSTICS_LIGHT_TRACED
+#define BDPT_MAX_LIGHT_VERTICES LIGHT_RECORDS
+#else
 #define BDPT_MAX_LIGHT_VERTICES 4
 #endif
 #ifndef BDPT_MAX_DEPTH
@@ -94,13 +103,18 @@ bool gLightDelta[BDPT_MAX_LIGHT_VERTICES];
 
 #if CAUSTICS_LIGHT_TRACED
 // nee's light pass (integrators/nee.glsl) uses light tracing alone, and only for the caustic paths nee
-// leaves to it: y1 .. y_{s-2} each sampled a delta lobe, and y_{s-1} is joined to the camera through its
-// smooth lobes. Their light subpaths end at the first vertex that samples a smooth lobe.
+// leaves to it, y_{s-1} joined to the camera through its smooth lobes: the caustic seen directly, y1 ..
+// y_{s-2} each sampled a delta lobe (s >= 3); and the light a caustic sends on, y1 .. y_{s-3} each sampled
+// a delta lobe and y_{s-2}, the caustic's receiver, a smooth one (s >= 4; a wall lit by the caustic on
+// the floor). Their light subpaths end one vertex after the first that samples a smooth lobe.
 bool causticStrategy(int s) {
     if (s < 3) return false;
-    for (int i = 1; i < s - 1; ++i)
+    for (int i = 1; i < s - 2; ++i)
         if (!gLightDelta[i]) return false;
-    return true;
+#ifdef NEE_ONLY_CAUSTICS_SENT_ON
+    return !gLightDelta[s - 2] && s >= 4;  // test only: the light caustics send on (caustics_test.cpp)
+#endif
+    return gLightDelta[s - 2] || s >= 4;
 }
 #endif
 
@@ -323,6 +337,9 @@ int traceLightSubpath(int maxDepth) {
     }
     bool dispersive = false;
     int count = 1;
+#if CAUSTICS_LIGHT_TRACED
+    bool pastReceiver = false;  // a smooth lobe was sampled (causticStrategy)
+#endif
     while (count < n) {
         Hit hit;
         if (!traceClosest(ray, hit)) break;
@@ -342,6 +359,9 @@ int traceLightSubpath(int maxDepth) {
 #endif
         ++count;
         if (count == n) break;
+#if CAUSTICS_LIGHT_TRACED
+        if (pastReceiver) break;  // no caustic path goes on from here
+#endif
 
         vec3 wo = toLocal(s, -ray.dir);
         if (wo.z <= 0.0) break;  // -ray.dir disagrees with the shading normal: f = 0
@@ -349,7 +369,11 @@ int traceLightSubpath(int maxDepth) {
         // (The light stream's pairs are the pixel's own at every depth: rng.glsl's rand2Coherent.)
         if (!bsdfSample(s.material, wo, drawBounceNumbers(count - 1).bsdf, s.eta, bs)) break;
 #if CAUSTICS_LIGHT_TRACED
-        if (!bs.delta) break;  // no caustic path goes on from here
+        // Only the caustic's receiver, after at least one delta vertex, samples a smooth lobe.
+        if (!bs.delta) {
+            if (count == 2) break;  // y1 itself: no caustic
+            pastReceiver = true;
+        }
 #endif
         vec3 next = toWorld(s, bs.wi);
         if (!sameSide(s, bs.wi, next)) break;

@@ -9,9 +9,12 @@
 // emitter (a floor lit through a glass ball) is found here only when the BSDF sample at x1 happens to
 // aim, through the glass, at the light. Light tracing finds it from the other end: the light-tracing pass
 // (passes/light_trace.frag.glsl) follows light through the delta vertices to x1 and joins x1 to the
-// camera (bdpt's strategy t = 1, Veach 1997 section 10.2). The two estimators split path space: the
-// light pass sums exactly these paths, with m + 1 <= BDPT_MAX_LIGHT_VERTICES (its light subpaths'
-// length), and this integrator leaves exactly those out, so their sum is unbiased without weights.
+// camera (bdpt's strategy t = 1, Veach 1997 section 10.2). So it does for the light such a caustic sends
+// on: x1 and x2 sampled smooth lobes and x3 .. x_m (m >= 3) delta ones (a wall lit by the caustic on the
+// floor), which a camera path finds only when x2's BSDF sample aims through the glass at the light: a
+// firefly. The two estimators split path space: the light pass sums exactly these paths, with m + 1 <=
+// LIGHT_RECORDS (its light subpaths' length, bdpt_subpaths.glsl), and this integrator leaves exactly those
+// out, so their sum is unbiased without weights.
 vec3 radiance(Ray ray) {
     vec3 L = vec3(0.0), beta = vec3(1.0);
     float lastPdf = 0.0;      // solid-angle density of the direction that led here
@@ -19,6 +22,7 @@ vec3 radiance(Ray ray) {
     vec3 lastNormal = vec3(0.0, 0.0, 1.0);  // its shading normal (the light tree's choice depends on it)
     bool fullWeight = true;  // camera rays and delta bounces: no light sample competed
     bool causticChain = false;  // x1 sampled a smooth lobe and every vertex since a delta one
+    bool causticSentOn = false;  // x1 and x2 sampled smooth lobes and every vertex since a delta one
     for (int depth = 0;; ++depth) {
         Hit hit;
         if (!traceClosest(ray, hit)) {
@@ -30,14 +34,23 @@ vec3 radiance(Ray ray) {
         applyDispersion(s, beta);
         vec3 Le = emittedRadiance(s);
 #if CAUSTICS_LIGHT_TRACED
-        if (causticChain && depth >= 2 && depth < BDPT_MAX_LIGHT_VERTICES) Le = vec3(0.0);  // the light pass's
+        if ((causticChain && depth >= 2 || causticSentOn && depth >= 3) && depth < LIGHT_RECORDS)
+            Le = vec3(0.0);  // the light pass's
+#endif
+#ifdef NEE_ONLY_CAUSTICS_SENT_ON
+        // Test only (tests/render/caustics_test.cpp): nothing but the light that caustics send on.
+        if (!(causticSentOn && depth >= 3 && depth < LIGHT_RECORDS)) Le = vec3(0.0);
 #endif
         if (Le != vec3(0.0))
             addLight(L, beta * Le * (fullWeight ? 1.0 : powerHeuristic(lastPdf, lightPdf(lastPosition, lastNormal, ray, hit))), depth);
         if (depth == uMaxDepth) break;
 
         vec3 wo = toLocal(s, -ray.dir);
+#ifdef NEE_ONLY_CAUSTICS_SENT_ON
+        if (false) {
+#else
         if (!isDeltaOnly(s.material)) {
+#endif
             LightSample ls = sampleLight(s.position, s.shadingNormal);
             vec3 wi = toLocal(s, ls.dir);
             if (ls.pdf > 0.0 && sameSide(s, wi, ls.dir)) {
@@ -63,6 +76,7 @@ vec3 radiance(Ray ray) {
         lastPosition = s.position;
         lastNormal = s.shadingNormal;
         fullWeight = bs.delta;
+        causticSentOn = depth == 1 ? causticChain && !bs.delta : causticSentOn && bs.delta;
         causticChain = depth == 0 ? !bs.delta : causticChain && bs.delta;
         if (!survivesRoulette(beta, depth, u.roulette)) break;
         ray = spawnRay(s, dir);

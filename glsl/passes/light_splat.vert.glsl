@@ -1,6 +1,6 @@
 // The splat pass: one point per light-tracing record (light_trace.frag.glsl), drawn with additive
 // blending into the light image at the pixel the record names. The records drawn are uFirstRecord ..
-// BDPT_MAX_LIGHT_VERTICES of each launched path (the earlier ones are empty in nee's light pass);
+// LIGHT_RECORDS of each launched path (the earlier ones are empty in nee's light pass);
 // vertex k of path j reads record uFirstRecord + k of slot j (light_launch.glsl); the last record of
 // each path (its statistics) goes to the path's own pixel. A record that lands nowhere, or a slot past
 // the region's end, is put outside the clip volume, so it makes no fragment.
@@ -12,7 +12,7 @@ flat out vec4 vSum;      // (contribution, rays traced)
 flat out vec4 vSquares;  // (squared contribution, contributions dropped)
 
 void main() {
-    int drawn = BDPT_MAX_LIGHT_VERTICES + 1 - uFirstRecord;
+    int drawn = LIGHT_RECORDS + 1 - uFirstRecord;
     int k = uFirstRecord + gl_VertexID % drawn, path = gl_VertexID / drawn;
     int perRow = launchSlotsPerRow(), slot = path % perRow, row = path / perRow;
     ivec2 source;  // the path's pixel
@@ -23,7 +23,7 @@ void main() {
     }
     vec4 r = texelFetch(uRecords, ivec3(slot, row, k), 0);
     int target;
-    if (k < BDPT_MAX_LIGHT_VERTICES) {
+    if (k < LIGHT_RECORDS) {
         target = int(r.a);
         vSum = vec4(r.rgb, 0.0);
         vSquares = vec4(r.rgb * r.rgb, 0.0);

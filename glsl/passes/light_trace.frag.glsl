@@ -24,9 +24,9 @@ uniform float uLaunchWeight;  // region pixels / launching pixels (src/render/li
 #include "integrators/bdpt_subpaths.glsl"
 
 // Record s - 1: (weighted contribution of strategy (s, 1), index of the pixel it lands on; -1: none).
-layout(location = 0) out vec4 outRecords[BDPT_MAX_LIGHT_VERTICES];
+layout(location = 0) out vec4 outRecords[LIGHT_RECORDS];
 // (rays traced, non-finite contributions dropped, 0, 0), added at the pixel of the path (the splat pass).
-layout(location = BDPT_MAX_LIGHT_VERTICES) out vec4 outStats;
+layout(location = LIGHT_RECORDS) out vec4 outStats;
 
 // Strategy (s, 1): y = y_{s-1} joined to the eye z0. The unweighted contribution is
 // alpha^L_s f(y_{s-2} -> y -> z0) G(y <-> z0) We(z0 -> y) (Veach 1997, eq. 10.8 with t = 1; pbrt-v3
@@ -84,7 +84,7 @@ vec3 lightToCamera(int s, out vec2 pixel) {
 void main() {
     ivec2 pixel;  // the pixel whose light path this fragment traces (its records are at its slot)
     if (!launchPixel(int(gl_FragCoord.x), int(gl_FragCoord.y), pixel)) {
-        for (int s = 0; s < BDPT_MAX_LIGHT_VERTICES; ++s) outRecords[s] = vec4(0.0, 0.0, 0.0, -1.0);
+        for (int s = 0; s < LIGHT_RECORDS; ++s) outRecords[s] = vec4(0.0, 0.0, 0.0, -1.0);
         outStats = vec4(0.0);
         return;
     }
@@ -94,7 +94,7 @@ void main() {
     int n = traceLightSubpathFor(uvec2(pixel), uLightSample, min(uMaxDepth, BDPT_MAX_DEPTH));
     rngInitSecondStream(uSeed, uvec2(pixel), uLightSample);  // for the lens points (randAt)
     float dropped = 0.0;
-    for (int s = 1; s <= BDPT_MAX_LIGHT_VERTICES; ++s) {
+    for (int s = 1; s <= LIGHT_RECORDS; ++s) {  // s > BDPT_MAX_LIGHT_VERTICES: n is smaller
         vec4 record = vec4(0.0, 0.0, 0.0, -1.0);
 #if CAUSTICS_LIGHT_TRACED
         if (s <= n && causticStrategy(s)) {  // nee's light pass: the others weigh 0 (misWeight)

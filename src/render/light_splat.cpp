@@ -25,7 +25,7 @@ void setNearest(GLenum target) {
 }  // namespace
 
 ShaderDefines LightSplat::defines() {
-    return {{"BDPT_MAX_LIGHT_VERTICES", std::to_string(kLightVertices)}};
+    return {{"LIGHT_RECORDS", std::to_string(kLightVertices)}};
 }
 
 LightSplat::LightSplat(const ShaderLibrary& shaders, int width, int height) : width_(width), height_(height) {

@@ -132,14 +132,15 @@ TEST_F(Cli, StatsReportTheSceneAndTheBvh) {
 
 TEST_F(Cli, StatsCountTheImageBuffersOfTheIntegrator) {
     // 8x8 pixels: the accumulation's 2 x 5 RGBA32F attachments (160 bytes per pixel), and for bdpt also
-    // its light image (5 record layers and 2 attachments, 112 bytes per pixel).
+    // its light image (6 record layers, LightSplat::kLightVertices + 1, and 2 attachments, 128 bytes per
+    // pixel).
     CliRun nee = fragpath("render --size 8x8 --spp 1 --stats -o " + path("n.png"));
     ASSERT_EQ(nee.exitCode, 0) << nee.output;
     EXPECT_NE(nee.output.find("image buffers    10240 bytes (160 per pixel"), std::string::npos)
         << nee.output;
     CliRun bdpt = fragpath("render --size 8x8 --spp 1 --integrator bdpt --stats -o " + path("b.png"));
     ASSERT_EQ(bdpt.exitCode, 0) << bdpt.output;
-    EXPECT_NE(bdpt.output.find("image buffers    17408 bytes (272 per pixel"), std::string::npos)
+    EXPECT_NE(bdpt.output.find("image buffers    18432 bytes (288 per pixel"), std::string::npos)
         << bdpt.output;
 }
 

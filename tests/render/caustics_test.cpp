@@ -14,8 +14,9 @@
 namespace fp::test {
 namespace {
 
-Accumulation renderNee(const Scene& scene, Caustics caustics, int size, int spp, int depth, uint32_t seed) {
-    Renderer renderer(scene, testShaders());
+Accumulation renderNee(const Scene& scene, Caustics caustics, int size, int spp, int depth, uint32_t seed,
+                       const ShaderLibrary& shaders = testShaders()) {
+    Renderer renderer(scene, shaders);
     return renderScene(renderer, *scene.camera, Integrator::Nee, size, spp, depth, seed, Sampler::Independent,
                        LightSampling::Auto, LightSelection::Auto, caustics);
 }
@@ -51,6 +52,24 @@ TEST(Caustics, LightPassAddsUpToCameraPathsWithMirrorsAndSmoothCoats) {
         Accumulation path = renderNee(scene, Caustics::Path, 32, 1024, depth, 2);
         expectSameImage(light, path, 4, 0.02f, "depth " + std::to_string(depth));
     }
+}
+
+// The light a caustic sends on: x1 and x2 sample smooth lobes and x3 .. x_m delta ones before the light
+// (cornellWithDeltaSurfaces: a wall lit by the patch of light the red mirror, or a smooth coat, throws on
+// another wall). With NEE_ONLY_CAUSTICS_SENT_ON both passes estimate those paths alone: camera paths when
+// x2's BSDF sample reaches the light through the delta vertices, the light pass by light paths that bounce
+// once off the caustic's receiver (bdpt_subpaths.glsl, causticStrategy). The two must agree block by
+// block. Fails (seen) with the camera pass keeping these paths too (twice the light) and with the light
+// pass leaving them out (none).
+TEST(Caustics, LightPassFindsTheLightCausticsSendOnAsCameraPathsDo) {
+    ensureGlContext();
+    Scene scene = cornellWithDeltaSurfaces();
+    // (in rng.glsl, which both passes include first)
+    ShaderLibrary only = shadersWithDefine("common/rng.glsl", "NEE_ONLY_CAUSTICS_SENT_ON", "1");
+    Accumulation light = renderNee(scene, Caustics::Light, 32, 1024, 5, 1, only);
+    Accumulation path = renderNee(scene, Caustics::Path, 32, 1024, 5, 2, only);
+    expectSameImage(light, path, 4, 0.1f, "caustics sent on, light pass against camera paths");
+    EXPECT_GT(meanColor(path.mean(), PixelRect{0, 0, 32, 32}).x, 0.001f) << "no such light to compare";
 }
 
 // The point of the light pass: under the sphere its variance at equal samples is far below that of
