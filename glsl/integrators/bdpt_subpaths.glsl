@@ -5,11 +5,11 @@
 // sample k of pixel p (traceLightSubpathFor), so each sample's light subpath serves every strategy, as
 // in pbrt-v3 (section 16.3). See bdpt.glsl for the strategies and the limits below.
 // Light subpath vertices stored: bdpt's y0 .. y3 (bdpt.glsl), and in nee's light pass (CAUSTICS_LIGHT_TRACED)
-// LIGHT_RECORDS, one more, for light that goes through a glass ball (two delta vertices), reaches the
-// floor and bounces once more (causticStrategy). LIGHT_RECORDS, the light image's records per path, is
-// set by the renderer (src/render/light_splat.h).
+// LIGHT_RECORDS, two more, for light that goes through a glass ball (two delta vertices), reaches the
+// floor and bounces on CAUSTIC_SMOOTH_BOUNCES - 1 times (causticStrategy). LIGHT_RECORDS, the light
+// image's records per path, is set by the renderer (src/render/light_splat.h).
 #ifndef LIGHT_RECORDS
-#define LIGHT_RECORDS 5
+#define LIGHT_RECORDS 6
 #endif
 #if CAUSTICS_LIGHT_TRACED
 #define BDPT_MAX_LIGHT_VERTICES LIGHT_RECORDS
@@ -103,18 +103,23 @@ bool gLightDelta[BDPT_MAX_LIGHT_VERTICES];
 
 #if CAUSTICS_LIGHT_TRACED
 // nee's light pass (integrators/nee.glsl) uses light tracing alone, and only for the caustic paths nee
-// leaves to it, y_{s-1} joined to the camera through its smooth lobes: the caustic seen directly, y1 ..
-// y_{s-2} each sampled a delta lobe (s >= 3); and the light a caustic sends on, y1 .. y_{s-3} each sampled
-// a delta lobe and y_{s-2}, the caustic's receiver, a smooth one (s >= 4; a wall lit by the caustic on
-// the floor). Their light subpaths end one vertex after the first that samples a smooth lobe.
+// leaves to it, y_{s-1} joined to the camera through its smooth lobes: y1 .. y_{r-1} (r >= 2) each sampled
+// a delta lobe, and y_r .. y_{s-2}, the caustic's receiver and the surfaces its light reaches from there,
+// a smooth one, at most CAUSTIC_SMOOTH_BOUNCES - 1 of them (none: the caustic seen directly; one: a wall
+// lit by the caustic on the floor). Their light subpaths end where no such path goes on.
 bool causticStrategy(int s) {
-    if (s < 3) return false;
-    for (int i = 1; i < s - 2; ++i)
-        if (!gLightDelta[i]) return false;
+    if (s < 3 || !gLightDelta[1]) return false;
+    int smoothSamples = 0;
+    for (int i = 2; i < s - 1; ++i) {
+        if (!gLightDelta[i])
+            ++smoothSamples;
+        else if (smoothSamples > 0)
+            return false;  // a delta vertex after the receiver
+    }
 #ifdef NEE_ONLY_CAUSTICS_SENT_ON
-    return !gLightDelta[s - 2] && s >= 4;  // test only: the light caustics send on (caustics_test.cpp)
+    if (smoothSamples == 0) return false;  // test only: the light caustics send on (caustics_test.cpp)
 #endif
-    return gLightDelta[s - 2] || s >= 4;
+    return smoothSamples < CAUSTIC_SMOOTH_BOUNCES;
 }
 #endif
 
@@ -338,7 +343,7 @@ int traceLightSubpath(int maxDepth) {
     bool dispersive = false;
     int count = 1;
 #if CAUSTICS_LIGHT_TRACED
-    bool pastReceiver = false;  // a smooth lobe was sampled (causticStrategy)
+    int smoothSamples = 0;  // smooth lobes sampled, from the caustic's receiver on (causticStrategy)
 #endif
     while (count < n) {
         Hit hit;
@@ -360,7 +365,7 @@ int traceLightSubpath(int maxDepth) {
         ++count;
         if (count == n) break;
 #if CAUSTICS_LIGHT_TRACED
-        if (pastReceiver) break;  // no caustic path goes on from here
+        if (smoothSamples == CAUSTIC_SMOOTH_BOUNCES - 1) break;  // no caustic path goes on from here
 #endif
 
         vec3 wo = toLocal(s, -ray.dir);
@@ -369,10 +374,13 @@ int traceLightSubpath(int maxDepth) {
         // (The light stream's pairs are the pixel's own at every depth: rng.glsl's rand2Coherent.)
         if (!bsdfSample(s.material, wo, drawBounceNumbers(count - 1).bsdf, s.eta, bs)) break;
 #if CAUSTICS_LIGHT_TRACED
-        // Only the caustic's receiver, after at least one delta vertex, samples a smooth lobe.
+        // Smooth lobes only from the caustic's receiver on, after at least one delta vertex; delta ones
+        // only before it.
         if (!bs.delta) {
             if (count == 2) break;  // y1 itself: no caustic
-            pastReceiver = true;
+            ++smoothSamples;
+        } else if (smoothSamples > 0) {
+            break;
         }
 #endif
         vec3 next = toWorld(s, bs.wi);

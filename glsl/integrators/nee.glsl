@@ -21,8 +21,11 @@ vec3 radiance(Ray ray) {
     vec3 lastPosition = ray.origin;  // the vertex it left from, where sampleLight would have sampled
     vec3 lastNormal = vec3(0.0, 0.0, 1.0);  // its shading normal (the light tree's choice depends on it)
     bool fullWeight = true;  // camera rays and delta bounces: no light sample competed
-    bool causticChain = false;  // x1 sampled a smooth lobe and every vertex since a delta one
-    bool causticSentOn = false;  // x1 and x2 sampled smooth lobes and every vertex since a delta one
+    // The path so far for the light pass's split: x1 .. x_j sampled smooth lobes (j = causticSmooth; -1:
+    // not a caustic path, a delta lobe first or a smooth one after a delta one), and then at least one
+    // vertex (causticDelta) and every vertex since a delta one.
+    int causticSmooth = 0;
+    bool causticDelta = false;
     for (int depth = 0;; ++depth) {
         Hit hit;
         if (!traceClosest(ray, hit)) {
@@ -34,12 +37,15 @@ vec3 radiance(Ray ray) {
         applyDispersion(s, beta);
         vec3 Le = emittedRadiance(s);
 #if CAUSTICS_LIGHT_TRACED
-        if ((causticChain && depth >= 2 || causticSentOn && depth >= 3) && depth < LIGHT_RECORDS)
+        if (causticDelta && causticSmooth >= 1 && causticSmooth <= CAUSTIC_SMOOTH_BOUNCES &&
+            depth < LIGHT_RECORDS)
             Le = vec3(0.0);  // the light pass's
 #endif
 #ifdef NEE_ONLY_CAUSTICS_SENT_ON
         // Test only (tests/render/caustics_test.cpp): nothing but the light that caustics send on.
-        if (!(causticSentOn && depth >= 3 && depth < LIGHT_RECORDS)) Le = vec3(0.0);
+        if (!(causticDelta && causticSmooth >= 2 && causticSmooth <= CAUSTIC_SMOOTH_BOUNCES &&
+              depth < LIGHT_RECORDS))
+            Le = vec3(0.0);
 #endif
         if (Le != vec3(0.0))
             addLight(L, beta * Le * (fullWeight ? 1.0 : powerHeuristic(lastPdf, lightPdf(lastPosition, lastNormal, ray, hit))), depth);
@@ -76,8 +82,14 @@ vec3 radiance(Ray ray) {
         lastPosition = s.position;
         lastNormal = s.shadingNormal;
         fullWeight = bs.delta;
-        causticSentOn = depth == 1 ? causticChain && !bs.delta : causticSentOn && bs.delta;
-        causticChain = depth == 0 ? !bs.delta : causticChain && bs.delta;
+        if (causticSmooth >= 0) {
+            if (!bs.delta && !causticDelta)
+                ++causticSmooth;
+            else if (bs.delta && causticSmooth > 0)
+                causticDelta = true;
+            else
+                causticSmooth = -1;
+        }
         if (!survivesRoulette(beta, depth, u.roulette)) break;
         ray = spawnRay(s, dir);
     }

@@ -24,8 +24,8 @@ class LightSplat {
   public:
     // Light vertices per path, one record each: the shaders' LIGHT_RECORDS (the renderer passes it to
     // every program, so the two cannot differ). bdpt's light subpaths have 4 (bdpt_subpaths.glsl); nee's
-    // caustic light paths one more, so that light through a glass ball can bounce once off the floor.
-    static constexpr int kLightVertices = 5;
+    // caustic light paths two more, so that light through a glass ball can bounce twice past the floor.
+    static constexpr int kLightVertices = 6;
 
     // Throws fp::Error if the splat program does not compile or the targets are incomplete.
     LightSplat(const ShaderLibrary& shaders, int width, int height);

@@ -23,6 +23,11 @@ constexpr int kSpareUnit = kSumUnit + RenderTargets::kAttachments;
 // On the glass Cornell box (128x128, 64 spp) more paths did not lower the image's variance (one in 1, 4,
 // 16 and 64: 3.64e-4, 3.63e-4, 3.65e-4, 3.73e-4) but cost 60 %, 30 % and 5 % more CPU time at 1, 4 and 16.
 constexpr int kCausticLaunchStride = 16;
+// The light pass's caustic paths: up to this many smooth vertices x1 .. x_j before the delta ones (1: the
+// caustic seen directly; 2: a wall lit by the caustic on the floor; 3: by way of another wall). Its light
+// paths through a glass ball then have 2 + 1 + 3 vertices: LightSplat::kLightVertices.
+constexpr int kCausticSmoothBounces = 3;
+static_assert(kCausticSmoothBounces + 3 <= LightSplat::kLightVertices);
 
 }  // namespace
 
@@ -117,6 +122,7 @@ std::unique_ptr<Program> Renderer::compile(Integrator integrator, const char* fr
     }
     defines.emplace_back("CAUSTICS_LIGHT_TRACED", causticsByLight(integrator, settings_) ? "1" : "0");
     defines.emplace_back("MAX_CAUSTIC_CASTERS", std::to_string(kMaxCausticCasters));
+    defines.emplace_back("CAUSTIC_SMOOTH_BOUNCES", std::to_string(kCausticSmoothBounces));
     defines.emplace_back("GUIDES", settings_.guides ? "1" : "0");
     defines.emplace_back("MATERIAL_TYPES", std::to_string(materialTypes_));
     defines.emplace_back("ENVIRONMENT_MAP", environmentTextures_ ? "1" : "0");

@@ -132,7 +132,7 @@ TEST_F(Cli, StatsReportTheSceneAndTheBvh) {
 
 TEST_F(Cli, StatsCountTheImageBuffersOfTheIntegrator) {
     // 8x8 pixels: the accumulation's 2 x 5 RGBA32F attachments (160 bytes per pixel), and for bdpt also
-    // its light image (6 record layers, LightSplat::kLightVertices + 1, and 2 attachments, 128 bytes per
+    // its light image (7 record layers, LightSplat::kLightVertices + 1, and 2 attachments, 144 bytes per
     // pixel).
     CliRun nee = fragpath("render --size 8x8 --spp 1 --stats -o " + path("n.png"));
     ASSERT_EQ(nee.exitCode, 0) << nee.output;
@@ -140,7 +140,7 @@ TEST_F(Cli, StatsCountTheImageBuffersOfTheIntegrator) {
         << nee.output;
     CliRun bdpt = fragpath("render --size 8x8 --spp 1 --integrator bdpt --stats -o " + path("b.png"));
     ASSERT_EQ(bdpt.exitCode, 0) << bdpt.output;
-    EXPECT_NE(bdpt.output.find("image buffers    18432 bytes (288 per pixel"), std::string::npos)
+    EXPECT_NE(bdpt.output.find("image buffers    19456 bytes (304 per pixel"), std::string::npos)
         << bdpt.output;
 }
 
