@@ -11,49 +11,49 @@ set xrange [2013.5:2025.5]
 
 $naive_x80 << EOD
 # year fp32 memory rt_cores (rays per second)
-2014 3.47021e+09 3.04061e+08 NaN
-2016 6.18202e+09 4.34372e+08 NaN
-2018 6.8285e+10 6.08121e+08 8e+09
-2020 1.12042e+11 1.03163e+09 1.33672e+10
-2022 1.83441e+11 9.72994e+08 2.59738e+10
-2025 2.11815e+11 1.30312e+09 3.94102e+10
+2014 3.4698e+09 3.04011e+08 NaN
+2016 6.1813e+09 4.34301e+08 NaN
+2018 6.82786e+10 6.08021e+08 8e+09
+2020 1.12029e+11 1.03146e+09 1.33672e+10
+2022 1.8342e+11 9.72834e+08 2.59738e+10
+2025 2.11791e+11 1.3029e+09 3.94102e+10
 EOD
 $naive_flagship << EOD
 # year fp32 memory rt_cores (rays per second)
-2015 4.21826e+09 4.56769e+08 NaN
-2017 7.90071e+09 6.56988e+08 NaN
-2018 9.1203e+10 8.36166e+08 1e+10
-2020 1.33924e+11 1.27054e+09 1.59024e+10
-2022 3.10803e+11 1.36827e+09 4.40196e+10
-2025 3.94275e+11 2.43248e+09 7.32891e+10
+2015 4.21777e+09 4.56695e+08 NaN
+2017 7.8998e+09 6.5688e+08 NaN
+2018 9.11944e+10 8.36029e+08 1e+10
+2020 1.33909e+11 1.27033e+09 1.59024e+10
+2022 3.10768e+11 1.36805e+09 4.40196e+10
+2025 3.94231e+11 2.43209e+09 7.32891e+10
 EOD
 set output 'cornell_roofline_naive.png'
-set title "cornell, naive: rays/s that 1080p60 needs against each GPU's limits (3.33 rays per path)"
+set title "cornell, naive: rays/s that 1080p60 needs against each GPU's limits (3.34 rays per path)"
 plot $naive_x80 using 1:2 with linespoints lc rgb '#1f77b4' dt 1 pt 7 title 'x80: FP32', \
      $naive_x80 using 1:3 with linespoints lc rgb '#2ca02c' dt 1 pt 7 title 'x80: memory', \
      $naive_x80 using 1:4 with linespoints lc rgb '#d62728' dt 1 pt 7 title 'x80: RT cores', \
      $naive_flagship using 1:2 with linespoints lc rgb '#1f77b4' dt 2 pt 5 title 'flagship: FP32', \
      $naive_flagship using 1:3 with linespoints lc rgb '#2ca02c' dt 2 pt 5 title 'flagship: memory', \
      $naive_flagship using 1:4 with linespoints lc rgb '#d62728' dt 2 pt 5 title 'flagship: RT cores', \
-     2.99737e+13 with lines lc 'black' dt 3 lw 2 title 'need: none, 7.23e+04 spp'
+     3.02167e+13 with lines lc 'black' dt 3 lw 2 title 'need: none, 7.28e+04 spp'
 
 $bsdf_x80 << EOD
 # year fp32 memory rt_cores (rays per second)
-2014 3.17442e+09 2.97306e+08 NaN
-2016 5.65509e+09 4.24723e+08 NaN
-2018 4.50938e+10 5.94613e+08 8e+09
-2020 6.66604e+10 1.00872e+09 1.33672e+10
-2022 1.0914e+11 9.51381e+08 2.59738e+10
-2025 1.53027e+11 1.27417e+09 3.94102e+10
+2014 3.17349e+09 2.972e+08 NaN
+2016 5.65342e+09 4.24571e+08 NaN
+2018 4.50866e+10 5.94399e+08 8e+09
+2020 6.66498e+10 1.00836e+09 1.33672e+10
+2022 1.09123e+11 9.51039e+08 2.59738e+10
+2025 1.53003e+11 1.27371e+09 3.94102e+10
 EOD
 $bsdf_flagship << EOD
 # year fp32 memory rt_cores (rays per second)
-2015 3.85871e+09 4.46623e+08 NaN
-2017 7.22729e+09 6.42394e+08 NaN
-2018 6.02282e+10 8.17593e+08 1e+10
-2020 7.96794e+10 1.24232e+09 1.59024e+10
-2022 1.84915e+11 1.33788e+09 4.40196e+10
-2025 2.84845e+11 2.37845e+09 7.32891e+10
+2015 3.85757e+09 4.46463e+08 NaN
+2017 7.22516e+09 6.42164e+08 NaN
+2018 6.02187e+10 8.17299e+08 1e+10
+2020 7.96668e+10 1.24187e+09 1.59024e+10
+2022 1.84886e+11 1.3374e+09 4.40196e+10
+2025 2.84801e+11 2.3776e+09 7.32891e+10
 EOD
 set output 'cornell_roofline_bsdf.png'
 set title "cornell, bsdf: rays/s that 1080p60 needs against each GPU's limits (3.31 rays per path)"
@@ -63,25 +63,25 @@ plot $bsdf_x80 using 1:2 with linespoints lc rgb '#1f77b4' dt 1 pt 7 title 'x80:
      $bsdf_flagship using 1:2 with linespoints lc rgb '#1f77b4' dt 2 pt 5 title 'flagship: FP32', \
      $bsdf_flagship using 1:3 with linespoints lc rgb '#2ca02c' dt 2 pt 5 title 'flagship: memory', \
      $bsdf_flagship using 1:4 with linespoints lc rgb '#d62728' dt 2 pt 5 title 'flagship: RT cores', \
-     1.63251e+13 with lines lc 'black' dt 3 lw 2 title 'need: none, 3.97e+04 spp'
+     1.59729e+13 with lines lc 'black' dt 3 lw 2 title 'need: none, 3.88e+04 spp'
 
 $nee_x80 << EOD
 # year fp32 memory rt_cores (rays per second)
-2014 3.07796e+09 3.02554e+08 NaN
-2016 5.48325e+09 4.3222e+08 NaN
-2018 3.59256e+10 6.05108e+08 8e+09
-2020 5.31073e+10 1.02652e+09 1.33672e+10
-2022 8.69503e+10 9.68172e+08 2.59738e+10
-2025 1.27025e+11 1.29666e+09 3.94102e+10
+2014 3.07865e+09 3.02618e+08 NaN
+2016 5.48448e+09 4.32312e+08 NaN
+2018 3.59496e+10 6.05237e+08 8e+09
+2020 5.31429e+10 1.02674e+09 1.33672e+10
+2022 8.70084e+10 9.68379e+08 2.59738e+10
+2025 1.27108e+11 1.29694e+09 3.94102e+10
 EOD
 $nee_flagship << EOD
 # year fp32 memory rt_cores (rays per second)
-2015 3.74145e+09 4.54506e+08 NaN
-2017 7.00767e+09 6.53732e+08 NaN
-2018 4.7983e+10 8.32023e+08 1e+10
-2020 6.34794e+10 1.26424e+09 1.59024e+10
-2022 1.47319e+11 1.36149e+09 4.40196e+10
-2025 2.36446e+11 2.42043e+09 7.32891e+10
+2015 3.7423e+09 4.54603e+08 NaN
+2017 7.00925e+09 6.53872e+08 NaN
+2018 4.8015e+10 8.32201e+08 1e+10
+2020 6.35219e+10 1.26451e+09 1.59024e+10
+2022 1.47418e+11 1.36178e+09 4.40196e+10
+2025 2.366e+11 2.42095e+09 7.32891e+10
 EOD
 set output 'cornell_roofline_nee.png'
 set title "cornell, nee: rays/s that 1080p60 needs against each GPU's limits (5.20 rays per path)"
@@ -91,26 +91,26 @@ plot $nee_x80 using 1:2 with linespoints lc rgb '#1f77b4' dt 1 pt 7 title 'x80: 
      $nee_flagship using 1:2 with linespoints lc rgb '#1f77b4' dt 2 pt 5 title 'flagship: FP32', \
      $nee_flagship using 1:3 with linespoints lc rgb '#2ca02c' dt 2 pt 5 title 'flagship: memory', \
      $nee_flagship using 1:4 with linespoints lc rgb '#d62728' dt 2 pt 5 title 'flagship: RT cores', \
-     1.42179e+11 with lines lc 'black' dt 3 lw 2 title 'need: none, 220 spp', \
-     3.69657e+10 with lines lc 'black' dt 4 lw 2 title 'need: atrous, 57.1 spp'
+     1.42451e+11 with lines lc 'black' dt 3 lw 2 title 'need: none, 220 spp', \
+     3.717e+10 with lines lc 'black' dt 4 lw 2 title 'need: atrous, 57.5 spp'
 
 $bdpt_x80 << EOD
 # year fp32 memory rt_cores (rays per second)
-2014 3.1182e+09 2.99341e+08 NaN
-2016 5.55493e+09 4.2763e+08 NaN
-2018 4.22345e+10 5.98681e+08 8e+09
-2020 6.24336e+10 1.01562e+09 1.33672e+10
-2022 1.0222e+11 9.5789e+08 2.59738e+10
-2025 1.50091e+11 1.28289e+09 3.94102e+10
+2014 3.11855e+09 2.9937e+08 NaN
+2016 5.55557e+09 4.27672e+08 NaN
+2018 4.22526e+10 5.98741e+08 8e+09
+2020 6.24604e+10 1.01572e+09 1.33672e+10
+2022 1.02264e+11 9.57985e+08 2.59738e+10
+2025 1.50155e+11 1.28302e+09 3.94102e+10
 EOD
 $bdpt_flagship << EOD
 # year fp32 memory rt_cores (rays per second)
-2015 3.79037e+09 4.49679e+08 NaN
-2017 7.09929e+09 6.4679e+08 NaN
-2018 5.64093e+10 8.23187e+08 1e+10
-2020 7.46272e+10 1.25082e+09 1.59024e+10
-2022 1.7319e+11 1.34703e+09 4.40196e+10
-2025 2.79381e+11 2.39473e+09 7.32891e+10
+2015 3.7908e+09 4.49724e+08 NaN
+2017 7.1001e+09 6.46854e+08 NaN
+2018 5.64335e+10 8.23269e+08 1e+10
+2020 7.46591e+10 1.25094e+09 1.59024e+10
+2022 1.73265e+11 1.34717e+09 4.40196e+10
+2025 2.795e+11 2.39496e+09 7.32891e+10
 EOD
 set output 'cornell_roofline_bdpt.png'
 set title "cornell, bdpt: rays/s that 1080p60 needs against each GPU's limits (10.76 rays per path)"
@@ -120,5 +120,5 @@ plot $bdpt_x80 using 1:2 with linespoints lc rgb '#1f77b4' dt 1 pt 7 title 'x80:
      $bdpt_flagship using 1:2 with linespoints lc rgb '#1f77b4' dt 2 pt 5 title 'flagship: FP32', \
      $bdpt_flagship using 1:3 with linespoints lc rgb '#2ca02c' dt 2 pt 5 title 'flagship: memory', \
      $bdpt_flagship using 1:4 with linespoints lc rgb '#d62728' dt 2 pt 5 title 'flagship: RT cores', \
-     1.52332e+11 with lines lc 'black' dt 3 lw 2 title 'need: none, 114 spp', \
-     3.75074e+10 with lines lc 'black' dt 4 lw 2 title 'need: atrous, 28 spp'
+     1.51513e+11 with lines lc 'black' dt 3 lw 2 title 'need: none, 113 spp', \
+     3.71188e+10 with lines lc 'black' dt 4 lw 2 title 'need: atrous, 27.7 spp'

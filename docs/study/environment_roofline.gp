@@ -11,21 +11,21 @@ set xrange [2013.5:2025.5]
 
 $naive_x80 << EOD
 # year fp32 memory rt_cores (rays per second)
-2014 3.40735e+09 4.45391e+08 NaN
-2016 6.07004e+09 6.36273e+08 NaN
-2018 1.0893e+11 8.90783e+08 8e+09
-2020 1.88095e+11 1.51115e+09 1.33672e+10
-2022 3.0796e+11 1.42525e+09 2.59738e+10
-2025 3.55595e+11 1.90882e+09 3.94102e+10
+2014 3.406e+09 4.45169e+08 NaN
+2016 6.06763e+09 6.35955e+08 NaN
+2018 1.08923e+11 8.90337e+08 8e+09
+2020 1.88079e+11 1.51039e+09 1.33672e+10
+2022 3.07933e+11 1.42454e+09 2.59738e+10
+2025 3.55564e+11 1.90787e+09 3.94102e+10
 EOD
 $naive_flagship << EOD
 # year fp32 memory rt_cores (rays per second)
-2015 4.14185e+09 6.69081e+08 NaN
-2017 7.75761e+09 9.62363e+08 NaN
-2018 1.45489e+11 1.22483e+09 1e+10
-2020 2.24831e+11 1.8611e+09 1.59024e+10
-2022 5.21775e+11 2.00426e+09 4.40196e+10
-2025 6.61908e+11 3.56313e+09 7.32891e+10
+2015 4.1402e+09 6.68747e+08 NaN
+2017 7.75452e+09 9.61882e+08 NaN
+2018 1.4548e+11 1.22421e+09 1e+10
+2020 2.24811e+11 1.86017e+09 1.59024e+10
+2022 5.21729e+11 2.00326e+09 4.40196e+10
+2025 6.6185e+11 3.56135e+09 7.32891e+10
 EOD
 set output 'environment_roofline_naive.png'
 set title "environment, naive: rays/s that 1080p60 needs against each GPU's limits (1.82 rays per path)"
@@ -35,25 +35,25 @@ plot $naive_x80 using 1:2 with linespoints lc rgb '#1f77b4' dt 1 pt 7 title 'x80
      $naive_flagship using 1:2 with linespoints lc rgb '#1f77b4' dt 2 pt 5 title 'flagship: FP32', \
      $naive_flagship using 1:3 with linespoints lc rgb '#2ca02c' dt 2 pt 5 title 'flagship: memory', \
      $naive_flagship using 1:4 with linespoints lc rgb '#d62728' dt 2 pt 5 title 'flagship: RT cores', \
-     6.63585e+13 with lines lc 'black' dt 3 lw 2 title 'need: none, 2.93e+05 spp'
+     6.73575e+13 with lines lc 'black' dt 3 lw 2 title 'need: none, 2.98e+05 spp'
 
 $bsdf_x80 << EOD
 # year fp32 memory rt_cores (rays per second)
-2014 3.42419e+09 4.68715e+08 NaN
-2016 6.10004e+09 6.69592e+08 NaN
-2018 8.11822e+10 9.37429e+08 8e+09
-2020 1.20008e+11 1.59028e+09 1.33672e+10
-2022 1.96484e+11 1.49989e+09 2.59738e+10
-2025 2.62153e+11 2.00878e+09 3.94102e+10
+2014 3.42321e+09 4.68574e+08 NaN
+2016 6.0983e+09 6.69392e+08 NaN
+2018 8.11666e+10 9.37149e+08 8e+09
+2020 1.19985e+11 1.58981e+09 1.33672e+10
+2022 1.96447e+11 1.49944e+09 2.59738e+10
+2025 2.62115e+11 2.00818e+09 3.94102e+10
 EOD
 $bsdf_flagship << EOD
 # year fp32 memory rt_cores (rays per second)
-2015 4.16232e+09 7.04118e+08 NaN
-2017 7.79594e+09 1.01276e+09 NaN
-2018 1.08429e+11 1.28897e+09 1e+10
-2020 1.43447e+11 1.95856e+09 1.59024e+10
-2022 3.32903e+11 2.10922e+09 4.40196e+10
-2025 4.87975e+11 3.74972e+09 7.32891e+10
+2015 4.16113e+09 7.03907e+08 NaN
+2017 7.79372e+09 1.01246e+09 NaN
+2018 1.08408e+11 1.28858e+09 1e+10
+2020 1.43419e+11 1.95797e+09 1.59024e+10
+2022 3.32839e+11 2.10858e+09 4.40196e+10
+2025 4.87904e+11 3.74859e+09 7.32891e+10
 EOD
 set output 'environment_roofline_bsdf.png'
 set title "environment, bsdf: rays/s that 1080p60 needs against each GPU's limits (1.81 rays per path)"
@@ -63,25 +63,25 @@ plot $bsdf_x80 using 1:2 with linespoints lc rgb '#1f77b4' dt 1 pt 7 title 'x80:
      $bsdf_flagship using 1:2 with linespoints lc rgb '#1f77b4' dt 2 pt 5 title 'flagship: FP32', \
      $bsdf_flagship using 1:3 with linespoints lc rgb '#2ca02c' dt 2 pt 5 title 'flagship: memory', \
      $bsdf_flagship using 1:4 with linespoints lc rgb '#d62728' dt 2 pt 5 title 'flagship: RT cores', \
-     4.31449e+13 with lines lc 'black' dt 3 lw 2 title 'need: none, 1.92e+05 spp'
+     4.25058e+13 with lines lc 'black' dt 3 lw 2 title 'need: none, 1.89e+05 spp'
 
 $nee_x80 << EOD
 # year fp32 memory rt_cores (rays per second)
-2014 3.21457e+09 4.51506e+08 NaN
-2016 5.72661e+09 6.45009e+08 NaN
-2018 5.43042e+10 9.03012e+08 8e+09
-2020 8.02758e+10 1.5319e+09 1.33672e+10
-2022 1.31432e+11 1.44482e+09 2.59738e+10
-2025 1.86327e+11 1.93503e+09 3.94102e+10
+2014 3.2164e+09 4.51797e+08 NaN
+2016 5.72987e+09 6.45424e+08 NaN
+2018 5.43339e+10 9.03594e+08 8e+09
+2020 8.03196e+10 1.53288e+09 1.33672e+10
+2022 1.31504e+11 1.44575e+09 2.59738e+10
+2025 1.86422e+11 1.93627e+09 3.94102e+10
 EOD
 $nee_flagship << EOD
 # year fp32 memory rt_cores (rays per second)
-2015 3.90751e+09 6.78267e+08 NaN
-2017 7.3187e+09 9.75576e+08 NaN
-2018 7.25299e+10 1.24164e+09 1e+10
-2020 9.5954e+10 1.88665e+09 1.59024e+10
-2022 2.22684e+11 2.03178e+09 4.40196e+10
-2025 3.46832e+11 3.61205e+09 7.32891e+10
+2015 3.90974e+09 6.78704e+08 NaN
+2017 7.32286e+09 9.76205e+08 NaN
+2018 7.25695e+10 1.24244e+09 1e+10
+2020 9.60064e+10 1.88787e+09 1.59024e+10
+2022 2.22806e+11 2.03309e+09 4.40196e+10
+2025 3.47007e+11 3.61438e+09 7.32891e+10
 EOD
 set output 'environment_roofline_nee.png'
 set title "environment, nee: rays/s that 1080p60 needs against each GPU's limits (2.37 rays per path)"
@@ -91,25 +91,25 @@ plot $nee_x80 using 1:2 with linespoints lc rgb '#1f77b4' dt 1 pt 7 title 'x80: 
      $nee_flagship using 1:2 with linespoints lc rgb '#1f77b4' dt 2 pt 5 title 'flagship: FP32', \
      $nee_flagship using 1:3 with linespoints lc rgb '#2ca02c' dt 2 pt 5 title 'flagship: memory', \
      $nee_flagship using 1:4 with linespoints lc rgb '#d62728' dt 2 pt 5 title 'flagship: RT cores', \
-     4.94729e+10 with lines lc 'black' dt 3 lw 2 title 'need: none, 168 spp'
+     4.98701e+10 with lines lc 'black' dt 3 lw 2 title 'need: none, 169 spp'
 
 $bdpt_x80 << EOD
 # year fp32 memory rt_cores (rays per second)
-2014 3.04237e+09 4.28712e+08 NaN
-2016 5.41984e+09 6.12446e+08 NaN
-2018 4.12869e+10 8.57424e+08 8e+09
-2020 6.10329e+10 1.45456e+09 1.33672e+10
-2022 9.99264e+10 1.37188e+09 2.59738e+10
-2025 1.41675e+11 1.83734e+09 3.94102e+10
+2014 3.04153e+09 4.28588e+08 NaN
+2016 5.41835e+09 6.12268e+08 NaN
+2018 4.1279e+10 8.57175e+08 8e+09
+2020 6.10211e+10 1.45414e+09 1.33672e+10
+2022 9.99072e+10 1.37148e+09 2.59738e+10
+2025 1.41651e+11 1.8368e+09 3.94102e+10
 EOD
 $bdpt_flagship << EOD
 # year fp32 memory rt_cores (rays per second)
-2015 3.69819e+09 6.44025e+08 NaN
-2017 6.92664e+09 9.26324e+08 NaN
-2018 5.51437e+10 1.17896e+09 1e+10
-2020 7.29529e+10 1.7914e+09 1.59024e+10
-2022 1.69305e+11 1.9292e+09 4.40196e+10
-2025 2.63715e+11 3.4297e+09 7.32891e+10
+2015 3.69717e+09 6.43838e+08 NaN
+2017 6.92473e+09 9.26055e+08 NaN
+2018 5.51331e+10 1.17862e+09 1e+10
+2020 7.29388e+10 1.79088e+09 1.59024e+10
+2022 1.69272e+11 1.92864e+09 4.40196e+10
+2025 2.63671e+11 3.4287e+09 7.32891e+10
 EOD
 set output 'environment_roofline_bdpt.png'
 set title "environment, bdpt: rays/s that 1080p60 needs against each GPU's limits (1.81 rays per path)"
@@ -119,4 +119,4 @@ plot $bdpt_x80 using 1:2 with linespoints lc rgb '#1f77b4' dt 1 pt 7 title 'x80:
      $bdpt_flagship using 1:2 with linespoints lc rgb '#1f77b4' dt 2 pt 5 title 'flagship: FP32', \
      $bdpt_flagship using 1:3 with linespoints lc rgb '#2ca02c' dt 2 pt 5 title 'flagship: memory', \
      $bdpt_flagship using 1:4 with linespoints lc rgb '#d62728' dt 2 pt 5 title 'flagship: RT cores', \
-     4.31449e+13 with lines lc 'black' dt 3 lw 2 title 'need: none, 1.92e+05 spp'
+     4.25058e+13 with lines lc 'black' dt 3 lw 2 title 'need: none, 1.89e+05 spp'

@@ -11,7 +11,7 @@ set key outside right top
 # cornell
 threshold = 0.0004  # relative MSE under which the report calls an image not noisy
 budget_ms = 16.6667  # one frame at 60 FPS
-set yrange [0.00011789:53.0517]
+set yrange [0.000117238:53.7444]
 set logscale xy
 
 set output 'cornell_error_vs_spp.png'
@@ -36,7 +36,7 @@ plot 'study.csv' every ::1 using (strcol(1) eq 'cornell' && strcol(2) eq 'naive'
 set output 'cornell_error_vs_time.png'
 set title 'cornell: error against render time (this machine; median of the runs)'
 set xlabel 'render + denoise time (ms)'
-set xrange [9.30607:14402]
+set xrange [7.60061:15649.5]
 set arrow 1 from budget_ms, graph 0 to budget_ms, graph 1 nohead lc 'red' dt 2 lw 2
 set label 1 '60 FPS frame budget (16.7 ms)' at budget_ms, graph 0.95 offset 0.5, 0 tc 'red'
 plot 'study.csv' every ::1 using (strcol(1) eq 'cornell' && strcol(2) eq 'naive' && strcol(3) eq 'none' ? 1000 * $8 : NaN):10 with linespoints lc 1 dt 1 pt 6 title 'naive', \
@@ -78,7 +78,7 @@ plot 'study.csv' every ::1 using (strcol(1) eq 'cornell' && strcol(2) eq 'naive'
 # cornell-checker
 threshold = 0.0004  # relative MSE under which the report calls an image not noisy
 budget_ms = 16.6667  # one frame at 60 FPS
-set yrange [0.00010783:49.2684]
+set yrange [0.000107699:50.6726]
 set logscale xy
 
 set output 'cornell-checker_error_vs_spp.png'
@@ -103,7 +103,7 @@ plot 'study.csv' every ::1 using (strcol(1) eq 'cornell-checker' && strcol(2) eq
 set output 'cornell-checker_error_vs_time.png'
 set title 'cornell-checker: error against render time (this machine; median of the runs)'
 set xlabel 'render + denoise time (ms)'
-set xrange [11.1111:14250.5]
+set xrange [11.1111:14190.1]
 set arrow 1 from budget_ms, graph 0 to budget_ms, graph 1 nohead lc 'red' dt 2 lw 2
 set label 1 '60 FPS frame budget (16.7 ms)' at budget_ms, graph 0.95 offset 0.5, 0 tc 'red'
 plot 'study.csv' every ::1 using (strcol(1) eq 'cornell-checker' && strcol(2) eq 'naive' && strcol(3) eq 'none' ? 1000 * $8 : NaN):10 with linespoints lc 1 dt 1 pt 6 title 'naive', \
@@ -145,7 +145,7 @@ plot 'study.csv' every ::1 using (strcol(1) eq 'cornell-checker' && strcol(2) eq
 # cornell-spheres
 threshold = 0.0004  # relative MSE under which the report calls an image not noisy
 budget_ms = 16.6667  # one frame at 60 FPS
-set yrange [0.0002:57.4232]
+set yrange [0.0002:56.1095]
 set logscale xy
 
 set output 'cornell-spheres_error_vs_spp.png'
@@ -170,7 +170,7 @@ plot 'study.csv' every ::1 using (strcol(1) eq 'cornell-spheres' && strcol(2) eq
 set output 'cornell-spheres_error_vs_time.png'
 set title 'cornell-spheres: error against render time (this machine; median of the runs)'
 set xlabel 'render + denoise time (ms)'
-set xrange [11.1111:21751.8]
+set xrange [11.1111:21009.4]
 set arrow 1 from budget_ms, graph 0 to budget_ms, graph 1 nohead lc 'red' dt 2 lw 2
 set label 1 '60 FPS frame budget (16.7 ms)' at budget_ms, graph 0.95 offset 0.5, 0 tc 'red'
 plot 'study.csv' every ::1 using (strcol(1) eq 'cornell-spheres' && strcol(2) eq 'naive' && strcol(3) eq 'none' ? 1000 * $8 : NaN):10 with linespoints lc 1 dt 1 pt 6 title 'naive', \
@@ -212,7 +212,7 @@ plot 'study.csv' every ::1 using (strcol(1) eq 'cornell-spheres' && strcol(2) eq
 # environment
 threshold = 0.0004  # relative MSE under which the report calls an image not noisy
 budget_ms = 16.6667  # one frame at 60 FPS
-set yrange [0.0002:242.958]
+set yrange [0.0002:207.192]
 set logscale xy
 
 set output 'environment_error_vs_spp.png'
@@ -237,7 +237,7 @@ plot 'study.csv' every ::1 using (strcol(1) eq 'environment' && strcol(2) eq 'na
 set output 'environment_error_vs_time.png'
 set title 'environment: error against render time (this machine; median of the runs)'
 set xlabel 'render + denoise time (ms)'
-set xrange [11.1111:4994.96]
+set xrange [8.26281:4318.05]
 set arrow 1 from budget_ms, graph 0 to budget_ms, graph 1 nohead lc 'red' dt 2 lw 2
 set label 1 '60 FPS frame budget (16.7 ms)' at budget_ms, graph 0.95 offset 0.5, 0 tc 'red'
 plot 'study.csv' every ::1 using (strcol(1) eq 'environment' && strcol(2) eq 'naive' && strcol(3) eq 'none' ? 1000 * $8 : NaN):10 with linespoints lc 1 dt 1 pt 6 title 'naive', \
@@ -279,7 +279,7 @@ plot 'study.csv' every ::1 using (strcol(1) eq 'environment' && strcol(2) eq 'na
 # sphere-1m
 threshold = 0.0004  # relative MSE under which the report calls an image not noisy
 budget_ms = 16.6667  # one frame at 60 FPS
-set yrange [0.00012592:43.6218]
+set yrange [0.000126362:45.4335]
 set logscale xy
 
 set output 'sphere-1m_error_vs_spp.png'
@@ -304,7 +304,7 @@ plot 'study.csv' every ::1 using (strcol(1) eq 'sphere-1m' && strcol(2) eq 'naiv
 set output 'sphere-1m_error_vs_time.png'
 set title 'sphere-1m: error against render time (this machine; median of the runs)'
 set xlabel 'render + denoise time (ms)'
-set xrange [11.1111:30202.5]
+set xrange [11.1111:26088.4]
 set arrow 1 from budget_ms, graph 0 to budget_ms, graph 1 nohead lc 'red' dt 2 lw 2
 set label 1 '60 FPS frame budget (16.7 ms)' at budget_ms, graph 0.95 offset 0.5, 0 tc 'red'
 plot 'study.csv' every ::1 using (strcol(1) eq 'sphere-1m' && strcol(2) eq 'naive' && strcol(3) eq 'none' ? 1000 * $8 : NaN):10 with linespoints lc 1 dt 1 pt 6 title 'naive', \
@@ -346,7 +346,7 @@ plot 'study.csv' every ::1 using (strcol(1) eq 'sphere-1m' && strcol(2) eq 'naiv
 # gltf-showcase
 threshold = 0.0004  # relative MSE under which the report calls an image not noisy
 budget_ms = 16.6667  # one frame at 60 FPS
-set yrange [0.0002:4.0031]
+set yrange [0.0002:4.20168]
 set logscale xy
 
 set output 'gltf-showcase_error_vs_spp.png'
@@ -371,7 +371,7 @@ plot 'study.csv' every ::1 using (strcol(1) eq 'gltf-showcase' && strcol(2) eq '
 set output 'gltf-showcase_error_vs_time.png'
 set title 'gltf-showcase: error against render time (this machine; median of the runs)'
 set xlabel 'render + denoise time (ms)'
-set xrange [11.1111:24876.8]
+set xrange [11.1111:24516.7]
 set arrow 1 from budget_ms, graph 0 to budget_ms, graph 1 nohead lc 'red' dt 2 lw 2
 set label 1 '60 FPS frame budget (16.7 ms)' at budget_ms, graph 0.95 offset 0.5, 0 tc 'red'
 plot 'study.csv' every ::1 using (strcol(1) eq 'gltf-showcase' && strcol(2) eq 'naive' && strcol(3) eq 'none' ? 1000 * $8 : NaN):10 with linespoints lc 1 dt 1 pt 6 title 'naive', \

@@ -10,20 +10,20 @@
 // aim, through the glass, at the light. Light tracing finds it from the other end: the light-tracing pass
 // (passes/light_trace.frag.glsl) follows light through the delta vertices to x1 and joins x1 to the
 // camera (bdpt's strategy t = 1, Veach 1997 section 10.2). So it does for the light such a caustic sends
-// on: x1 and x2 sampled smooth lobes and x3 .. x_m (m >= 3) delta ones (a wall lit by the caustic on the
-// floor), which a camera path finds only when x2's BSDF sample aims through the glass at the light: a
-// firefly. The two estimators split path space: the light pass sums exactly these paths, with m + 1 <=
-// LIGHT_RECORDS (its light subpaths' length, bdpt_subpaths.glsl), and this integrator leaves exactly those
-// out, so their sum is unbiased without weights.
+// on: x1 .. x_j (j <= CAUSTIC_SMOOTH_BOUNCES) sampled smooth lobes and x_{j+1} .. x_m delta ones (a wall
+// lit by the caustic on the floor), which a camera path finds only when x_j's BSDF sample aims through
+// the glass at the light: a firefly. The two estimators split path space: the light pass sums exactly
+// these paths, with m + 1 <= LIGHT_RECORDS (its light subpaths' length, bdpt_subpaths.glsl), and this
+// integrator leaves exactly those out, so their sum is unbiased without weights.
 vec3 radiance(Ray ray) {
     vec3 L = vec3(0.0), beta = vec3(1.0);
     float lastPdf = 0.0;      // solid-angle density of the direction that led here
     vec3 lastPosition = ray.origin;  // the vertex it left from, where sampleLight would have sampled
     vec3 lastNormal = vec3(0.0, 0.0, 1.0);  // its shading normal (the light tree's choice depends on it)
     bool fullWeight = true;  // camera rays and delta bounces: no light sample competed
-    // The path so far for the light pass's split: x1 .. x_j sampled smooth lobes (j = causticSmooth; -1:
-    // not a caustic path, a delta lobe first or a smooth one after a delta one), and then at least one
-    // vertex (causticDelta) and every vertex since a delta one.
+    // The path so far, for the light pass's split: x1 .. x_j sampled smooth lobes (j = causticSmooth), and
+    // once causticDelta, every vertex since x_{j+1} a delta one. -1: not such a path (x1 sampled a delta
+    // lobe, or a smooth lobe came after a delta one).
     int causticSmooth = 0;
     bool causticDelta = false;
     for (int depth = 0;; ++depth) {
