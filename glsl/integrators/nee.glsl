@@ -36,27 +36,26 @@ vec3 radiance(Ray ray) {
         Surface s = surfaceAt(ray, hit);
         applyDispersion(s, beta);
         vec3 Le = emittedRadiance(s);
+        // Whether the light pass sums this path, should it end on an emitter here.
+        bool lightPassPath = causticDelta && causticSmooth >= 1 && causticSmooth <= CAUSTIC_SMOOTH_BOUNCES &&
+                             depth < LIGHT_RECORDS;
 #if CAUSTICS_LIGHT_TRACED
-        if (causticDelta && causticSmooth >= 1 && causticSmooth <= CAUSTIC_SMOOTH_BOUNCES &&
-            depth < LIGHT_RECORDS)
-            Le = vec3(0.0);  // the light pass's
+        if (lightPassPath) Le = vec3(0.0);  // the light pass's
 #endif
 #ifdef NEE_ONLY_CAUSTICS_SENT_ON
-        // Test only (tests/render/caustics_test.cpp): nothing but the light that caustics send on.
-        if (!(causticDelta && causticSmooth >= 2 && causticSmooth <= CAUSTIC_SMOOTH_BOUNCES &&
-              depth < LIGHT_RECORDS))
-            Le = vec3(0.0);
+        // Test only (tests/render/caustics_test.cpp): nothing but the light that caustics send on, and no
+        // light samples (below).
+        if (!lightPassPath || causticSmooth < 2) Le = vec3(0.0);
+        const bool kLightSamples = false;
+#else
+        const bool kLightSamples = true;
 #endif
         if (Le != vec3(0.0))
             addLight(L, beta * Le * (fullWeight ? 1.0 : powerHeuristic(lastPdf, lightPdf(lastPosition, lastNormal, ray, hit))), depth);
         if (depth == uMaxDepth) break;
 
         vec3 wo = toLocal(s, -ray.dir);
-#ifdef NEE_ONLY_CAUSTICS_SENT_ON
-        if (false) {
-#else
-        if (!isDeltaOnly(s.material)) {
-#endif
+        if (kLightSamples && !isDeltaOnly(s.material)) {
             LightSample ls = sampleLight(s.position, s.shadingNormal);
             vec3 wi = toLocal(s, ls.dir);
             if (ls.pdf > 0.0 && sameSide(s, wi, ls.dir)) {
