@@ -7,7 +7,7 @@
 #   tools/race_cycles.py [--scene assets/cornell/cornell.json] [--size 128] [--max-depth 5]
 #                        [--spp 16,64,256] [--reference-spp 8192] [--runs 3] [--threads 2]
 #                        [--integrator nee] [--reference-integrator NAME] [--light-selection auto]
-#                        [--caustics auto]
+#                        [--caustics auto] [--reference FILE.pfm]
 #
 # Installs Debian's `blender` package when it is missing (apt-get, with sudo when not root). The scene is
 # a fragpath scene file (an OBJ of Lambertian and emissive materials, and a camera); Cycles renders it
@@ -77,6 +77,8 @@ def main():
     parser.add_argument("--integrator", default="nee", help="fragpath's integrator in the race")
     parser.add_argument("--light-selection", default="auto", help="fragpath's, in the race and the reference")
     parser.add_argument("--caustics", default="auto", help="fragpath's, in the race (the reference keeps auto)")
+    parser.add_argument("--reference", default=None,
+                        help="an existing reference .pfm (a previous race's, printed at its end) instead of rendering one")
     parser.add_argument("--reference-integrator", default=None,
                         help="the reference's integrator (default: --integrator; bdpt converges faster on caustics)")
     args = parser.parse_args()
@@ -104,16 +106,20 @@ def main():
 
     reference_path = os.path.join(out, "reference.pfm")
     reference_integrator = args.reference_integrator or args.integrator
-    subprocess.run(fragpath(args.reference_spp, 1000, reference_path, reference_integrator, "auto"), check=True,
-                   env=env)
+    if args.reference:
+        shutil.copyfile(args.reference, reference_path)
+    else:
+        subprocess.run(fragpath(args.reference_spp, 1000, reference_path, reference_integrator, "auto"),
+                       check=True, env=env)
     reference = read_pfm(reference_path)
 
     def rmse(image):
         return math.sqrt(sum((a - b) ** 2 for a, b in zip(image, reference)) / len(reference))
 
     print("scene %s, %s, max depth %d, %d threads; fragpath %s, light selection %s, caustics %s; reference: "
-          "fragpath %s, %d spp" % (args.scene, size, args.max_depth, args.threads, args.integrator,
-                                   args.light_selection, args.caustics, reference_integrator, args.reference_spp))
+          "%s" % (args.scene, size, args.max_depth, args.threads, args.integrator, args.light_selection,
+                     args.caustics, args.reference or "fragpath %s, %d spp" % (reference_integrator,
+                                                                             args.reference_spp)))
     commands = (("fragpath", fragpath), ("cycles", cycles))
     sample_counts = [int(s) for s in args.spp.split(",")]
     # Every measurement alternates the two renderers (fragpath, Cycles, fragpath, ...), so that a drift

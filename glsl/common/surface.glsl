@@ -185,12 +185,21 @@ BounceNumbers drawBounceNumbers(int depth) {
 }
 
 // Russian roulette (as in pbrt-v4 PathIntegrator::Li): after a few bounces, stop a path with probability
-// 1 - max(beta) and reweight the survivors, which keeps the estimate unbiased. u: drawBounceNumbers'.
+// 1 - max(beta etaScale) and reweight the survivors, which keeps the estimate unbiased. etaScale is the
+// product of eta^2 over the path's refractions (refractionScale): it undoes the 1/eta^2 by which a
+// refraction scales radiance (bsdf.glsl), which the path's leaving the glass undoes in beta too. On beta
+// alone the roulette stopped more than half of the paths inside glass (1/1.5^2 = 0.44) and gave the
+// survivors 2.25 times the weight: no bias, but the glass sphere of assets/cornell_spheres was noisier
+// than Cycles' (docs/optimisation-log.md, "The roulette inside glass"). u: drawBounceNumbers'.
 int gBounces = 0;  // bounces the current path survived, for the bounces view
 
-bool survivesRoulette(inout vec3 beta, int depth, float u) {
+// The factor by which a BSDF sample scales etaScale: eta^2 for a refraction, which alone of the lobes
+// goes below the surface (bsdfSample's wo is above it), else 1.
+float refractionScale(BsdfSample bs, Surface s) { return bs.wi.z < 0.0 ? s.eta * s.eta : 1.0; }
+
+bool survivesRoulette(inout vec3 beta, float etaScale, int depth, float u) {
     if (depth >= kRouletteDepth) {
-        float keep = min(1.0, max(beta.r, max(beta.g, beta.b)));
+        float keep = min(1.0, max(beta.r, max(beta.g, beta.b)) * etaScale);
         if (u >= keep) return false;
         beta /= keep;
     }

@@ -166,6 +166,7 @@ vec3 radiance(Ray ray) {
 
     storeCameraVertex(0, PathVertex(ray.origin, ray.dir, ray.dir, ray.dir, vec3(1.0), 0, 1.0, 1.0, 0.0, false, false, 0.0));
     vec3 L = vec3(0.0), beta = vec3(1.0);
+    float etaScale = 1.0;  // for the roulette (survivesRoulette)
     float pdfDir = 1.0;  // solid-angle density of the direction that led here (the camera's is not needed)
     bool dispersive = false;
     for (int depth = 0;; ++depth) {
@@ -212,6 +213,7 @@ vec3 radiance(Ray ray) {
         vec3 dir = toWorld(s, bs.wi);
         if (!sameSide(s, bs.wi, dir)) break;
         beta *= bs.weight;
+        etaScale *= refractionScale(bs, s);
         if (bs.delta) {
             gCamera[t - 1].delta = true;
             if (t >= 3) gCamera[t - 2].pdfRev = 0.0;
@@ -220,7 +222,7 @@ vec3 radiance(Ray ray) {
             if (t >= 3) gCamera[t - 2].pdfRev = toArea(vertexPdf(z, s.material, dir, -ray.dir), z.p, gCamera[t - 2]);
             pdfDir = bs.pdf;
         }
-        if (!survivesRoulette(beta, depth, u.roulette)) break;
+        if (!survivesRoulette(beta, etaScale, depth, u.roulette)) break;
         ray = spawnRay(s, dir);
     }
     return L;

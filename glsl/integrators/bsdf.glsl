@@ -5,6 +5,7 @@
 // ray can hit one) do not light this integrator's image; the renderer warns (src/render/renderer.cpp).
 vec3 radiance(Ray ray) {
     vec3 L = vec3(0.0), beta = vec3(1.0);
+    float etaScale = 1.0;  // for the roulette (survivesRoulette)
     for (int depth = 0;; ++depth) {
         Hit hit;
         if (!traceClosest(ray, hit)) {
@@ -21,7 +22,8 @@ vec3 radiance(Ray ray) {
         vec3 dir = toWorld(s, bs.wi);
         if (!sameSide(s, bs.wi, dir)) break;
         beta *= bs.weight;
-        if (!survivesRoulette(beta, depth, u.roulette)) break;
+        etaScale *= refractionScale(bs, s);
+        if (!survivesRoulette(beta, etaScale, depth, u.roulette)) break;
         ray = spawnRay(s, dir);
     }
     return L + takeIndirect();

@@ -5,6 +5,7 @@
 // other non-Lambertian ones) are sampled by their BSDF instead.
 vec3 radiance(Ray ray) {
     vec3 L = vec3(0.0), beta = vec3(1.0);
+    float etaScale = 1.0;  // for the roulette (survivesRoulette)
     for (int depth = 0;; ++depth) {
         Hit hit;
         if (!traceClosest(ray, hit)) {
@@ -29,8 +30,9 @@ vec3 radiance(Ray ray) {
             dir = toWorld(s, bs.wi);
             if (!sameSide(s, bs.wi, dir)) break;
             beta *= bs.weight;
+            etaScale *= refractionScale(bs, s);
         }
-        if (!survivesRoulette(beta, depth, u.roulette)) break;
+        if (!survivesRoulette(beta, etaScale, depth, u.roulette)) break;
         ray = spawnRay(s, dir);
     }
     // Light is found only where a path hits it, so point, spot and directional lights, which nothing can

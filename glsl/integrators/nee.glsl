@@ -17,6 +17,7 @@
 // integrator leaves exactly those out, so their sum is unbiased without weights.
 vec3 radiance(Ray ray) {
     vec3 L = vec3(0.0), beta = vec3(1.0);
+    float etaScale = 1.0;  // for the roulette (survivesRoulette)
     float lastPdf = 0.0;      // solid-angle density of the direction that led here
     vec3 lastPosition = ray.origin;  // the vertex it left from, where sampleLight would have sampled
     vec3 lastNormal = vec3(0.0, 0.0, 1.0);  // its shading normal (the light tree's choice depends on it)
@@ -77,6 +78,7 @@ vec3 radiance(Ray ray) {
         vec3 dir = toWorld(s, bs.wi);
         if (!sameSide(s, bs.wi, dir)) break;
         beta *= bs.weight;
+        etaScale *= refractionScale(bs, s);
         lastPdf = bs.pdf;
         lastPosition = s.position;
         lastNormal = s.shadingNormal;
@@ -89,7 +91,7 @@ vec3 radiance(Ray ray) {
             else
                 causticSmooth = -1;
         }
-        if (!survivesRoulette(beta, depth, u.roulette)) break;
+        if (!survivesRoulette(beta, etaScale, depth, u.roulette)) break;
         ray = spawnRay(s, dir);
     }
     return L + takeIndirect();

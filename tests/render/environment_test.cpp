@@ -88,6 +88,25 @@ TEST(WhiteFurnace, SmoothGlassSphereShowsExactlyTheEnvironment) {
         expectFurnace(sphereInFurnace(glass, false), integrator, 1.0f, 1000);
 }
 
+// Russian roulette looks at beta with the refractions' 1/eta^2 undone (surface.glsl, survivesRoulette): in
+// the furnace every path through lossless glass carries exactly 1 wherever it is, so none is stopped and
+// every sample is 1. (On beta alone the roulette stopped more than half of the paths inside the glass from
+// depth 3 on and gave the survivors 2.25 times the weight: the sphere's mean stays 1, but its pixels vary.)
+TEST(WhiteFurnace, RouletteStopsNoPathThroughLosslessGlass) {
+    Material glass;
+    glass.type = MaterialType::Dielectric;
+    glass.ior = 1.5f;
+    glass.roughness = 0.0f;
+    glass.transmission = glm::vec3(1.0f);
+    for (Integrator integrator : {Integrator::Naive, Integrator::Bsdf, Integrator::Nee}) {
+        SphereMean m = sphereMean(sphereInFurnace(glass, false), integrator, 1000);
+        for (int c = 0; c < 3; ++c) {
+            EXPECT_NEAR(m.mean[c], 1.0, 1e-4) << integratorName(integrator) << " channel " << c;
+            EXPECT_LT(m.standardError[c], 1e-5) << integratorName(integrator) << " channel " << c;
+        }
+    }
+}
+
 TEST(WhiteFurnace, DispersiveGlassSphereStillShowsExactlyTheEnvironment) {
     // One wavelength per path, weighed back to RGB: unbiased only if the weights average to 1 per channel.
     Material glass;
