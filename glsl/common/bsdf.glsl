@@ -65,6 +65,23 @@ struct BsdfSample {
     bool delta;
 };
 
+// A glossy caster (src/pack/caustic_casters.h, which sets GLOSSY_CASTER_ROUGHNESS): a metal whose one
+// lobe is nearly smooth. The light its highlight throws on other surfaces is a caustic, which nee's light
+// pass traces (integrators/nee.glsl) as it does the light of a delta lobe.
+#ifndef GLOSSY_CASTER_ROUGHNESS
+#define GLOSSY_CASTER_ROUGHNESS 0.0
+#endif
+bool isGlossyCaster(MaterialData m) {
+    bool metal = m.type == MATERIAL_CONDUCTOR;
+#if HAS_TYPE(MATERIAL_METALLIC_ROUGHNESS)
+    metal = metal || (m.type == MATERIAL_METALLIC_ROUGHNESS && m.metallic >= 1.0);
+#endif
+    return metal && m.roughness < GLOSSY_CASTER_ROUGHNESS;
+}
+
+// Whether the lobe a BSDF sample took is a caustic caster's: a delta lobe, or a glossy caster's.
+bool casterLobe(BsdfSample bs, MaterialData m) { return bs.delta || isGlossyCaster(m); }
+
 // ---- Fresnel ----
 // Unpolarised Fresnel reflectance of a dielectric interface (pbrt-v4 eq. 9.5). cosI > 0 on the incident
 // side; eta = n_transmitted / n_incident. Total internal reflection gives 1.

@@ -102,22 +102,27 @@ MaterialData vertexMaterial(bool camera, int i) {
 bool gLightDelta[BDPT_MAX_LIGHT_VERTICES];
 
 #if CAUSTICS_LIGHT_TRACED
+// Whether the direction sampled at y_i came from a caustic caster's lobe (bsdf.glsl, casterLobe: a delta
+// lobe, or a glossy caster's).
+bool gLightCaster[BDPT_MAX_LIGHT_VERTICES];
+
 // nee's light pass (integrators/nee.glsl) uses light tracing alone, and only for the caustic paths nee
 // leaves to it, y_{s-1} joined to the camera through its smooth lobes: y1 .. y_{r-1} (r >= 2) each sampled
-// a delta lobe, and y_r .. y_{s-2}, the caustic's receiver and the surfaces its light reaches from there,
-// a smooth one, at most CAUSTIC_SMOOTH_BOUNCES - 1 of them (none: the caustic seen directly; one: a wall
-// lit by the caustic on the floor). Their light subpaths end where no such path goes on.
+// a caster's lobe, and y_r .. y_{s-2}, the caustic's receiver and the surfaces its light reaches from
+// there, a smooth one, at most CAUSTIC_SMOOTH_BOUNCES - 1 of them (none: the caustic seen directly; one: a
+// wall lit by the caustic on the floor). Their light subpaths end where no such path goes on.
 bool causticStrategy(int s) {
-    if (s < 3 || !gLightDelta[1]) return false;
+    if (s < 3 || !gLightCaster[1]) return false;
     int smoothSamples = 0;
     for (int i = 2; i < s - 1; ++i) {
-        if (!gLightDelta[i])
+        if (!gLightCaster[i])
             ++smoothSamples;
         else if (smoothSamples > 0)
-            return false;  // a delta vertex after the receiver
+            return false;  // a caster's lobe after the receiver
     }
-#ifdef NEE_ONLY_CAUSTICS_SENT_ON
-    if (smoothSamples == 0) return false;  // test only: the light caustics send on (caustics_test.cpp)
+#ifdef NEE_ONLY_LIGHT_PASS_PATHS
+    // Test only (caustics_test.cpp): at least that many smooth vertices, the receiver y_{s-1} included.
+    if (smoothSamples + 1 < NEE_ONLY_LIGHT_PASS_PATHS) return false;
 #endif
     return smoothSamples < CAUSTIC_SMOOTH_BOUNCES;
 }
@@ -261,6 +266,9 @@ bool meetDispersion(inout Surface s) {
 int traceLightSubpath(int maxDepth) {
     int n = min(BDPT_MAX_LIGHT_VERTICES, maxDepth + 1);
     for (int i = 0; i < BDPT_MAX_LIGHT_VERTICES; ++i) gLightDelta[i] = false;
+#if CAUSTICS_LIGHT_TRACED
+    for (int i = 0; i < BDPT_MAX_LIGHT_VERTICES; ++i) gLightCaster[i] = false;
+#endif
 #if PUNCTUAL_LIGHTS
     gLightPunctual = false;
 #endif
@@ -374,9 +382,11 @@ int traceLightSubpath(int maxDepth) {
         // (The light stream's pairs are the pixel's own at every depth: rng.glsl's rand2Coherent.)
         if (!bsdfSample(s.material, wo, drawBounceNumbers(count - 1).bsdf, s.eta, bs)) break;
 #if CAUSTICS_LIGHT_TRACED
-        // Smooth lobes only from the caustic's receiver on, after at least one delta vertex; delta ones
-        // only before it.
-        if (!bs.delta) {
+        // Smooth lobes only from the caustic's receiver on, after at least one caster's lobe; casters'
+        // lobes only before it.
+        bool caster = casterLobe(bs, s.material);
+        gLightCaster[count - 1] = caster;
+        if (!caster) {
             if (count == 2) break;  // y1 itself: no caustic
             ++smoothSamples;
         } else if (smoothSamples > 0) {

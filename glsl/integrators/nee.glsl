@@ -5,16 +5,18 @@
 // glass), which light sampling cannot reach, it counts in full.
 //
 // Caustics seen directly (CAUSTICS_LIGHT_TRACED, --caustics light): a path whose first vertex x1 sampled
-// a smooth lobe and whose next vertices x2 .. x_m (m >= 2) each sampled a delta lobe before x_{m+1} on an
-// emitter (a floor lit through a glass ball) is found here only when the BSDF sample at x1 happens to
-// aim, through the glass, at the light. Light tracing finds it from the other end: the light-tracing pass
-// (passes/light_trace.frag.glsl) follows light through the delta vertices to x1 and joins x1 to the
-// camera (bdpt's strategy t = 1, Veach 1997 section 10.2). So it does for the light such a caustic sends
-// on: x1 .. x_j (j <= CAUSTIC_SMOOTH_BOUNCES) sampled smooth lobes and x_{j+1} .. x_m delta ones (a wall
-// lit by the caustic on the floor), which a camera path finds only when x_j's BSDF sample aims through
-// the glass at the light: a firefly. The two estimators split path space: the light pass sums exactly
-// these paths, with m + 1 <= LIGHT_RECORDS (its light subpaths' length, bdpt_subpaths.glsl), and this
-// integrator leaves exactly those out, so their sum is unbiased without weights.
+// a smooth lobe and whose next vertices x2 .. x_m (m >= 2) each sampled a caster's lobe (a delta lobe, or
+// a glossy caster's: bsdf.glsl, casterLobe) before x_{m+1} on an emitter (a floor lit through a glass
+// ball, a wall lit by a gold sphere's highlight) is found here only when the BSDF sample at x1 happens to
+// aim, through the glass or off the metal, at the light. Light tracing finds it from the other end: the
+// light-tracing pass (passes/light_trace.frag.glsl) follows light through the caster vertices to x1 and
+// joins x1 to the camera (bdpt's strategy t = 1, Veach 1997 section 10.2). So it does for the light such a
+// caustic sends on: x1 .. x_j (j <= CAUSTIC_SMOOTH_BOUNCES) sampled smooth lobes and x_{j+1} .. x_m
+// casters' (a wall lit by the caustic on the floor), which a camera path finds only when x_j's BSDF
+// sample aims through the glass at the light: a firefly. The two estimators split path space: the light
+// pass sums exactly these paths, with m + 1 <= LIGHT_RECORDS (its light subpaths' length,
+// bdpt_subpaths.glsl), and this integrator leaves exactly those out, whether it would find them by a BSDF
+// sample or, at a glossy caster x_m, by a light sample; so their sum is unbiased without weights.
 vec3 radiance(Ray ray) {
     vec3 L = vec3(0.0), beta = vec3(1.0);
     float etaScale = 1.0;  // for the roulette (survivesRoulette)
@@ -23,10 +25,10 @@ vec3 radiance(Ray ray) {
     vec3 lastNormal = vec3(0.0, 0.0, 1.0);  // its shading normal (the light tree's choice depends on it)
     bool fullWeight = true;  // camera rays and delta bounces: no light sample competed
     // The path so far, for the light pass's split: x1 .. x_j sampled smooth lobes (j = causticSmooth), and
-    // once causticDelta, every vertex since x_{j+1} a delta one. -1: not such a path (x1 sampled a delta
-    // lobe, or a smooth lobe came after a delta one).
+    // once causticCast, every vertex since x_{j+1} a caster's lobe. -1: not such a path (x1 sampled a
+    // caster's lobe, or a smooth lobe came after one).
     int causticSmooth = 0;
-    bool causticDelta = false;
+    bool causticCast = false;
     for (int depth = 0;; ++depth) {
         Hit hit;
         if (!traceClosest(ray, hit)) {
@@ -38,25 +40,34 @@ vec3 radiance(Ray ray) {
         applyDispersion(s, beta);
         vec3 Le = emittedRadiance(s);
         // Whether the light pass sums this path, should it end on an emitter here.
-        bool lightPassPath = causticDelta && causticSmooth >= 1 && causticSmooth <= CAUSTIC_SMOOTH_BOUNCES &&
+        bool lightPassPath = causticCast && causticSmooth >= 1 && causticSmooth <= CAUSTIC_SMOOTH_BOUNCES &&
                              depth < LIGHT_RECORDS;
 #if CAUSTICS_LIGHT_TRACED
         if (lightPassPath) Le = vec3(0.0);  // the light pass's
 #endif
-#ifdef NEE_ONLY_CAUSTICS_SENT_ON
-        // Test only (tests/render/caustics_test.cpp): nothing but the light that caustics send on, and no
-        // light samples (below).
-        if (!lightPassPath || causticSmooth < 2) Le = vec3(0.0);
-        const bool kLightSamples = false;
-#else
-        const bool kLightSamples = true;
+#ifdef NEE_ONLY_LIGHT_PASS_PATHS
+        // Test only (tests/render/caustics_test.cpp): nothing but the paths the light pass sums, with at
+        // least NEE_ONLY_LIGHT_PASS_PATHS smooth vertices (2: the light that caustics send on); so also
+        // for the light samples (below).
+        if (!lightPassPath || causticSmooth < NEE_ONLY_LIGHT_PASS_PATHS) Le = vec3(0.0);
 #endif
         if (Le != vec3(0.0))
             addLight(L, beta * Le * (fullWeight ? 1.0 : powerHeuristic(lastPdf, lightPdf(lastPosition, lastNormal, ray, hit))), depth);
         if (depth == uMaxDepth) break;
 
         vec3 wo = toLocal(s, -ray.dir);
-        if (kLightSamples && !isDeltaOnly(s.material)) {
+        // A light sample at a glossy caster after smooth vertices (x_m above, the light x_{m+1} at depth +
+        // 1) closes a path the light pass sums.
+        bool lightPassSample = isGlossyCaster(s.material) && causticSmooth >= 1 &&
+                               causticSmooth <= CAUSTIC_SMOOTH_BOUNCES && depth + 1 < LIGHT_RECORDS;
+        bool lightSample = !isDeltaOnly(s.material);
+#if CAUSTICS_LIGHT_TRACED
+        lightSample = lightSample && !lightPassSample;  // the light pass's
+#endif
+#ifdef NEE_ONLY_LIGHT_PASS_PATHS
+        lightSample = lightSample && lightPassSample && causticSmooth >= NEE_ONLY_LIGHT_PASS_PATHS;
+#endif
+        if (lightSample) {
             LightSample ls = sampleLight(s.position, s.shadingNormal);
             vec3 wi = toLocal(s, ls.dir);
             if (ls.pdf > 0.0 && sameSide(s, wi, ls.dir)) {
@@ -84,10 +95,11 @@ vec3 radiance(Ray ray) {
         lastNormal = s.shadingNormal;
         fullWeight = bs.delta;
         if (causticSmooth >= 0) {
-            if (!bs.delta && !causticDelta)
+            bool caster = casterLobe(bs, s.material);
+            if (!caster && !causticCast)
                 ++causticSmooth;
-            else if (bs.delta && causticSmooth > 0)
-                causticDelta = true;
+            else if (caster && causticSmooth > 0)
+                causticCast = true;
             else
                 causticSmooth = -1;
         }

@@ -59,6 +59,10 @@ vec3 lightToCamera(int s, out vec2 pixel) {
         f = vec3(cosLight);
     } else {
         if (isDeltaOnly(m)) return vec3(0.0);
+#if CAUSTICS_LIGHT_TRACED
+        // nee's camera pass sums the paths whose first vertex is a glossy caster (integrators/nee.glsl).
+        if (isGlossyCaster(m)) return vec3(0.0);
+#endif
         f = vertexBsdf(y, m, y.wo, d, true);
         if (f == vec3(0.0)) return vec3(0.0);
         yRevPrev = toArea(vertexPdf(y, m, d, y.wo), y.p, gLight[s - 2]);

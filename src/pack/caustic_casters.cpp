@@ -33,22 +33,40 @@ glm::vec4 sphereAbout(const Aabb& box, const std::vector<glm::vec3>& points) {
     return glm::vec4(centre, std::sqrt(radius2));
 }
 
+// The smallest roughness a surface of material m can have: the factor times the roughness map's
+// smallest G texel (0 for a map that is not there).
+float smallestRoughness(const Material& m, const std::vector<Texture>& textures) {
+    if (m.metallicRoughnessTexture < 0) return m.roughness;
+    if (size_t(m.metallicRoughnessTexture) >= textures.size()) return 0.0f;
+    const std::vector<uint8_t>& texels = textures[size_t(m.metallicRoughnessTexture)].image.texels;
+    uint8_t g = 255;
+    for (size_t i = 1; i < texels.size(); i += 4) g = std::min(g, texels[i]);
+    return m.roughness * float(g) / 255.0f;
+}
+
 }  // namespace
 
 bool hasDeltaLobe(const Material& m, const std::vector<Texture>& textures) {
     if (m.type == MaterialType::Diffuse) return false;
-    float smallest = 1.0f;  // of the roughness map's G channel, in [0, 1]
-    if (m.metallicRoughnessTexture >= 0) {
-        if (size_t(m.metallicRoughnessTexture) >= textures.size()) return true;
-        const std::vector<uint8_t>& texels = textures[size_t(m.metallicRoughnessTexture)].image.texels;
-        uint8_t g = 255;
-        for (size_t i = 1; i < texels.size(); i += 4) g = std::min(g, texels[i]);
-        smallest = float(g) / 255.0f;
-    }
     // Twice the threshold: the GPU's filtered value may round below the smallest texel, and a delta lobe
     // missed here would lose its caustics (the camera pass leaves them to the light pass).
-    return m.roughness * smallest < 2.0f * kSmoothRoughness;
+    return smallestRoughness(m, textures) < 2.0f * kSmoothRoughness;
 }
+
+bool isGlossyCasterMaterial(const Material& m, const std::vector<Texture>& textures) {
+    bool metal = m.type == MaterialType::Conductor ||
+                 (m.type == MaterialType::MetallicRoughness && m.metallic >= 1.0f);
+    // A margin of one texel's step over the threshold, for the same reason as hasDeltaLobe's.
+    return metal && smallestRoughness(m, textures) < kGlossyCasterRoughness + 1.0f / 255.0f;
+}
+
+namespace {
+
+bool isCaster(const Material& m, const std::vector<Texture>& textures) {
+    return hasDeltaLobe(m, textures) || isGlossyCasterMaterial(m, textures);
+}
+
+}  // namespace
 
 std::vector<glm::vec4> causticCasterSpheres(const Scene& scene) {
     std::vector<glm::vec4> spheres;
@@ -56,7 +74,7 @@ std::vector<glm::vec4> causticCasterSpheres(const Scene& scene) {
     std::map<uint32_t, std::pair<Aabb, std::vector<glm::vec3>>> byMaterial;
     for (const Triangle& t : scene.triangles) {
         if (t.material >= scene.materials.size() ||
-            !hasDeltaLobe(scene.materials[t.material], scene.textures))
+            !isCaster(scene.materials[t.material], scene.textures))
             continue;
         auto& [box, points] = byMaterial[t.material];
         for (const glm::vec3& p : t.p) {
@@ -71,7 +89,7 @@ std::vector<glm::vec4> causticCasterSpheres(const Scene& scene) {
     for (size_t i = 0; i < scene.meshes.size(); ++i)
         for (const Triangle& t : scene.meshes[i].triangles)
             if (t.material < scene.materials.size() &&
-                hasDeltaLobe(scene.materials[t.material], scene.textures))
+                isCaster(scene.materials[t.material], scene.textures))
                 meshCasters[i].grow(t.bounds());
     for (const Instance& instance : scene.instances)
         if (instance.mesh < meshCasters.size() && !meshCasters[instance.mesh].empty())

@@ -46,6 +46,31 @@ TEST(CausticCasters, DeltaLobesAreSmoothSpecularLobesOrMappedOnesThatReachSmooth
     EXPECT_TRUE(hasDeltaLobe(mapped, none)) << "a map that is not there";
 }
 
+TEST(CausticCasters, GlossyCastersAreMetalsBelowTheRoughnessThreshold) {
+    const std::vector<Texture> none;
+    const float below = 0.9f * kGlossyCasterRoughness, above = kGlossyCasterRoughness + 0.05f;
+    EXPECT_TRUE(isGlossyCasterMaterial(material(MaterialType::Conductor, below), none));
+    EXPECT_FALSE(isGlossyCasterMaterial(material(MaterialType::Conductor, above), none));
+    EXPECT_FALSE(isGlossyCasterMaterial(material(MaterialType::Plastic, below), none)) << "a diffuse base";
+    EXPECT_FALSE(isGlossyCasterMaterial(material(MaterialType::Dielectric, below), none));
+    EXPECT_FALSE(isGlossyCasterMaterial(material(MaterialType::Diffuse, 0.0f), none));
+    Material metal = material(MaterialType::MetallicRoughness, below);
+    metal.metallic = 1.0f;
+    EXPECT_TRUE(isGlossyCasterMaterial(metal, none));
+    metal.metallic = 0.5f;
+    EXPECT_FALSE(isGlossyCasterMaterial(metal, none)) << "part plastic";
+    // A roughness map that takes a rough factor below the threshold somewhere.
+    Material mapped = material(MaterialType::Conductor, 1.0f);
+    mapped.metallicRoughnessTexture = 0;
+    Texture map;
+    map.image.width = 2;
+    map.image.height = 1;
+    map.image.texels = {0, 255, 0, 255, 0, 255, 0, 255};
+    EXPECT_FALSE(isGlossyCasterMaterial(mapped, {map}));
+    map.image.texels[5] = 20;
+    EXPECT_TRUE(isGlossyCasterMaterial(mapped, {map}));
+}
+
 // Twelve caster materials scattered over a room (more than kMaxCausticCasters: merged), diffuse ones
 // among them, and an instanced glass mesh placed twice.
 TEST(CausticCasters, EveryCasterVertexIsInsideASphere) {

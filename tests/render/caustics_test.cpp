@@ -9,6 +9,7 @@
 #include <cstdio>
 
 #include "core/error.h"
+#include "pack/caustic_casters.h"
 #include "render_test_util.h"
 
 namespace fp::test {
@@ -54,9 +55,36 @@ TEST(Caustics, LightPassAddsUpToCameraPathsWithMirrorsAndSmoothCoats) {
     }
 }
 
+// A gold sphere of roughness 0.2 in the Cornell box: a glossy caster (bsdf.glsl, isGlossyCaster). The
+// light its highlight throws on the walls and the floor (x1 smooth, x2 on the metal, then the lamp) is
+// the light pass's, found by light paths that bounce off the metal; the camera pass leaves those paths
+// out, whether its BSDF sample at x2 reaches the lamp or its light sample at x2 does. Together the two
+// must give the image of camera paths alone.
+TEST(Caustics, LightPassAddsUpToCameraPathsWithAGlossyMetal) {
+    ensureGlContext();
+    Scene scene = builtinCornellBox();
+    Material gold;
+    gold.name = "gold";
+    gold.type = MaterialType::Conductor;
+    gold.specular = glm::vec3(1.0f, 0.78f, 0.34f);
+    gold.roughness = 0.95f * kGlossyCasterRoughness;
+    scene.materials.push_back(gold);
+    appendSphere(scene, {370.0f, 120.0f, 300.0f}, 120.0f, 12, 24, uint32_t(scene.materials.size() - 1), true);
+    Accumulation light = renderNee(scene, Caustics::Light, 32, 1024, 5, 1);
+    Accumulation path = renderNee(scene, Caustics::Path, 32, 1024, 5, 2);
+    expectSameImage(light, path, 4, 0.02f, "a glossy metal: light pass against camera paths");
+    // Those paths alone (about 1 % of the light above, too little for the whole image to tell), both
+    // passes restricted to them by a test define (in rng.glsl, which both include first).
+    ShaderLibrary only = shadersWithDefine("common/rng.glsl", "NEE_ONLY_LIGHT_PASS_PATHS", "1");
+    Accumulation lightOnly = renderNee(scene, Caustics::Light, 64, 1024, 5, 1, only);
+    Accumulation pathOnly = renderNee(scene, Caustics::Path, 64, 2048, 5, 2, only);
+    expectSameImage(lightOnly, pathOnly, 8, 0.1f, "a glossy metal's caustics: light pass against camera paths");
+    EXPECT_GT(meanColor(pathOnly.mean(), PixelRect{0, 0, 64, 64}).x, 0.001f) << "no such light to compare";
+}
+
 // The light a caustic sends on: x1 .. x_j (j = 2, 3) sample smooth lobes and x_{j+1} .. x_m delta ones
 // before the light (cornellWithDeltaSurfaces: a wall lit by the patch of light the red mirror, or a smooth
-// coat, throws on another wall, directly or by way of a third). With NEE_ONLY_CAUSTICS_SENT_ON both passes
+// coat, throws on another wall, directly or by way of a third). With NEE_ONLY_LIGHT_PASS_PATHS 2 both passes
 // estimate those paths alone: camera paths when x_j's BSDF sample reaches the light through the delta
 // vertices, the light pass by light paths that bounce on past the caustic's receiver (bdpt_subpaths.glsl,
 // causticStrategy). The two must agree block by block. Fails (seen) with the camera pass keeping these
@@ -66,7 +94,7 @@ TEST(Caustics, LightPassFindsTheLightCausticsSendOnAsCameraPathsDo) {
     ensureGlContext();
     Scene scene = cornellWithDeltaSurfaces();
     // (in rng.glsl, which both passes include first)
-    ShaderLibrary only = shadersWithDefine("common/rng.glsl", "NEE_ONLY_CAUSTICS_SENT_ON", "1");
+    ShaderLibrary only = shadersWithDefine("common/rng.glsl", "NEE_ONLY_LIGHT_PASS_PATHS", "2");
     Accumulation light = renderNee(scene, Caustics::Light, 32, 4096, 5, 1, only);
     Accumulation path = renderNee(scene, Caustics::Path, 32, 4096, 5, 2, only);
     expectSameImage(light, path, 4, 0.1f, "caustics sent on, light pass against camera paths");
