@@ -82,8 +82,9 @@ std::vector<OptionGroup> requestOptionGroups(unsigned options, const FrontEndDef
                  sceneOr + lightSelectionName(builtIn.lightSelection) + ")"});
         path.options.push_back(
             {"--caustics", "", "NAME",
-             "auto: light where glass or mirrors meet a light | path: camera paths\nalone | light: "
-             "light paths traced to glass and mirrors, joined to\nthe camera (nee) (default: " +
+             "auto: light where glass, mirrors or glossy metals meet a light | path:\ncamera paths "
+             "alone | light: light paths traced to glass, mirrors and\nglossy metals, joined to the "
+             "camera (nee) (default: " +
                  sceneOr + causticsName(builtIn.caustics) + ")"});
         path.options.push_back({"--clamp-indirect", "", "X",
                                 "scale each sample's indirect light down to at most X per channel:\nfewer "

@@ -178,9 +178,9 @@ void samplingSettings(ViewerControls& c) {
         enumCombo("caustics", c.render.caustics, kAllCaustics, causticsName);
         if (ImGui::IsItemHovered())
             ImGui::SetTooltip(
-                "light through glass or off a mirror onto a surface the camera sees: path: found by\n"
-                "camera paths alone | light: by light paths aimed at the glass | auto: light where\n"
-                "the scene has glass or mirrors (and no clamp)");
+                "light through glass or off a mirror or glossy metal onto a surface the camera sees:\n"
+                "path: found by camera paths alone | light: by light paths aimed at the glass |\n"
+                "auto: light where the scene has glass, mirrors or glossy metals (and no clamp)");
     }
     if (c.render.integrator == Integrator::Bdpt) {
         c.render.clampIndirect = 0.0f;  // bdpt has no clamp (its strategies share paths)
