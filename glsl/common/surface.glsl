@@ -190,15 +190,18 @@ BounceNumbers drawBounceNumbers(int depth) {
 // refraction scales radiance (bsdf.glsl), which the path's leaving the glass undoes in beta too. On beta
 // alone the roulette stopped more than half of the paths inside glass (1/1.5^2 = 0.44) and gave the
 // survivors 2.25 times the weight: no bias, but the glass sphere of assets/cornell_spheres was noisier
-// than Cycles' (docs/optimisation-log.md, "The roulette inside glass"). u: drawBounceNumbers'.
+// than Cycles'. Nor does it play at a delta bounce (`delta`: a mirror, smooth glass), which changes beta
+// by little more than Fresnel's share: a path through a glass ball waits for its next scattering
+// vertex, where the roulette weighs what the path really carries (docs/optimisation-log.md, "The
+// roulette inside glass"). u: drawBounceNumbers'.
 int gBounces = 0;  // bounces the current path survived, for the bounces view
 
 // The factor by which a BSDF sample scales etaScale: eta^2 for a refraction, which alone of the lobes
 // goes below the surface (bsdfSample's wo is above it), else 1.
 float refractionScale(BsdfSample bs, Surface s) { return bs.wi.z < 0.0 ? s.eta * s.eta : 1.0; }
 
-bool survivesRoulette(inout vec3 beta, float etaScale, int depth, float u) {
-    if (depth >= kRouletteDepth) {
+bool survivesRoulette(inout vec3 beta, float etaScale, bool delta, int depth, float u) {
+    if (depth >= kRouletteDepth && !delta) {
         float keep = min(1.0, max(beta.r, max(beta.g, beta.b)) * etaScale);
         if (u >= keep) return false;
         beta /= keep;

@@ -222,7 +222,7 @@ vec3 radiance(Ray ray) {
             if (t >= 3) gCamera[t - 2].pdfRev = toArea(vertexPdf(z, s.material, dir, -ray.dir), z.p, gCamera[t - 2]);
             pdfDir = bs.pdf;
         }
-        if (!survivesRoulette(beta, etaScale, depth, u.roulette)) break;
+        if (!survivesRoulette(beta, etaScale, bs.delta, depth, u.roulette)) break;
         ray = spawnRay(s, dir);
     }
     return L;

@@ -23,7 +23,7 @@ vec3 radiance(Ray ray) {
         if (!sameSide(s, bs.wi, dir)) break;
         beta *= bs.weight;
         etaScale *= refractionScale(bs, s);
-        if (!survivesRoulette(beta, etaScale, depth, u.roulette)) break;
+        if (!survivesRoulette(beta, etaScale, bs.delta, depth, u.roulette)) break;
         ray = spawnRay(s, dir);
     }
     return L + takeIndirect();

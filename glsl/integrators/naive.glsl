@@ -19,6 +19,7 @@ vec3 radiance(Ray ray) {
         // The view direction below the shading normal: f = 0, as in the other integrators.
         if (dot(-ray.dir, s.shadingNormal) <= 0.0) break;
         vec3 dir;
+        bool delta = false;
         BounceNumbers u = drawBounceNumbers(depth);
         if (s.material.type == MATERIAL_DIFFUSE) {
             dir = sampleUniformHemisphere(s.shadingNormal, u.bsdf.xy);
@@ -31,8 +32,9 @@ vec3 radiance(Ray ray) {
             if (!sameSide(s, bs.wi, dir)) break;
             beta *= bs.weight;
             etaScale *= refractionScale(bs, s);
+            delta = bs.delta;
         }
-        if (!survivesRoulette(beta, etaScale, depth, u.roulette)) break;
+        if (!survivesRoulette(beta, etaScale, delta, depth, u.roulette)) break;
         ray = spawnRay(s, dir);
     }
     // Light is found only where a path hits it, so point, spot and directional lights, which nothing can

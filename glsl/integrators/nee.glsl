@@ -103,7 +103,7 @@ vec3 radiance(Ray ray) {
             else
                 causticSmooth = -1;
         }
-        if (!survivesRoulette(beta, etaScale, depth, u.roulette)) break;
+        if (!survivesRoulette(beta, etaScale, bs.delta, depth, u.roulette)) break;
         ray = spawnRay(s, dir);
     }
     return L + takeIndirect();
