@@ -36,7 +36,7 @@ plot 'study.csv' every ::1 using (strcol(1) eq 'cornell' && strcol(2) eq 'naive'
 set output 'cornell_error_vs_time.png'
 set title 'cornell: error against render time (this machine; median of the runs)'
 set xlabel 'render + denoise time (ms)'
-set xrange [7.60061:15649.5]
+set xrange [4.65775:10680.4]
 set arrow 1 from budget_ms, graph 0 to budget_ms, graph 1 nohead lc 'red' dt 2 lw 2
 set label 1 '60 FPS frame budget (16.7 ms)' at budget_ms, graph 0.95 offset 0.5, 0 tc 'red'
 plot 'study.csv' every ::1 using (strcol(1) eq 'cornell' && strcol(2) eq 'naive' && strcol(3) eq 'none' ? 1000 * $8 : NaN):10 with linespoints lc 1 dt 1 pt 6 title 'naive', \
@@ -103,7 +103,7 @@ plot 'study.csv' every ::1 using (strcol(1) eq 'cornell-checker' && strcol(2) eq
 set output 'cornell-checker_error_vs_time.png'
 set title 'cornell-checker: error against render time (this machine; median of the runs)'
 set xlabel 'render + denoise time (ms)'
-set xrange [11.1111:14190.1]
+set xrange [6.93706:9012.55]
 set arrow 1 from budget_ms, graph 0 to budget_ms, graph 1 nohead lc 'red' dt 2 lw 2
 set label 1 '60 FPS frame budget (16.7 ms)' at budget_ms, graph 0.95 offset 0.5, 0 tc 'red'
 plot 'study.csv' every ::1 using (strcol(1) eq 'cornell-checker' && strcol(2) eq 'naive' && strcol(3) eq 'none' ? 1000 * $8 : NaN):10 with linespoints lc 1 dt 1 pt 6 title 'naive', \
@@ -145,7 +145,7 @@ plot 'study.csv' every ::1 using (strcol(1) eq 'cornell-checker' && strcol(2) eq
 # cornell-spheres
 threshold = 0.0004  # relative MSE under which the report calls an image not noisy
 budget_ms = 16.6667  # one frame at 60 FPS
-set yrange [0.0002:56.1095]
+set yrange [0.0002:51.3224]
 set logscale xy
 
 set output 'cornell-spheres_error_vs_spp.png'
@@ -170,7 +170,7 @@ plot 'study.csv' every ::1 using (strcol(1) eq 'cornell-spheres' && strcol(2) eq
 set output 'cornell-spheres_error_vs_time.png'
 set title 'cornell-spheres: error against render time (this machine; median of the runs)'
 set xlabel 'render + denoise time (ms)'
-set xrange [11.1111:21009.4]
+set xrange [11.1111:12283.7]
 set arrow 1 from budget_ms, graph 0 to budget_ms, graph 1 nohead lc 'red' dt 2 lw 2
 set label 1 '60 FPS frame budget (16.7 ms)' at budget_ms, graph 0.95 offset 0.5, 0 tc 'red'
 plot 'study.csv' every ::1 using (strcol(1) eq 'cornell-spheres' && strcol(2) eq 'naive' && strcol(3) eq 'none' ? 1000 * $8 : NaN):10 with linespoints lc 1 dt 1 pt 6 title 'naive', \
@@ -237,7 +237,7 @@ plot 'study.csv' every ::1 using (strcol(1) eq 'environment' && strcol(2) eq 'na
 set output 'environment_error_vs_time.png'
 set title 'environment: error against render time (this machine; median of the runs)'
 set xlabel 'render + denoise time (ms)'
-set xrange [8.26281:4318.05]
+set xrange [8.03725:2783.17]
 set arrow 1 from budget_ms, graph 0 to budget_ms, graph 1 nohead lc 'red' dt 2 lw 2
 set label 1 '60 FPS frame budget (16.7 ms)' at budget_ms, graph 0.95 offset 0.5, 0 tc 'red'
 plot 'study.csv' every ::1 using (strcol(1) eq 'environment' && strcol(2) eq 'naive' && strcol(3) eq 'none' ? 1000 * $8 : NaN):10 with linespoints lc 1 dt 1 pt 6 title 'naive', \
@@ -304,7 +304,7 @@ plot 'study.csv' every ::1 using (strcol(1) eq 'sphere-1m' && strcol(2) eq 'naiv
 set output 'sphere-1m_error_vs_time.png'
 set title 'sphere-1m: error against render time (this machine; median of the runs)'
 set xlabel 'render + denoise time (ms)'
-set xrange [11.1111:26088.4]
+set xrange [11.1111:15692.3]
 set arrow 1 from budget_ms, graph 0 to budget_ms, graph 1 nohead lc 'red' dt 2 lw 2
 set label 1 '60 FPS frame budget (16.7 ms)' at budget_ms, graph 0.95 offset 0.5, 0 tc 'red'
 plot 'study.csv' every ::1 using (strcol(1) eq 'sphere-1m' && strcol(2) eq 'naive' && strcol(3) eq 'none' ? 1000 * $8 : NaN):10 with linespoints lc 1 dt 1 pt 6 title 'naive', \
@@ -346,7 +346,7 @@ plot 'study.csv' every ::1 using (strcol(1) eq 'sphere-1m' && strcol(2) eq 'naiv
 # gltf-showcase
 threshold = 0.0004  # relative MSE under which the report calls an image not noisy
 budget_ms = 16.6667  # one frame at 60 FPS
-set yrange [0.0002:4.20168]
+set yrange [0.0002:4.15851]
 set logscale xy
 
 set output 'gltf-showcase_error_vs_spp.png'
@@ -371,7 +371,7 @@ plot 'study.csv' every ::1 using (strcol(1) eq 'gltf-showcase' && strcol(2) eq '
 set output 'gltf-showcase_error_vs_time.png'
 set title 'gltf-showcase: error against render time (this machine; median of the runs)'
 set xlabel 'render + denoise time (ms)'
-set xrange [11.1111:24516.7]
+set xrange [11.1111:10335.3]
 set arrow 1 from budget_ms, graph 0 to budget_ms, graph 1 nohead lc 'red' dt 2 lw 2
 set label 1 '60 FPS frame budget (16.7 ms)' at budget_ms, graph 0.95 offset 0.5, 0 tc 'red'
 plot 'study.csv' every ::1 using (strcol(1) eq 'gltf-showcase' && strcol(2) eq 'naive' && strcol(3) eq 'none' ? 1000 * $8 : NaN):10 with linespoints lc 1 dt 1 pt 6 title 'naive', \

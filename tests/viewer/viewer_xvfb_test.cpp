@@ -258,7 +258,10 @@ TEST_F(ViewerXvfb, TakesTheSceneFilesDefaultsAndFlagsOverrideThem) {
 // - the filter's bias (edge-stopping weights do not preserve the mean): measured 6 % of the mean on this
 //   box at 10 frames of 1 spp, allowed 8 %, times the weight the output pass keeps on the filtered
 //   image, min(1, maxHistorySamples / N) <= 32 / frames (TemporalSettings' default cap).
-// Run at 10 and 100 frames: the longer run must also be closer (fails if the history never grows).
+// Run at 10 and 100 frames: the longer run's pixels must also be closer to the reference's, by half
+// (fails if the history never grows). Per pixel, not the image means: the means of both runs are within
+// the reference's own noise of it, so which of the two is closer is chance (it failed so under load),
+// while the pixels' noise falls as the history grows (RMSE 0.03-0.11 at 10 frames, 0.010 at 100).
 TEST_F(ViewerXvfb, RealtimeModeConvergesToTheProgressiveImage) {
     auto luma = [](glm::vec3 c) { return 0.2126 * c.r + 0.7152 * c.g + 0.0722 * c.b; };
     auto shot = [&](const std::string& flags) {
@@ -283,20 +286,23 @@ TEST_F(ViewerXvfb, RealtimeModeConvergesToTheProgressiveImage) {
         Image rt =
             shot("--realtime --fps 30 --dynamic-resolution off --seed 3 --frames " + std::to_string(frames));
         ASSERT_EQ(rt.pixels.size(), ref.pixels.size());
-        double mean = 0.0;
-        for (const glm::vec3& p : rt.pixels) {
-            ASSERT_TRUE(std::isfinite(luma(p)));
-            mean += luma(p) / pixels;
+        double mean = 0.0, squaredError = 0.0;
+        for (size_t i = 0; i < rt.pixels.size(); ++i) {
+            ASSERT_TRUE(std::isfinite(luma(rt.pixels[i])));
+            mean += luma(rt.pixels[i]) / pixels;
+            double d = luma(rt.pixels[i]) - luma(ref.pixels[i]);
+            squaredError += d * d / pixels;
         }
         double se = std::sqrt(s2 / (double(frames) * pixels) + s2 / (64.0 * pixels));
         double tolerance = 4.0 * se + 0.08 * std::min(1.0, 32.0 / frames) * refMean;
+        double error = std::sqrt(squaredError);
         std::printf(
-            "%d frames: real-time mean %.5f, progressive %.5f, tolerance %.5f (standard error %.5f)\n",
-            frames, mean, refMean, tolerance, se);
+            "%d frames: real-time mean %.5f, progressive %.5f, tolerance %.5f (standard error %.5f); "
+            "pixels' RMSE against it %.5f\n",
+            frames, mean, refMean, tolerance, se, error);
         EXPECT_GT(mean, 0.05);  // not black
         EXPECT_NEAR(mean, refMean, tolerance) << frames << " frames";
-        double error = std::abs(mean - refMean);
-        EXPECT_LT(error, previousError) << frames << " frames";
+        EXPECT_LT(error, 0.5 * previousError) << frames << " frames";
         previousError = error;
     }
 }
