@@ -73,8 +73,7 @@ std::vector<glm::vec4> causticCasterSpheres(const Scene& scene) {
     // World triangles, one sphere per material.
     std::map<uint32_t, std::pair<Aabb, std::vector<glm::vec3>>> byMaterial;
     for (const Triangle& t : scene.triangles) {
-        if (t.material >= scene.materials.size() ||
-            !isCaster(scene.materials[t.material], scene.textures))
+        if (t.material >= scene.materials.size() || !isCaster(scene.materials[t.material], scene.textures))
             continue;
         auto& [box, points] = byMaterial[t.material];
         for (const glm::vec3& p : t.p) {
@@ -88,8 +87,7 @@ std::vector<glm::vec4> causticCasterSpheres(const Scene& scene) {
     std::vector<Aabb> meshCasters(scene.meshes.size());
     for (size_t i = 0; i < scene.meshes.size(); ++i)
         for (const Triangle& t : scene.meshes[i].triangles)
-            if (t.material < scene.materials.size() &&
-                isCaster(scene.materials[t.material], scene.textures))
+            if (t.material < scene.materials.size() && isCaster(scene.materials[t.material], scene.textures))
                 meshCasters[i].grow(t.bounds());
     for (const Instance& instance : scene.instances)
         if (instance.mesh < meshCasters.size() && !meshCasters[instance.mesh].empty())

@@ -33,8 +33,8 @@ bool hasDeltaLobe(const Material& m, const std::vector<Texture>& textures);
 // scaled by its map as in hasDeltaLobe, can fall below kGlossyCasterRoughness.
 bool isGlossyCasterMaterial(const Material& m, const std::vector<Texture>& textures);
 
-// (centre, radius) spheres that together hold every triangle of a caster material (either of the above), world
-// triangles and instances' alike; empty when there is none. One sphere per such material (per instance
+// (centre, radius) spheres that together hold every triangle of a caster material (either of the above),
+// world triangles and instances' alike; empty when there is none. One sphere per such material (per instance
 // for instanced meshes), centred on its box; while there are more than kMaxCausticCasters, the two whose
 // union is smallest are merged (over 64, all of them into one).
 std::vector<glm::vec4> causticCasterSpheres(const Scene& scene);

@@ -78,7 +78,8 @@ TEST(Caustics, LightPassAddsUpToCameraPathsWithAGlossyMetal) {
     ShaderLibrary only = shadersWithDefine("common/rng.glsl", "NEE_ONLY_LIGHT_PASS_PATHS", "1");
     Accumulation lightOnly = renderNee(scene, Caustics::Light, 64, 1024, 5, 1, only);
     Accumulation pathOnly = renderNee(scene, Caustics::Path, 64, 2048, 5, 2, only);
-    expectSameImage(lightOnly, pathOnly, 8, 0.1f, "a glossy metal's caustics: light pass against camera paths");
+    expectSameImage(lightOnly, pathOnly, 8, 0.1f,
+                    "a glossy metal's caustics: light pass against camera paths");
     EXPECT_GT(meanColor(pathOnly.mean(), PixelRect{0, 0, 64, 64}).x, 0.001f) << "no such light to compare";
 }
 
