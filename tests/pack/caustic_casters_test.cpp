@@ -18,6 +18,15 @@ Material material(MaterialType type, float roughness) {
     return m;
 }
 
+// A 2x1 metallic-roughness map whose G channel (the roughness factor's scale) is g0, g1 over 255.
+Texture roughnessMap(uint8_t g0, uint8_t g1) {
+    Texture map;
+    map.image.width = 2;
+    map.image.height = 1;
+    map.image.texels = {0, g0, 0, 255, 0, g1, 0, 255};
+    return map;
+}
+
 bool insideSome(const std::vector<glm::vec4>& spheres, const glm::vec3& p) {
     for (const glm::vec4& s : spheres)
         if (glm::length(p - glm::vec3(s)) <= s.w * (1.0f + 1e-5f) + 1e-6f) return true;
@@ -36,13 +45,8 @@ TEST(CausticCasters, DeltaLobesAreSmoothSpecularLobesOrMappedOnesThatReachSmooth
     // texel of G 1 takes it to 0.004, smooth.
     Material mapped = material(MaterialType::MetallicRoughness, 1.0f);
     mapped.metallicRoughnessTexture = 0;
-    Texture map;
-    map.image.width = 2;
-    map.image.height = 1;
-    map.image.texels = {0, 128, 0, 255, 0, 128, 0, 255};
-    EXPECT_FALSE(hasDeltaLobe(mapped, {map}));
-    map.image.texels[5] = 1;
-    EXPECT_TRUE(hasDeltaLobe(mapped, {map}));
+    EXPECT_FALSE(hasDeltaLobe(mapped, {roughnessMap(128, 128)}));
+    EXPECT_TRUE(hasDeltaLobe(mapped, {roughnessMap(128, 1)}));
     EXPECT_TRUE(hasDeltaLobe(mapped, none)) << "a map that is not there";
 }
 
@@ -62,13 +66,8 @@ TEST(CausticCasters, GlossyCastersAreMetalsBelowTheRoughnessThreshold) {
     // A roughness map that takes a rough factor below the threshold somewhere.
     Material mapped = material(MaterialType::Conductor, 1.0f);
     mapped.metallicRoughnessTexture = 0;
-    Texture map;
-    map.image.width = 2;
-    map.image.height = 1;
-    map.image.texels = {0, 255, 0, 255, 0, 255, 0, 255};
-    EXPECT_FALSE(isGlossyCasterMaterial(mapped, {map}));
-    map.image.texels[5] = 20;
-    EXPECT_TRUE(isGlossyCasterMaterial(mapped, {map}));
+    EXPECT_FALSE(isGlossyCasterMaterial(mapped, {roughnessMap(255, 255)}));
+    EXPECT_TRUE(isGlossyCasterMaterial(mapped, {roughnessMap(255, 20)}));
 }
 
 // Twelve caster materials scattered over a room (more than kMaxCausticCasters: merged), diffuse ones

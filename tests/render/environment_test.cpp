@@ -76,14 +76,20 @@ TEST(WhiteFurnace, ConvexLambertianSphereShowsItsAlbedo) {
         expectFurnace(sphereInFurnace(m, false), integrator, 0.5f, 5);
 }
 
-// Depth 1000, not 100: total internal reflection between the flat facets traps some light for long
-// (at depth 100 nee measured 0.9979 over the whole image, 0.9999 at 300, 1.0000 at 1000).
-TEST(WhiteFurnace, SmoothGlassSphereShowsExactlyTheEnvironment) {
+// Smooth glass of index 1.5 that lets `transmission` of the light through at each refraction.
+Material smoothGlass(float transmission) {
     Material glass;
     glass.type = MaterialType::Dielectric;
     glass.ior = 1.5f;
     glass.roughness = 0.0f;
-    glass.transmission = glm::vec3(1.0f);
+    glass.transmission = glm::vec3(transmission);
+    return glass;
+}
+
+// Depth 1000, not 100: total internal reflection between the flat facets traps some light for long
+// (at depth 100 nee measured 0.9979 over the whole image, 0.9999 at 300, 1.0000 at 1000).
+TEST(WhiteFurnace, SmoothGlassSphereShowsExactlyTheEnvironment) {
+    Material glass = smoothGlass(1.0f);
     for (Integrator integrator : {Integrator::Bsdf, Integrator::Nee})
         expectFurnace(sphereInFurnace(glass, false), integrator, 1.0f, 1000);
 }
@@ -93,11 +99,7 @@ TEST(WhiteFurnace, SmoothGlassSphereShowsExactlyTheEnvironment) {
 // every sample is 1. (On beta alone the roulette stopped more than half of the paths inside the glass from
 // depth 3 on and gave the survivors 2.25 times the weight: the sphere's mean stays 1, but its pixels vary.)
 TEST(WhiteFurnace, RouletteStopsNoPathThroughLosslessGlass) {
-    Material glass;
-    glass.type = MaterialType::Dielectric;
-    glass.ior = 1.5f;
-    glass.roughness = 0.0f;
-    glass.transmission = glm::vec3(1.0f);
+    Material glass = smoothGlass(1.0f);
     for (Integrator integrator : {Integrator::Naive, Integrator::Bsdf, Integrator::Nee}) {
         SphereMean m = sphereMean(sphereInFurnace(glass, false), integrator, 1000);
         for (int c = 0; c < 3; ++c) {
@@ -117,12 +119,7 @@ TEST(WhiteFurnace, RouletteWaitsForAScatteringVertex) {
     for (Integrator integrator : {Integrator::Naive, Integrator::Bsdf, Integrator::Nee}) {
         std::vector<double> rays;
         for (float transmission : {1.0f, 0.5f}) {
-            Material glass;
-            glass.type = MaterialType::Dielectric;
-            glass.ior = 1.5f;
-            glass.roughness = 0.0f;
-            glass.transmission = glm::vec3(transmission);
-            Renderer renderer(sphereInFurnace(glass, false), testShaders());
+            Renderer renderer(sphereInFurnace(smoothGlass(transmission), false), testShaders());
             Accumulation acc = renderScene(renderer, outsideCamera(), integrator, 32, 16, 1000);
             double total = 0.0;
             for (const glm::vec4& c : acc.counters) total += double(c.x);
@@ -137,9 +134,7 @@ TEST(WhiteFurnace, RouletteWaitsForAScatteringVertex) {
 
 TEST(WhiteFurnace, DispersiveGlassSphereStillShowsExactlyTheEnvironment) {
     // One wavelength per path, weighed back to RGB: unbiased only if the weights average to 1 per channel.
-    Material glass;
-    glass.type = MaterialType::Dielectric;
-    glass.ior = 1.5f;
+    Material glass = smoothGlass(1.0f);
     glass.abbeNumber = 20.0f;  // strongly dispersive
     for (Integrator integrator : {Integrator::Bsdf, Integrator::Nee})
         expectFurnace(sphereInFurnace(glass, false), integrator, 1.0f, 1000);
