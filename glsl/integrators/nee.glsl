@@ -17,6 +17,12 @@
 // pass sums exactly these paths, with m + 1 <= LIGHT_RECORDS (its light subpaths' length,
 // bdpt_subpaths.glsl), and this integrator leaves exactly those out, whether it would find them by a BSDF
 // sample or, at a glossy caster x_m, by a light sample; so their sum is unbiased without weights.
+// Whether a path of `smoothVertices` smooth vertices x1 .. x_j, then casters' lobes, reaching an emitter at
+// `emitterDepth` is one the light pass sums.
+bool lightPassSums(int smoothVertices, int emitterDepth) {
+    return smoothVertices >= 1 && smoothVertices <= CAUSTIC_SMOOTH_BOUNCES && emitterDepth < LIGHT_RECORDS;
+}
+
 vec3 radiance(Ray ray) {
     vec3 L = vec3(0.0), beta = vec3(1.0);
     float etaScale = 1.0;  // for the roulette (survivesRoulette)
@@ -40,8 +46,7 @@ vec3 radiance(Ray ray) {
         applyDispersion(s, beta);
         vec3 Le = emittedRadiance(s);
         // Whether the light pass sums this path, should it end on an emitter here.
-        bool lightPassPath = causticCast && causticSmooth >= 1 && causticSmooth <= CAUSTIC_SMOOTH_BOUNCES &&
-                             depth < LIGHT_RECORDS;
+        bool lightPassPath = causticCast && lightPassSums(causticSmooth, depth);
 #if CAUSTICS_LIGHT_TRACED
         if (lightPassPath) Le = vec3(0.0);  // the light pass's
 #endif
@@ -58,8 +63,7 @@ vec3 radiance(Ray ray) {
         vec3 wo = toLocal(s, -ray.dir);
         // A light sample at a glossy caster after smooth vertices (x_m above, the light x_{m+1} at depth +
         // 1) closes a path the light pass sums.
-        bool lightPassSample = isGlossyCaster(s.material) && causticSmooth >= 1 &&
-                               causticSmooth <= CAUSTIC_SMOOTH_BOUNCES && depth + 1 < LIGHT_RECORDS;
+        bool lightPassSample = isGlossyCaster(s.material) && lightPassSums(causticSmooth, depth + 1);
         bool lightSample = !isDeltaOnly(s.material);
 #if CAUSTICS_LIGHT_TRACED
         lightSample = lightSample && !lightPassSample;  // the light pass's

@@ -44,6 +44,10 @@ float smallestRoughness(const Material& m, const std::vector<Texture>& textures)
     return m.roughness * float(g) / 255.0f;
 }
 
+bool isCaster(const Material& m, const std::vector<Texture>& textures) {
+    return hasDeltaLobe(m, textures) || isGlossyCasterMaterial(m, textures);
+}
+
 }  // namespace
 
 bool hasDeltaLobe(const Material& m, const std::vector<Texture>& textures) {
@@ -59,14 +63,6 @@ bool isGlossyCasterMaterial(const Material& m, const std::vector<Texture>& textu
     // A margin of one texel's step over the threshold, for the same reason as hasDeltaLobe's.
     return metal && smallestRoughness(m, textures) < kGlossyCasterRoughness + 1.0f / 255.0f;
 }
-
-namespace {
-
-bool isCaster(const Material& m, const std::vector<Texture>& textures) {
-    return hasDeltaLobe(m, textures) || isGlossyCasterMaterial(m, textures);
-}
-
-}  // namespace
 
 std::vector<glm::vec4> causticCasterSpheres(const Scene& scene) {
     std::vector<glm::vec4> spheres;

@@ -55,11 +55,11 @@ TEST(Caustics, LightPassAddsUpToCameraPathsWithMirrorsAndSmoothCoats) {
     }
 }
 
-// A gold sphere of roughness 0.2 in the Cornell box: a glossy caster (bsdf.glsl, isGlossyCaster). The
-// light its highlight throws on the walls and the floor (x1 smooth, x2 on the metal, then the lamp) is
-// the light pass's, found by light paths that bounce off the metal; the camera pass leaves those paths
-// out, whether its BSDF sample at x2 reaches the lamp or its light sample at x2 does. Together the two
-// must give the image of camera paths alone.
+// A gold sphere just under the glossy casters' roughness in the Cornell box: a glossy caster (bsdf.glsl,
+// isGlossyCaster). The light its highlight throws on the walls and the floor (x1 smooth, x2 on the metal,
+// then the lamp) is the light pass's, found by light paths that bounce off the metal; the camera pass
+// leaves those paths out, whether its BSDF sample at x2 reaches the lamp or its light sample at x2 does.
+// Together the two must give the image of camera paths alone.
 TEST(Caustics, LightPassAddsUpToCameraPathsWithAGlossyMetal) {
     ensureGlContext();
     Scene scene = builtinCornellBox();
