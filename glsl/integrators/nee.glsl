@@ -23,92 +23,117 @@ bool lightPassSums(int smoothVertices, int emitterDepth) {
     return smoothVertices >= 1 && smoothVertices <= CAUSTIC_SMOOTH_BOUNCES && emitterDepth < LIGHT_RECORDS;
 }
 
-vec3 radiance(Ray ray) {
-    vec3 L = vec3(0.0), beta = vec3(1.0);
-    float etaScale = 1.0;  // for the roulette (survivesRoulette)
-    float lastPdf = 0.0;      // solid-angle density of the direction that led here
-    vec3 lastPosition = ray.origin;  // the vertex it left from, where sampleLight would have sampled
-    vec3 lastNormal = vec3(0.0, 0.0, 1.0);  // its shading normal (the light tree's choice depends on it)
-    bool fullWeight = true;  // camera rays and delta bounces: no light sample competed
+// A camera path as it is extended vertex by vertex: what the path carries from one vertex to the next. The
+// pass (passes/trace.frag.glsl) extends the paths of its samples one after another with no gap between
+// them (PATH_SEGMENTS), and radiance() below traces one whole path.
+#define PATH_SEGMENTS 1
+struct CameraPath {
+    Ray ray;       // the next segment's
+    int depth;     // the vertex the next segment reaches: 0 the first hit
+    vec3 L, beta;  // the light found so far, and the throughput up to the ray's origin
+    float etaScale;  // for the roulette (survivesRoulette)
+    float lastPdf;   // solid-angle density of the ray's direction
+    vec3 lastPosition;  // the vertex it left from, where sampleLight would have sampled
+    vec3 lastNormal;    // its shading normal (the light tree's choice depends on it)
+    bool fullWeight;    // camera rays and delta bounces: no light sample competed
     // The path so far, for the light pass's split: x1 .. x_j sampled smooth lobes (j = causticSmooth), and
     // once causticCast, every vertex since x_{j+1} a caster's lobe. -1: not such a path (x1 sampled a
     // caster's lobe, or a smooth lobe came after one).
-    int causticSmooth = 0;
-    bool causticCast = false;
-    for (int depth = 0;; ++depth) {
-        Hit hit;
-        if (!traceClosest(ray, hit)) {
-            vec3 Le = environmentRadiance(ray.dir);
-            addLight(L, beta * Le * (fullWeight ? 1.0 : powerHeuristic(lastPdf, environmentPdf(ray.dir))), depth);
-            break;
-        }
-        Surface s = surfaceAt(ray, hit);
-        applyDispersion(s, beta);
-        vec3 Le = emittedRadiance(s);
-        // Whether the light pass sums this path, should it end on an emitter here.
-        bool lightPassPath = causticCast && lightPassSums(causticSmooth, depth);
-#if CAUSTICS_LIGHT_TRACED
-        if (lightPassPath) Le = vec3(0.0);  // the light pass's
-#endif
-#ifdef NEE_ONLY_LIGHT_PASS_PATHS
-        // Test only (tests/render/caustics_test.cpp): nothing but the paths the light pass sums, with at
-        // least NEE_ONLY_LIGHT_PASS_PATHS smooth vertices (2: the light that caustics send on); so also
-        // for the light samples (below).
-        if (!lightPassPath || causticSmooth < NEE_ONLY_LIGHT_PASS_PATHS) Le = vec3(0.0);
-#endif
-        if (Le != vec3(0.0))
-            addLight(L, beta * Le * (fullWeight ? 1.0 : powerHeuristic(lastPdf, lightPdf(lastPosition, lastNormal, ray, hit))), depth);
-        if (depth == uMaxDepth) break;
+    int causticSmooth;
+    bool causticCast;
+};
 
-        vec3 wo = toLocal(s, -ray.dir);
-        // A light sample at a glossy caster after smooth vertices (x_m above, the light x_{m+1} at depth +
-        // 1) closes a path the light pass sums.
-        bool lightPassSample = isGlossyCaster(s.material) && lightPassSums(causticSmooth, depth + 1);
-        bool lightSample = !isDeltaOnly(s.material);
+CameraPath startPath(Ray ray) {
+    return CameraPath(ray, 0, vec3(0.0), vec3(1.0), 1.0, 0.0, ray.origin, vec3(0.0, 0.0, 1.0), true, 0, false);
+}
+
+// Traces the path's next segment and adds the light it finds at the vertex it reaches (hit, or by a light
+// sample there); then samples the direction of the segment after. False when the path has ended.
+bool extendPath(inout CameraPath p) {
+    Ray ray = p.ray;
+    int depth = p.depth;
+    Hit hit;
+    if (!traceClosest(ray, hit)) {
+        vec3 Le = environmentRadiance(ray.dir);
+        addLight(p.L, p.beta * Le * (p.fullWeight ? 1.0 : powerHeuristic(p.lastPdf, environmentPdf(ray.dir))), depth);
+        return false;
+    }
+    Surface s = surfaceAt(ray, hit);
+    applyDispersion(s, p.beta);
+    vec3 Le = emittedRadiance(s);
+    // Whether the light pass sums this path, should it end on an emitter here.
+    bool lightPassPath = p.causticCast && lightPassSums(p.causticSmooth, depth);
 #if CAUSTICS_LIGHT_TRACED
-        lightSample = lightSample && !lightPassSample;  // the light pass's
+    if (lightPassPath) Le = vec3(0.0);  // the light pass's
 #endif
 #ifdef NEE_ONLY_LIGHT_PASS_PATHS
-        lightSample = lightSample && lightPassSample && causticSmooth >= NEE_ONLY_LIGHT_PASS_PATHS;
+    // Test only (tests/render/caustics_test.cpp): nothing but the paths the light pass sums, with at
+    // least NEE_ONLY_LIGHT_PASS_PATHS smooth vertices (2: the light that caustics send on); so also
+    // for the light samples (below).
+    if (!lightPassPath || p.causticSmooth < NEE_ONLY_LIGHT_PASS_PATHS) Le = vec3(0.0);
 #endif
-        if (lightSample) {
-            LightSample ls = sampleLight(s.position, s.shadingNormal);
-            vec3 wi = toLocal(s, ls.dir);
-            if (ls.pdf > 0.0 && sameSide(s, wi, ls.dir)) {
-                vec3 f = bsdfEval(s.material, wo, wi, s.eta);
-                if (f != vec3(0.0) && lightVisible(s, ls)) {
-                    float w = ls.delta ? 1.0 : powerHeuristic(ls.pdf, bsdfPdf(s.material, wo, wi, s.eta));
-                    // A punctual light (point, spot, directional) is a delta light that only light
-                    // sampling can find: weight 1, as in pbrt-v4's PathIntegrator::SampleLd (section
-                    // 13.4). The light such a light sends through a mirror or smooth glass onto a diffuse
-                    // surface (a caustic) no camera path can find: the light pass does (above).
-                    addLight(L, beta * f * ls.radiance * w / ls.pdf, depth + 1);
-                }
+    if (Le != vec3(0.0))
+        addLight(p.L, p.beta * Le * (p.fullWeight ? 1.0 : powerHeuristic(p.lastPdf, lightPdf(p.lastPosition, p.lastNormal, ray, hit))), depth);
+    if (depth == uMaxDepth) return false;
+
+    vec3 wo = toLocal(s, -ray.dir);
+    // A light sample at a glossy caster after smooth vertices (x_m above, the light x_{m+1} at depth +
+    // 1) closes a path the light pass sums.
+    bool lightPassSample = isGlossyCaster(s.material) && lightPassSums(p.causticSmooth, depth + 1);
+    bool lightSample = !isDeltaOnly(s.material);
+#if CAUSTICS_LIGHT_TRACED
+    lightSample = lightSample && !lightPassSample;  // the light pass's
+#endif
+#ifdef NEE_ONLY_LIGHT_PASS_PATHS
+    lightSample = lightSample && lightPassSample && p.causticSmooth >= NEE_ONLY_LIGHT_PASS_PATHS;
+#endif
+    if (lightSample) {
+        LightSample ls = sampleLight(s.position, s.shadingNormal);
+        vec3 wi = toLocal(s, ls.dir);
+        if (ls.pdf > 0.0 && sameSide(s, wi, ls.dir)) {
+            vec3 f = bsdfEval(s.material, wo, wi, s.eta);
+            if (f != vec3(0.0) && lightVisible(s, ls)) {
+                float w = ls.delta ? 1.0 : powerHeuristic(ls.pdf, bsdfPdf(s.material, wo, wi, s.eta));
+                // A punctual light (point, spot, directional) is a delta light that only light
+                // sampling can find: weight 1, as in pbrt-v4's PathIntegrator::SampleLd (section
+                // 13.4). The light such a light sends through a mirror or smooth glass onto a diffuse
+                // surface (a caustic) no camera path can find: the light pass does (above).
+                addLight(p.L, p.beta * f * ls.radiance * w / ls.pdf, depth + 1);
             }
         }
-
-        BsdfSample bs;
-        BounceNumbers u = drawBounceNumbers(depth);
-        if (!bsdfSample(s.material, wo, u.bsdf, s.eta, bs)) break;
-        vec3 dir = toWorld(s, bs.wi);
-        if (!sameSide(s, bs.wi, dir)) break;
-        beta *= bs.weight;
-        etaScale *= refractionScale(bs, s);
-        lastPdf = bs.pdf;
-        lastPosition = s.position;
-        lastNormal = s.shadingNormal;
-        fullWeight = bs.delta;
-        if (causticSmooth >= 0) {
-            bool caster = casterLobe(bs, s.material);
-            if (!caster && !causticCast)
-                ++causticSmooth;
-            else if (caster && causticSmooth > 0)
-                causticCast = true;
-            else
-                causticSmooth = -1;
-        }
-        if (!survivesRoulette(beta, etaScale, bs.delta, depth, u.roulette)) break;
-        ray = spawnRay(s, dir);
     }
-    return L + takeIndirect();
+
+    BsdfSample bs;
+    BounceNumbers u = drawBounceNumbers(depth);
+    if (!bsdfSample(s.material, wo, u.bsdf, s.eta, bs)) return false;
+    vec3 dir = toWorld(s, bs.wi);
+    if (!sameSide(s, bs.wi, dir)) return false;
+    p.beta *= bs.weight;
+    p.etaScale *= refractionScale(bs, s);
+    p.lastPdf = bs.pdf;
+    p.lastPosition = s.position;
+    p.lastNormal = s.shadingNormal;
+    p.fullWeight = bs.delta;
+    if (p.causticSmooth >= 0) {
+        bool caster = casterLobe(bs, s.material);
+        if (!caster && !p.causticCast)
+            ++p.causticSmooth;
+        else if (caster && p.causticSmooth > 0)
+            p.causticCast = true;
+        else
+            p.causticSmooth = -1;
+    }
+    if (!survivesRoulette(p.beta, p.etaScale, bs.delta, depth, u.roulette)) return false;
+    p.ray = spawnRay(s, dir);
+    p.depth = depth + 1;
+    return true;
+}
+
+// The path's radiance estimate, once extendPath has ended it.
+vec3 pathRadiance(CameraPath p) { return p.L + takeIndirect(); }
+
+vec3 radiance(Ray ray) {
+    CameraPath p = startPath(ray);
+    while (extendPath(p)) {}
+    return pathRadiance(p);
 }

@@ -136,6 +136,31 @@ TEST_F(CornellBox, SamplesPerPassDoesNotChangeTheImage) {
         0);
 }
 
+TEST_F(CornellBox, RegeneratedPathsAreTheSamplesTracedOneByOne) {
+    // Without guides, nee's pass starts a pixel's next sample as soon as its path ends (path
+    // regeneration, passes/trace.frag.glsl); with them it traces the samples one by one through
+    // radiance(). Same samples, same bits, with many samples in a pass (their paths interleaved).
+    RenderSettings s;
+    s.width = s.height = kSize;
+    s.maxDepth = kDepth;
+    s.seed = 5;
+    s.samplesPerPass = RenderSettings::kMaxSamplesPerPass;
+    renderer_->configure(s, *scene_->camera);
+    renderer_->render(2 * s.samplesPerPass);
+    Accumulation regenerated = renderer_->readback();
+    s.guides = true;
+    renderer_->configure(s, *scene_->camera);
+    renderer_->render(2 * s.samplesPerPass);
+    Accumulation oneByOne = renderer_->readback();
+    ASSERT_EQ(regenerated.sum.size(), oneByOne.sum.size());
+    EXPECT_EQ(
+        std::memcmp(regenerated.sum.data(), oneByOne.sum.data(), regenerated.sum.size() * sizeof(glm::vec4)),
+        0);
+    EXPECT_EQ(std::memcmp(regenerated.squares.data(), oneByOne.squares.data(),
+                          regenerated.squares.size() * sizeof(glm::vec4)),
+              0);
+}
+
 TEST_F(CornellBox, EveryPixelGetsEverySampleItWasAskedFor) {
     // Guards the per-pass limit (RenderSettings::kMaxSamplesPerPass): llvmpipe ends long shader loops early.
     Accumulation acc = render(Integrator::Nee, 96);
