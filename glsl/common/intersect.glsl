@@ -2,6 +2,9 @@
 #ifndef BVH_STACK_SIZE
 #define BVH_STACK_SIZE 32
 #endif
+#if BVH_STACK_SIZE < 4 || BVH_STACK_SIZE > 259
+#error "BVH_STACK_SIZE must be 4 to 259 (shiftStack)"
+#endif
 const float INF = 1e30;
 float gRayCount = 0.0;  // rays traced by this pixel, for the rays/s figure
 int gNodesVisited = 0;  // BVH nodes and triangles the last traversal looked at, for the cost views
@@ -124,6 +127,49 @@ vec3 safeInverse(vec3 d) { return 1.0 / mix(d, vec3(1e-20), lessThan(abs(d), vec
 const uint kLeaveInstance = 0xFFFFFFFFu;
 #endif
 
+// The traversal stack is a shift register, its top in stack[0]: every entry is read and written at a
+// constant index, so llvmpipe keeps the stack in vector registers. An array indexed by each pixel's own
+// stack size is written one SIMD lane at a time, each lane's store behind a branch on its mask, and
+// those stores held a quarter of the glass scene's samples (docs/optimisation-log.md, "The traversal
+// stack as a shift register"): shifting all BVH_STACK_SIZE entries (the renderer sizes the stack to the
+// tree's depth, 3 entries a level: layout::traversalStackEntries) takes more instructions and 22-30 %
+// less time.
+// Moves the stack by d entries: pushes l1 .. ld (d = 1, 2, 3; l1 ends on top), pops the top (d = -1) or
+// keeps it (d = 0).
+void shiftStack(inout uint stack[BVH_STACK_SIZE], int d, uint l1, uint l2, uint l3) {
+    uint old[BVH_STACK_SIZE] = stack;
+    // In runs of 16 entries, each a loop of a constant count: the compiler unrolls a loop only up to
+    // about 32 iterations (Mesa's NIR), and a loop it keeps indexes the array at run time, one lane at a
+    // time. Sixteen runs: at most 259 entries (layout::kMaxTraversalStack).
+#define SHIFT_STACK_RUN(first)                                                     \
+    for (int i = first; i < min(first + 16, BVH_STACK_SIZE); ++i)                  \
+        stack[i] = d == 3   ? old[i - 3]                                           \
+                   : d == 2 ? old[i - 2]                                           \
+                   : d == 1 ? old[i - 1]                                           \
+                   : d == 0 ? old[i]                                               \
+                            : old[min(i + 1, BVH_STACK_SIZE - 1)];
+    SHIFT_STACK_RUN(3)
+    SHIFT_STACK_RUN(19)
+    SHIFT_STACK_RUN(35)
+    SHIFT_STACK_RUN(51)
+    SHIFT_STACK_RUN(67)
+    SHIFT_STACK_RUN(83)
+    SHIFT_STACK_RUN(99)
+    SHIFT_STACK_RUN(115)
+    SHIFT_STACK_RUN(131)
+    SHIFT_STACK_RUN(147)
+    SHIFT_STACK_RUN(163)
+    SHIFT_STACK_RUN(179)
+    SHIFT_STACK_RUN(195)
+    SHIFT_STACK_RUN(211)
+    SHIFT_STACK_RUN(227)
+    SHIFT_STACK_RUN(243)
+#undef SHIFT_STACK_RUN
+    stack[2] = d == 3 ? l3 : d == 2 ? old[0] : d == 1 ? old[1] : d == 0 ? old[2] : old[3];
+    stack[1] = d >= 2 ? l2 : d == 1 ? old[0] : d == 0 ? old[1] : old[2];
+    stack[0] = d >= 1 ? l1 : d == 0 ? old[0] : old[1];
+}
+
 bool traverse(Ray worldRay, float tMax, bool anyHit, out Hit hit) {
     hit = Hit(tMax, -1, vec2(0.0), -1);
     gRayCount += 1.0;
@@ -134,7 +180,7 @@ bool traverse(Ray worldRay, float tMax, bool anyHit, out Hit hit) {
 #endif
     Ray ray = worldRay;
     vec3 invDir = safeInverse(ray.dir);
-    uint stack[BVH_STACK_SIZE];
+    uint stack[BVH_STACK_SIZE];  // its top in stack[0] (shiftStack)
     int size = 0;
     uint node = 0u;
 #ifdef INSTANCE_NODES_START
@@ -155,7 +201,8 @@ bool traverse(Ray worldRay, float tMax, bool anyHit, out Hit hit) {
                       vec3(dot(r0.xyz, d), dot(r1.xyz, d), dot(r2.xyz, d)));
             invDir = safeInverse(ray.dir);
             gInstance = int(node);
-            stack[size++] = kLeaveInstance;
+            shiftStack(stack, 1, kLeaveInstance, 0u, 0u);
+            ++size;
             node = nodeTexel(base + 3).x;  // the root of its mesh's BVH
         }
 #endif
@@ -177,29 +224,24 @@ bool traverse(Ray worldRay, float tMax, bool anyHit, out Hit hit) {
         orderPair(t0, l0, t2, l2);
         orderPair(t1, l1, t3, l3);
         orderPair(t1, l1, t2, l2);
-        // The farther ones wait on the stack, farthest deepest; the stores need no branch, only the
-        // size depends on what was hit.
-        stack[size] = l3;
-        size += t3 < INF ? 1 : 0;
-        stack[size] = l2;
-        size += t2 < INF ? 1 : 0;
-        stack[size] = l1;
-        size += t1 < INF ? 1 : 0;
-        if (t0 < INF) {
-            node = l0;
-        } else {
-            if (size == 0) break;
-            node = stack[--size];
+        // The nearest is visited next and the farther ones wait on the stack, farthest deepest (the hit
+        // ones come first in the sorted order); with none hit, the top of the stack is next.
+        if (t0 == INF && size == 0) break;
+        node = t0 < INF ? l0 : stack[0];
+        int d = t0 < INF ? (t1 < INF ? 1 : 0) + (t2 < INF ? 1 : 0) + (t3 < INF ? 1 : 0) : -1;
+        shiftStack(stack, d, l1, l2, l3);
+        size += d;
 #ifdef INSTANCE_NODES_START
-            if (node == kLeaveInstance) {
-                ray = worldRay;
-                invDir = worldInvDir;
-                gInstance = -1;
-                if (size == 0) break;
-                node = stack[--size];
-            }
-#endif
+        if (node == kLeaveInstance) {
+            ray = worldRay;
+            invDir = worldInvDir;
+            gInstance = -1;
+            if (size == 0) break;
+            node = stack[0];
+            shiftStack(stack, -1, 0u, 0u, 0u);
+            --size;
         }
+#endif
     }
     return hit.triangle >= 0;
 }

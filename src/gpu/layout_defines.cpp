@@ -1,7 +1,9 @@
 #include "gpu/layout_defines.h"
 
+#include <algorithm>
 #include <string>
 
+#include "core/error.h"
 #include "pack/layout.h"
 
 namespace fp::layout {
@@ -41,6 +43,15 @@ ShaderDefines layoutDefines(bool images) {
         defines.emplace_back("SCENE_READS_IMAGES", "1");
     }
     return defines;
+}
+
+uint32_t traversalStackEntries(uint32_t bvhDepth) {
+    uint64_t entries = std::max<uint64_t>(4, 3 * uint64_t(bvhDepth) + 1);
+    if (entries > kMaxTraversalStack)
+        throw Error("the scene's BVH is " + std::to_string(bvhDepth) +
+                    " levels deep; the GPU traversal handles at most " +
+                    std::to_string((kMaxTraversalStack - 1) / 3) + " levels");
+    return uint32_t(entries);
 }
 
 }  // namespace fp::layout

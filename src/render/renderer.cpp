@@ -73,9 +73,7 @@ Renderer::Renderer(const Scene& scene, ShaderLibrary shaders, const BvhBuildOpti
     surfaceTextures_ = packed.hasTextures();
     surfaceMaps_ = packed.surfaceMaps;
     surfaceOpacity_ = packed.opacity;
-    // The traversal stack holds at most three entries (the hit siblings of the child it descends to)
-    // for each node on the way down from the root.
-    stats_.stackSize = std::max<uint32_t>(32, 3 * packed.bvhDepth + 1);
+    stats_.stackSize = layout::traversalStackEntries(packed.bvhDepth);
     lightCount_ = packed.lightCount;
     punctualCount_ = packed.punctualCount;
     lightTreeFirst_ = packed.lightTreeFirst;

@@ -5,6 +5,8 @@
 #include <random>
 
 #include "bvh/ray_query.h"
+#include "core/error.h"
+#include "gpu/layout_defines.h"
 #include "render_test_util.h"
 
 namespace fp::test {
@@ -45,7 +47,7 @@ fp::Ray pixelRay(const Camera& c, int x, int row, int size) {
 void expectDepthMatchesBruteForce(const Scene& scene, const Camera& camera) {
     ensureGlContext();
     const int size = 64;
-    Renderer renderer(scene);
+    Renderer renderer(scene, testShaders());
     RenderSettings settings;
     settings.width = settings.height = size;
     settings.view = View::Depth;
@@ -77,6 +79,29 @@ TEST(GpuTraversal, DeepTreeOfSmallTrianglesMatchesBruteForce) {
     expectDepthMatchesBruteForce(randomSoup(4000, 0.08f, 1), c);
 }
 
+TEST(GpuTraversal, PanesBehindACloudOfSpecksAreFoundDeepInTheStack) {
+    // Rays cross a cloud of tiny triangles, entering many boxes and hitting few, before a stack of
+    // small panes at staggered depths: the panes' subtrees wait at every depth of the stack while the
+    // cloud's are visited, so a stack that drops or mixes up any of its entries loses panes
+    // (intersect.glsl, shiftStack).
+    Scene s = randomSoup(6000, 0.004f, 5);
+    std::mt19937 rng(9);
+    std::uniform_real_distribution<float> u(-1.0f, 1.0f);
+    for (int k = 0; k < 400; ++k) {
+        glm::vec3 c(u(rng), u(rng), 1.2f + 0.5f * u(rng));
+        Triangle t;
+        t.p = {c + glm::vec3(-0.15f, -0.1f, 0.0f), c + glm::vec3(0.15f, -0.1f, 0.02f),
+               c + glm::vec3(0.0f, 0.15f, -0.02f)};
+        glm::vec3 n = glm::normalize(t.geometricNormal());
+        t.n = {n, n, n};
+        s.triangles.push_back(t);
+    }
+    Camera c;
+    c.eye = glm::vec3(0.1f, 0.05f, -4.0f);
+    c.fovY = 30.0f;
+    expectDepthMatchesBruteForce(s, c);
+}
+
 TEST(GpuTraversal, OverlappingLongTrianglesFromInsideMatchBruteForce) {
     // Large overlapping triangles make every box overlap its siblings: both children must be visited.
     Camera c;
@@ -100,6 +125,15 @@ TEST(GpuTraversal, SmallTrianglesFarFromTheOriginMatchBruteForce) {
     expectDepthMatchesBruteForce(s, c);
 }
 
+TEST(GpuTraversal, TheStackHoldsThreeEntriesALevelAndRefusesTreesTooDeepForIt) {
+    // The shader shifts every entry at every node visit, so the stack is as deep as the tree needs, no
+    // deeper; a tree it cannot hold is an error, not lost subtrees.
+    EXPECT_EQ(layout::traversalStackEntries(0), 4u);
+    EXPECT_EQ(layout::traversalStackEntries(10), 31u);
+    EXPECT_EQ(layout::traversalStackEntries(86), layout::kMaxTraversalStack);
+    EXPECT_THROW(layout::traversalStackEntries(87), Error);
+}
+
 TEST(GpuTraversal, EmptyChildSlotsAreNeverEntered) {
     // One triangle: the root has one leaf child and three empty slots. An entered empty slot would
     // push its link 0, the root, so some ray would count more than the one node.
@@ -111,7 +145,7 @@ TEST(GpuTraversal, EmptyChildSlotsAreNeverEntered) {
     c.eye = glm::vec3(0.0f, 0.0f, -3.0f);
     c.target = glm::vec3(0.0f);
     c.fovY = 60.0f;
-    Renderer renderer(s);
+    Renderer renderer(s, testShaders());
     RenderSettings settings;
     settings.width = settings.height = 32;
     settings.view = View::Nodes;
