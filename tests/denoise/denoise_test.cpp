@@ -85,7 +85,7 @@ TEST(Denoise, FlatRegionsAndAnAlbedoEdgeStayExact) {
     uint32_t dark = addMaterial(scene, glm::vec3(0.2f)), light = addMaterial(scene, glm::vec3(0.8f));
     addQuad(scene, {-50, -50, 0}, {0, -50, 0}, {0, 50, 0}, {-50, 50, 0}, dark);
     addQuad(scene, {0, -50, 0}, {50, -50, 0}, {50, 50, 0}, {0, 50, 0}, light);
-    Renderer renderer(scene);
+    Renderer renderer(scene, testShaders());
     const int size = 24;
     renderer.configure(guided(size, Integrator::Bsdf, 2), frontCamera());
     renderer.render(4);
@@ -115,7 +115,7 @@ TEST(Denoise, NeverMakesNanOrInf) {
     addQuad(scene, {-1, -1, 0}, {0, -1, 0}, {0, 0, 0}, {-1, 0, 0}, black);
     addQuad(scene, {0, -1, 0}, {1, -1, 0}, {1, 0, 0}, {0, 0, 0}, white);
     addQuad(scene, {-0.5f, 0.2f, 0.5f}, {0.5f, 0.2f, 0.5f}, {0.5f, 0.6f, 0.5f}, {-0.5f, 0.6f, 0.5f}, lamp);
-    Renderer renderer(scene);
+    Renderer renderer(scene, testShaders());
     DenoisePasses passes;
     for (int spp : {1, 4}) {
         renderer.configure(guided(32, Integrator::Nee, 3), frontCamera());
@@ -167,7 +167,7 @@ TEST(Denoise, PassesComeFromTheRenderersShaderDirectory) {
 TEST(Denoise, NoneIsTheRawMeanAndFiltersNeedGuides) {
     ensureGlContext();
     Scene scene = furnaceBox(0.5f, 1.0f);
-    Renderer renderer(scene);
+    Renderer renderer(scene, testShaders());
     RenderSettings s = guided(8, Integrator::Nee, 2);
     s.guides = false;
     renderer.configure(s, insideCamera());
@@ -302,7 +302,7 @@ TEST(Denoise, DoesNotBlurAcrossANormalDiscontinuity) {
     addQuad(scene, {0, -20, 0}, {20, -20, -20 * t}, {20, 20, -20 * t}, {0, 20, 0}, grey);  // right: z = -t x
     // At x = -30, facing +x; every point has t x + z < 0: behind the right face's plane.
     addQuad(scene, {-30, -10, -10}, {-30, 10, -10}, {-30, 10, 4}, {-30, -10, 4}, lamp);
-    Renderer renderer(scene);
+    Renderer renderer(scene, testShaders());
     const int size = 32;
     renderer.configure(guided(size, Integrator::Nee, 3), frontCamera());
     renderer.render(16);

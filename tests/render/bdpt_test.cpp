@@ -83,7 +83,7 @@ Accumulation renderPasses(Renderer& renderer, const Camera& camera, Integrator i
 }
 Accumulation render(const Scene& scene, const Camera& camera, Integrator integrator, int size, int spp,
                     int depth, uint32_t seed = 1) {
-    Renderer renderer(scene);
+    Renderer renderer(scene, testShaders());
     return renderPasses(renderer, camera, integrator, size, spp, depth, seed);
 }
 
@@ -189,7 +189,7 @@ TEST(Bdpt, LightTracingAloneConvergesToNee) {
 TEST(Bdpt, TilesGiveTheWholeFrameImage) {
     ensureGlContext();
     Scene scene = builtinCornellBox();
-    Renderer renderer(scene);
+    Renderer renderer(scene, testShaders());
     Accumulation whole = renderPasses(renderer, *scene.camera, Integrator::Bdpt, 24, 2, 4);
     renderer.configure(renderer.settings(), *scene.camera);
     int completed = 0;
@@ -209,7 +209,7 @@ TEST(Bdpt, TilesGiveTheWholeFrameImage) {
 TEST(Bdpt, SplitViewHalfEqualsAWholeRender) {
     ensureGlContext();
     Scene scene = builtinCornellBox();
-    Renderer renderer(scene);
+    Renderer renderer(scene, testShaders());
     Accumulation whole = renderPasses(renderer, *scene.camera, Integrator::Bdpt, 24, 4, 4);
     RenderSettings s = renderer.settings();
     s.integrator = Integrator::Nee;
@@ -233,7 +233,7 @@ TEST(Bdpt, SplitViewHalfEqualsAWholeRender) {
 TEST(Bdpt, RepeatableWithAFixedSeed) {
     ensureGlContext();
     Scene scene = causticScene(0.0f);
-    Renderer renderer(scene);
+    Renderer renderer(scene, testShaders());
     Accumulation a = renderPasses(renderer, *scene.camera, Integrator::Bdpt, 16, 4, 5, 3);
     Accumulation b = renderPasses(renderer, *scene.camera, Integrator::Bdpt, 16, 4, 5, 3);
     Accumulation c = renderPasses(renderer, *scene.camera, Integrator::Bdpt, 16, 4, 5, 4);

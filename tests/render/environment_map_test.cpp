@@ -37,7 +37,7 @@ TEST(EnvironmentMap, ConstantMapIsTheConstantEnvironment) {
     for (glm::vec3& p : white.pixels) p = glm::vec3(1.0f);
     Scene scene = sphereUnderSky(white);
     scene.materials[0].diffuse = glm::vec3(0.5f);
-    Renderer renderer(scene);
+    Renderer renderer(scene, testShaders());
     Accumulation acc = renderScene(renderer, view(), Integrator::Nee, 24, 64, 5);
     // A convex Lambertian object of albedo 0.5 under radiance 1 is 0.5; the background is 1.
     Image mean = acc.mean();
@@ -50,7 +50,7 @@ TEST(EnvironmentMap, ConstantMapIsTheConstantEnvironment) {
 TEST(EnvironmentMap, LightSamplingAndBsdfSamplingAgree) {
     ensureGlContext();
     Scene scene = sphereUnderSky(skyWithSun(32, 16));
-    Renderer renderer(scene);
+    Renderer renderer(scene, testShaders());
     Accumulation nee = renderScene(renderer, view(), Integrator::Nee, 24, 256, 3);
     Accumulation bsdf = renderScene(renderer, view(), Integrator::Bsdf, 24, 1024, 3);
     ImageEstimate a = estimate(nee), b = estimate(bsdf);
@@ -77,7 +77,7 @@ TEST(EnvironmentMap, RotationTurnsTheMapAboutUp) {
     c.fovY = 5.0f;
     auto centre = [&](float degrees) {
         scene.environment.rotationDegrees = degrees;
-        Renderer renderer(scene);
+        Renderer renderer(scene, testShaders());
         RenderSettings s;
         s.width = s.height = 9;
         s.integrator = Integrator::Bsdf;

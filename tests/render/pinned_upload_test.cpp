@@ -17,14 +17,14 @@ TEST(PinnedUpload, LargeArraysAreReadInPlaceAndRenderWhatCopiesRender) {
     // start on 2 MiB boundaries; the materials and lights, a few hundred bytes, are copied.
     const Scene scene = benchmarkSphereScene(50000);
     const size_t perTriangleArray = size_t(50000) * 3 * sizeof(glm::vec4);
-    Renderer pinned(scene);
+    Renderer pinned(scene, testShaders());
     EXPECT_GE(pinned.stats().gpuPinnedBytes, 2 * perTriangleArray);
     EXPECT_LT(pinned.stats().gpuPinnedBytes, pinned.stats().gpuBytes);
     const Accumulation a = renderScene(pinned, *scene.camera, Integrator::Nee, 24, 4, 5, 7);
 
     ScopedEnv copies("FRAGPATH_PINNED_UPLOAD", "0");
     ASSERT_FALSE(pinnedUploadAllowed());
-    Renderer copied(scene);
+    Renderer copied(scene, testShaders());
     EXPECT_EQ(copied.stats().gpuPinnedBytes, 0u);
     const Accumulation b = renderScene(copied, *scene.camera, Integrator::Nee, 24, 4, 5, 7);
     expectBitIdentical(a, b, "pinned against copied buffers");

@@ -83,7 +83,7 @@ TEST(Textures, AlbedoViewReproducesTheTexture) {
     ensureGlContext();
     std::vector<uint8_t> rgba = gradientTexels();
     Scene scene = texturedQuad(rgba, true);
-    Renderer renderer(scene);
+    Renderer renderer(scene, testShaders());
     EXPECT_EQ(renderer.stats().gpuTextureBytes, 2 * 3 * 8 + 16 * 4 + 16u) << "uvs, texels and the table";
     // One pixel per texel: pixel centres are texel centres, so each pixel is one decoded texel. The
     // only error is the hit point's (a few float ulps of the quad's size of 2), times the largest
@@ -113,7 +113,7 @@ TEST(Textures, KdMultipliesTheTextureAndPlasticBasesAreTextured) {
         Scene scene = texturedQuad(rgba, true, material);
         ASSERT_EQ(scene.materials[0].type,
                   material.find("Ks") != std::string::npos ? MaterialType::Plastic : MaterialType::Diffuse);
-        Renderer renderer(scene);
+        Renderer renderer(scene, testShaders());
         Image image = albedoView(renderer, kTexSize);
         for (int y = 0; y < kTexSize; ++y)
             for (int x = 0; x < kTexSize; ++x) {
@@ -134,7 +134,7 @@ TEST(Textures, EveryIntegratorSeesTheTexturedAlbedoUnderAUniformSky) {
     glm::vec3 mean(0.0f);
     for (int y = 0; y < kTexSize; ++y)
         for (int x = 0; x < kTexSize; ++x) mean += decodedTexel(rgba, x, y) / float(kTexSize * kTexSize);
-    Renderer renderer(scene);
+    Renderer renderer(scene, testShaders());
     for (Integrator integrator : {Integrator::Naive, Integrator::Bsdf, Integrator::Nee, Integrator::Bdpt})
         for (int depth : {1, 3}) {
             Accumulation acc = renderScene(renderer, quadCamera(), integrator, 16, 64, depth);
@@ -163,7 +163,7 @@ TEST(Textures, BdptJoinsSeeTheSameTexturedKdAsNee) {
     }
     scene.textures.push_back({"gradient", Rgba8Image{kTexSize, kTexSize, gradientTexels()}});
     scene.materials[0].diffuseTexture = 0;
-    Renderer renderer(scene);
+    Renderer renderer(scene, testShaders());
     Accumulation nee = renderScene(renderer, insideCamera(), Integrator::Nee, 16, 64, 3);
     Accumulation bdpt = renderScene(renderer, insideCamera(), Integrator::Bdpt, 16, 64, 3);
     std::vector<float> z = blockZScores(bdpt, nee, 2);
@@ -183,7 +183,7 @@ TEST(Textures, QuadWithoutTexcoordsShowsTheMeanColour) {
     Scene scene = texturedQuad(rgba, false);
     EXPECT_TRUE(capture.contains("without texture coordinates (vt)")) << joined(capture);
     glm::vec3 mean = meanLinearColor(Rgba8Image{kTexSize, kTexSize, rgba});
-    Renderer renderer(scene);
+    Renderer renderer(scene, testShaders());
     EXPECT_EQ(renderer.stats().gpuTextureBytes, 0u);
     Image image = albedoView(renderer, 8);
     for (const glm::vec3& p : image.pixels)

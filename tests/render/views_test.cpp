@@ -22,7 +22,7 @@ Image renderView(Renderer& renderer, const Camera& camera, View view, int maxDep
 TEST(Views, CountsAreWithinTheirBounds) {
     ensureGlContext();
     Scene scene = builtinCornellBox();
-    Renderer renderer(scene);
+    Renderer renderer(scene, testShaders());
     for (int depth : {0, 2, 5}) {
         Image bounces = renderView(renderer, *scene.camera, View::Bounces, depth, 8);
         float maxBounces = 0.0f;
@@ -47,7 +47,7 @@ TEST(Views, CountsAreWithinTheirBounds) {
 TEST(Views, CostCountsTheWholePath) {
     ensureGlContext();
     Scene scene = builtinCornellBox();
-    Renderer renderer(scene);
+    Renderer renderer(scene, testShaders());
     for (int depth : {0, 5}) {
         RenderSettings s;
         s.width = s.height = 16;
@@ -75,7 +75,7 @@ TEST(Views, CostCountsTheWholePath) {
 TEST(Views, NormalsAreUnitVectorsFacingTheCamera) {
     ensureGlContext();
     Scene scene = furnaceBox(0.5f, 0.0f);
-    Renderer renderer(scene);
+    Renderer renderer(scene, testShaders());
     Image normals = renderView(renderer, insideCamera(), View::Normal, 5, 1);
     Image albedo = renderView(renderer, insideCamera(), View::Albedo, 5, 1);
     for (size_t i = 0; i < normals.pixels.size(); ++i) {

@@ -18,7 +18,7 @@ namespace {
 TEST(Screenshot, CountViewPngMatchesTheDisplayPass) {
     test::ensureGlContext();
     Scene scene = builtinCornellBox();
-    Renderer renderer(scene);
+    Renderer renderer(scene, test::testShaders());
     RenderSettings settings;
     settings.width = 32;
     settings.height = 24;
