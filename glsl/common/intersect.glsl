@@ -122,11 +122,6 @@ void orderPair(inout float ta, inout uint la, inout float tb, inout uint lb) {
 // the slab test.
 vec3 safeInverse(vec3 d) { return 1.0 / mix(d, vec3(1e-20), lessThan(abs(d), vec3(1e-20))); }
 
-#ifdef INSTANCE_NODES_START
-// A stack entry no node can have: "leave the instance" (interior links are below 2^31).
-const uint kLeaveInstance = 0xFFFFFFFFu;
-#endif
-
 // The traversal stack is a shift register, its top in stack[0]: every entry is read and written at a
 // constant index, so llvmpipe keeps the stack in vector registers. An array indexed by each pixel's own
 // stack size is written one SIMD lane at a time, each lane's store behind a branch on its mask, and
@@ -185,10 +180,11 @@ bool traverse(Ray worldRay, float tMax, bool anyHit, out Hit hit) {
     uint node = 0u;
 #ifdef INSTANCE_NODES_START
     // Two levels (pack/layout.h): a link to an instance's node pair moves the ray into the instance's
-    // space (the direction not renormalised, so that t means the same in both) until the entry below
-    // the instance's subtree, kLeaveInstance, brings it back.
+    // space (the direction not renormalised, so that t means the same in both) until the traversal has
+    // popped the instance's subtree off the stack, down to the size it had on entering.
     vec3 worldInvDir = invDir;
     gInstance = -1;
+    int instanceBase = -1;  // the stack's size when the ray entered its instance; -1: in the world
 #endif
     while (true) {
 #ifdef INSTANCE_NODES_START
@@ -201,8 +197,7 @@ bool traverse(Ray worldRay, float tMax, bool anyHit, out Hit hit) {
                       vec3(dot(r0.xyz, d), dot(r1.xyz, d), dot(r2.xyz, d)));
             invDir = safeInverse(ray.dir);
             gInstance = int(node);
-            shiftStack(stack, 1, kLeaveInstance, 0u, 0u);
-            ++size;
+            instanceBase = size;
             node = nodeTexel(base + 3).x;  // the root of its mesh's BVH
         }
 #endif
@@ -227,21 +222,18 @@ bool traverse(Ray worldRay, float tMax, bool anyHit, out Hit hit) {
         // The nearest is visited next and the farther ones wait on the stack, farthest deepest (the hit
         // ones come first in the sorted order); with none hit, the top of the stack is next.
         if (t0 == INF && size == 0) break;
+#ifdef INSTANCE_NODES_START
+        if (t0 == INF && size == instanceBase) {  // the instance is done: back to the world's entries
+            ray = worldRay;
+            invDir = worldInvDir;
+            gInstance = -1;
+            instanceBase = -1;
+        }
+#endif
         node = t0 < INF ? l0 : stack[0];
         int d = t0 < INF ? (t1 < INF ? 1 : 0) + (t2 < INF ? 1 : 0) + (t3 < INF ? 1 : 0) : -1;
         shiftStack(stack, d, l1, l2, l3);
         size += d;
-#ifdef INSTANCE_NODES_START
-        if (node == kLeaveInstance) {
-            ray = worldRay;
-            invDir = worldInvDir;
-            gInstance = -1;
-            if (size == 0) break;
-            node = stack[0];
-            shiftStack(stack, -1, 0u, 0u, 0u);
-            --size;
-        }
-#endif
     }
     return hit.triangle >= 0;
 }
