@@ -46,11 +46,11 @@ ShaderDefines layoutDefines(bool images) {
 }
 
 uint32_t traversalStackEntries(uint32_t bvhDepth) {
-    uint64_t entries = std::max<uint64_t>(4, 3 * uint64_t(bvhDepth) + 1);
+    uint64_t entries = std::max<uint64_t>(4, 3 * uint64_t(bvhDepth));
     if (entries > kMaxTraversalStack)
         throw Error("the scene's BVH is " + std::to_string(bvhDepth) +
                     " levels deep; the GPU traversal handles at most " +
-                    std::to_string((kMaxTraversalStack - 1) / 3) + " levels");
+                    std::to_string(kMaxTraversalStack / 3) + " levels");
     return uint32_t(entries);
 }
 

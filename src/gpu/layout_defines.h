@@ -14,9 +14,10 @@ ShaderDefines layoutDefines(bool images = false);
 constexpr uint32_t kMaxTraversalStack = 259;
 
 // The traversal stack's entries (BVH_STACK_SIZE) for a wide BVH whose deepest node is `bvhDepth` levels
-// below the root: three entries (the hit siblings of the child it descends to) for each level, as many
-// as can be, no more, since the shader shifts every entry at every node visit; at least the 4 that
-// shiftStack needs. Throws fp::Error for a tree too deep for kMaxTraversalStack.
+// below the root: three entries (the hit siblings of the child it descends to) for each level above the
+// deepest, as many as can be, no more, since the shader shifts every entry at every node visit (an
+// instance's subtree goes on the same stack, and the two levels' depths add up in bvhDepth); at least the
+// 4 that shiftStack needs. Throws fp::Error for a tree too deep for kMaxTraversalStack.
 uint32_t traversalStackEntries(uint32_t bvhDepth);
 
 }  // namespace fp::layout
