@@ -4,6 +4,7 @@ set -euo pipefail
 packages=(
   cmake make g++ pkg-config python3-glad git
   libosmesa6-dev libegl-dev libglm-dev libtinyobjloader-dev nlohmann-json3-dev libstb-dev libtinyexr-dev libtinygltf-dev libgtest-dev
+  libdraco-dev libmeshoptimizer-dev
   libglfw3-dev libimgui-dev xvfb xauth clang libclang-rt-14-dev
   gnuplot-nox
 )

@@ -90,6 +90,33 @@ int componentCount(int type) {
     }
 }
 
+// A BYTE, UNSIGNED_BYTE, SHORT, UNSIGNED_SHORT or UNSIGNED_INT component's value.
+int64_t integer(const unsigned char* p, int componentType) {
+    switch (componentType) {
+        case TINYGLTF_COMPONENT_TYPE_BYTE:
+            return int8_t(*p);
+        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE:
+            return *p;
+        case TINYGLTF_COMPONENT_TYPE_SHORT: {
+            int16_t s;
+            std::memcpy(&s, p, 2);
+            return s;
+        }
+        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: {
+            uint16_t u;
+            std::memcpy(&u, p, 2);
+            return u;
+        }
+        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT: {
+            uint32_t u;
+            std::memcpy(&u, p, 4);
+            return u;
+        }
+        default:
+            return 0;
+    }
+}
+
 // The buffer view's bytes, checked against the buffer tinygltf loaded.
 const tinygltf::BufferView& checkedView(const tinygltf::Model& model, int view, const std::string& who,
                                         const std::string& name) {
@@ -163,51 +190,41 @@ void AccessorData::require(int type, std::initializer_list<int> componentTypes, 
                     (normalized_ ? "normalized " : "") + componentName(componentType_));
 }
 
+void AccessorData::requireQuantized(int type, std::initializer_list<int> normalizedTypes,
+                                    std::initializer_list<int> integerTypes, const std::string& what) const {
+    bool componentOk = componentType_ == TINYGLTF_COMPONENT_TYPE_FLOAT && !normalized_;
+    for (int ct : normalized_ ? normalizedTypes : integerTypes)
+        componentOk = componentOk || ct == componentType_;
+    if (type_ != type || !componentOk)
+        throw Error(name_ + ": " + label_ + " must be " + what + ", got " + typeName(type_) + " of " +
+                    (normalized_ ? "normalized " : "") + componentName(componentType_));
+}
+
 float AccessorData::real(size_t i, int c) const {
     const unsigned char* p = element(i) + size_t(c) * size_t(componentSize(componentType_));
-    switch (componentType_) {
-        case TINYGLTF_COMPONENT_TYPE_FLOAT: {
-            float f;
-            std::memcpy(&f, p, 4);
-            return f;
-        }
+    if (componentType_ == TINYGLTF_COMPONENT_TYPE_FLOAT) {
+        float f;
+        std::memcpy(&f, p, 4);
+        return f;
+    }
+    float value = float(integer(p, componentType_));
+    if (!normalized_) return value;
+    switch (componentType_) {  // the glTF specification's mapping of normalized integers
         case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE:
-            return float(*p) / 255.0f;
-        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: {
-            uint16_t u;
-            std::memcpy(&u, p, 2);
-            return float(u) / 65535.0f;
-        }
+            return value / 255.0f;
+        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT:
+            return value / 65535.0f;
         case TINYGLTF_COMPONENT_TYPE_BYTE:
-            return std::max(float(int8_t(*p)) / 127.0f, -1.0f);
-        case TINYGLTF_COMPONENT_TYPE_SHORT: {
-            int16_t s;
-            std::memcpy(&s, p, 2);
-            return std::max(float(s) / 32767.0f, -1.0f);
-        }
+            return std::max(value / 127.0f, -1.0f);
+        case TINYGLTF_COMPONENT_TYPE_SHORT:
+            return std::max(value / 32767.0f, -1.0f);
         default:
             return 0.0f;  // unsigned int is never a fraction; require() refuses it first
     }
 }
 
 uint32_t AccessorData::index(size_t i) const {
-    const unsigned char* p = element(i);
-    switch (componentType_) {
-        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE:
-            return *p;
-        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: {
-            uint16_t u;
-            std::memcpy(&u, p, 2);
-            return u;
-        }
-        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT: {
-            uint32_t u;
-            std::memcpy(&u, p, 4);
-            return u;
-        }
-        default:
-            return 0;  // require() refuses other types first
-    }
+    return uint32_t(integer(element(i), componentType_));  // require() admits unsigned types only
 }
 
 std::string_view bufferViewBytes(const tinygltf::Model& model, int view, const std::string& name) {

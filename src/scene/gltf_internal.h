@@ -84,7 +84,8 @@ class AccessorData {
     const std::string& label() const { return label_; }
 
     // Component c of element i as a float: float components as they are, normalized integers as
-    // the glTF specification maps them onto [0, 1] or [-1, 1].
+    // the glTF specification maps them onto [0, 1] or [-1, 1], other integers (KHR_mesh_quantization's
+    // positions and texture coordinates) as their value.
     float real(size_t i, int c) const;
     // Element i of an unsigned integer scalar accessor (indices).
     uint32_t index(size_t i) const;
@@ -92,6 +93,11 @@ class AccessorData {
     // Throws fp::Error unless the accessor has this element type and one of these component types.
     void require(int type, std::initializer_list<int> componentTypes, bool normalized,
                  const std::string& what) const;
+    // Throws fp::Error unless the accessor has this element type and FLOAT components, or components of
+    // one of `normalizedTypes` that are normalized, or of one of `integerTypes` that are not: the
+    // choices KHR_mesh_quantization adds for vertex attributes.
+    void requireQuantized(int type, std::initializer_list<int> normalizedTypes,
+                          std::initializer_list<int> integerTypes, const std::string& what) const;
 
   private:
     const unsigned char* element(size_t i) const { return first_ + i * stride_; }

@@ -20,6 +20,15 @@ uint64_t trianglesOf(int mode, uint64_t n) {
     return n >= 3 ? n - 2 : 0;
 }
 
+// The component types KHR_mesh_quantization allows besides FLOAT: for positions and texture coordinates
+// (normalized or not; the node's transform or KHR_texture_transform dequantizes), and for normals and
+// tangents (normalized only).
+constexpr std::initializer_list<int> kQuantizedTypes = {
+    TINYGLTF_COMPONENT_TYPE_BYTE, TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE, TINYGLTF_COMPONENT_TYPE_SHORT,
+    TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT};
+constexpr std::initializer_list<int> kSignedTypes = {TINYGLTF_COMPONENT_TYPE_BYTE,
+                                                     TINYGLTF_COMPONENT_TYPE_SHORT};
+
 std::string primitiveName(int mesh, size_t primitive) {
     return "meshes[" + std::to_string(mesh) + "].primitives[" + std::to_string(primitive) + "]";
 }
@@ -63,8 +72,8 @@ void appendPrimitive(const tinygltf::Model& model, const MeshInstance& instance,
     if (!primitive.targets.empty()) ++tallies->morphTargets;
 
     AccessorData positions(model, position->second, "POSITION of " + where, name);
-    positions.require(TINYGLTF_TYPE_VEC3, {TINYGLTF_COMPONENT_TYPE_FLOAT}, false,
-                      "VEC3 of FLOAT (quantized positions, KHR_mesh_quantization, are not supported)");
+    positions.requireQuantized(TINYGLTF_TYPE_VEC3, kQuantizedTypes, kQuantizedTypes,
+                               "VEC3 of FLOAT, BYTE, UNSIGNED_BYTE, SHORT or UNSIGNED_SHORT");
     size_t vertexCount = positions.count();
     auto sameCount = [&](const AccessorData& a) {
         if (a.count() != vertexCount)
@@ -100,7 +109,8 @@ void appendPrimitive(const tinygltf::Model& model, const MeshInstance& instance,
     auto normal = primitive.attributes.find("NORMAL");
     if (normal != primitive.attributes.end()) {
         AccessorData data(model, normal->second, "NORMAL of " + where, name);
-        data.require(TINYGLTF_TYPE_VEC3, {TINYGLTF_COMPONENT_TYPE_FLOAT}, false, "VEC3 of FLOAT");
+        data.requireQuantized(TINYGLTF_TYPE_VEC3, kSignedTypes, {},
+                              "VEC3 of FLOAT, or of normalized BYTE or SHORT");
         sameCount(data);
         normals.resize(vertexCount);
         for (size_t i = 0; i < vertexCount; ++i) {
@@ -119,10 +129,8 @@ void appendPrimitive(const tinygltf::Model& model, const MeshInstance& instance,
         set >= 0 ? primitive.attributes.find("TEXCOORD_" + std::to_string(set)) : primitive.attributes.end();
     if (texcoord != primitive.attributes.end()) {
         AccessorData data(model, texcoord->second, "TEXCOORD_" + std::to_string(set) + " of " + where, name);
-        data.require(TINYGLTF_TYPE_VEC2,
-                     {TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE,
-                      TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT},
-                     true, "VEC2 of FLOAT, or of normalized UNSIGNED_BYTE or UNSIGNED_SHORT");
+        data.requireQuantized(TINYGLTF_TYPE_VEC2, kQuantizedTypes, kQuantizedTypes,
+                              "VEC2 of FLOAT, BYTE, UNSIGNED_BYTE, SHORT or UNSIGNED_SHORT");
         sameCount(data);
         uv.resize(vertexCount);
         const glm::mat3 transform = materials.uvTransform(primitive.material);  // KHR_texture_transform
@@ -149,7 +157,8 @@ void appendPrimitive(const tinygltf::Model& model, const MeshInstance& instance,
     auto tangent = primitive.attributes.find("TANGENT");
     if (tangent != primitive.attributes.end() && scene->materials[material].normalTexture >= 0) {
         AccessorData data(model, tangent->second, "TANGENT of " + where, name);
-        data.require(TINYGLTF_TYPE_VEC4, {TINYGLTF_COMPONENT_TYPE_FLOAT}, false, "VEC4 of FLOAT");
+        data.requireQuantized(TINYGLTF_TYPE_VEC4, kSignedTypes, {},
+                              "VEC4 of FLOAT, or of normalized BYTE or SHORT");
         sameCount(data);
         tangents.resize(vertexCount);
         for (size_t i = 0; i < vertexCount; ++i) {

@@ -313,17 +313,10 @@ class Schema {
         for (const json& e : *required) {
             std::string extension = e.get<std::string>();
             if (isImplementedExtension(extension)) continue;
-            if (extension == "KHR_draco_mesh_compression")
-                throw Error(name_ +
-                            ": meshes compressed with KHR_draco_mesh_compression are not supported (save "
-                            "the file without Draco compression)");
-            if (extension == "EXT_meshopt_compression" || extension == "KHR_meshopt_compression")
+            if (extension == "KHR_meshopt_compression")
                 throw Error(name_ + ": buffers compressed with " + extension +
-                            " are not supported (save the file without meshopt compression)");
-            if (extension == "KHR_mesh_quantization")
-                throw Error(name_ +
-                            ": quantized vertex data (KHR_mesh_quantization) is not supported (save the "
-                            "file with float positions, normals and texture coordinates)");
+                            " are not supported (only EXT_meshopt_compression is: save the file with it, or "
+                            "without meshopt compression)");
             throw Error(name_ + ": the file requires the extension " + extension +
                         ", which fragpath does not implement");
         }
@@ -587,7 +580,9 @@ class Schema {
 bool isImplementedExtension(const std::string& extension) {
     return extension == "KHR_materials_emissive_strength" || extension == "KHR_materials_transmission" ||
            extension == "KHR_materials_ior" || extension == "KHR_materials_specular" ||
-           extension == "KHR_lights_punctual" || extension == "KHR_texture_transform";
+           extension == "KHR_lights_punctual" || extension == "KHR_texture_transform" ||
+           extension == "KHR_mesh_quantization" || extension == "KHR_draco_mesh_compression" ||
+           extension == "EXT_meshopt_compression";
 }
 
 std::string percentDecoded(const std::string& uri) {
