@@ -67,6 +67,37 @@ bool isImplementedExtension(const std::string& extension);
 // `uri` with %XX escapes decoded, as a file path.
 std::string percentDecoded(const std::string& uri);
 
+// ---- gltf_meshopt.cpp (EXT_meshopt_compression)
+
+// A buffer view whose bytes are decoded from meshoptimizer's stream in another buffer.
+struct MeshoptView {
+    size_t view = 0, buffer = 0;  // the view, and the buffer of the compressed stream
+    uint64_t byteOffset = 0, byteLength = 0, byteStride = 0, count = 0;
+    std::string mode,
+        filter;  // ATTRIBUTES, TRIANGLES or INDICES; NONE, OCTAHEDRAL, QUATERNION or EXPONENTIAL
+};
+
+// Whether buffers[buffer] holds no data of its own: a fallback for compressed views, without a uri
+// (and not a .glb's BIN chunk).
+bool isPlaceholderBuffer(const nlohmann::json& root, const Container& container, size_t buffer);
+
+// The views compressed with EXT_meshopt_compression, after the schema check, each checked against the
+// extension's rules (and a view that refers to a placeholder buffer without it refused); throws fp::Error
+// "<name>: bufferViews[i].extensions.EXT_meshopt_compression...: <problem>".
+std::vector<MeshoptView> meshoptViews(const nlohmann::json& root, const Container& container,
+                                      const std::string& name);
+
+// The file with every placeholder buffer replaced by one byte in a data URI, for tinygltf (which would
+// look for a file, or copy the BIN chunk); empty if the file has none.
+std::string withoutPlaceholderBuffers(std::string_view bytes, const Container& container,
+                                      nlohmann::json root);
+
+// Decodes each view into a buffer of its own, appended to the model, and points the view at it, so that
+// accessors and images read the decoded bytes; throws fp::Error naming the view for data that does not
+// decode to the view's count and stride.
+void decodeMeshoptViews(const std::vector<MeshoptView>& views, tinygltf::Model* model,
+                        const std::string& name);
+
 // ---- gltf_accessor.cpp
 
 // An accessor's elements, after checking that all of them lie inside its buffer view and buffer.

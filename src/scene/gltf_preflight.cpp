@@ -322,6 +322,11 @@ class Schema {
         }
     }
 
+    bool declares(const char* extension) const {
+        const json* used = find(root_, "extensionsUsed");
+        return used && std::find(used->begin(), used->end(), json(extension)) != used->end();
+    }
+
     size_t lights() const {
         const json* extensions = object(root_, "", "extensions");
         if (!extensions) return 0;
@@ -397,10 +402,10 @@ class Schema {
         std::optional<std::string> uri = string(o, path, "uri");
         bool first = path == "buffers[0]";
         if (!uri) {
-            if (const json* extensions = object(o, path, "extensions"))
-                if (find(*extensions, "EXT_meshopt_compression") ||
-                    find(*extensions, "KHR_meshopt_compression"))
-                    fail(path, "is a placeholder for meshopt-compressed data, which fragpath cannot decode");
+            // A fallback for views compressed with EXT_meshopt_compression (gltf_meshopt.cpp checks that
+            // only those refer to it).
+            if (!(container_.binary && first && container_.hasBin) && declares("EXT_meshopt_compression"))
+                return;
             if (!container_.binary || !first)
                 fail(path, "has no uri (only the first buffer of a .glb may omit it, to use the BIN chunk)");
             if (!container_.hasBin) fail(path, "refers to the .glb's BIN chunk, but the file has none");

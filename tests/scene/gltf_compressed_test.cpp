@@ -2,10 +2,18 @@
 // - KHR_mesh_quantization: the Khronos sample AnimatedMorphCube, quantized by gltfpack (BYTE normals,
 //   UNSIGNED_SHORT positions dequantized by its node's scale and translation), against its float
 //   glTF-Binary variant.
+// - EXT_meshopt_compression: a small bumpy grid encoded in the test with meshoptimizer's encoders
+//   (positions through the EXPONENTIAL filter, normals through OCTAHEDRAL, texture coordinates as they
+//   are; indices as TRIANGLES and as INDICES), its fallback buffer a placeholder without data, against
+//   the same grid uncompressed.
+// Bad compressed data (truncated, counts that disagree, modes and filters the extension does not
+// define) is one fp::Error naming the file, the buffer view or primitive and the problem.
 #include <gtest/gtest.h>
+#include <meshoptimizer.h>
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 
 #include "gltf_samples.h"
 #include "gltf_test_util.h"
@@ -22,30 +30,50 @@ float maxDistance(const glm::vec3& a, const glm::vec3& b) {
     return std::max({d.x, d.y, d.z});
 }
 
-// Whether triangle `t` has the corners of `u` within `tolerance` (per coordinate), in the same winding
-// (any of its three rotations).
-bool sameTriangle(const Triangle& t, const Triangle& u, float tolerance) {
+// The rotation r for which corner k of `t` is corner (k + r) % 3 of `u` within `tolerance` (per
+// coordinate), or -1.
+int sameTriangle(const Triangle& t, const Triangle& u, float tolerance) {
     for (int r = 0; r < 3; ++r) {
         bool all = true;
-        for (int k = 0; k < 3; ++k)
-            all = all && maxDistance(t.p[size_t(k)], u.p[size_t((k + r) % 3)]) <= tolerance;
-        if (all) return true;
+        for (size_t k = 0; k < 3; ++k)
+            all = all && maxDistance(t.p[k], u.p[(k + size_t(r)) % 3]) <= tolerance;
+        if (all) return r;
     }
-    return false;
+    return -1;
 }
 
-// Every triangle of `a` is one of `b` (as many of each), within `tolerance`; the triangles' order may
-// differ (compressors reorder them).
-void expectSameTriangles(const Scene& a, const Scene& b, float tolerance) {
+// How far a loaded scene may be from its original.
+struct Tolerances {
+    float position = 0.0f;
+    float normal = 2.0f;    // per coordinate; 2 checks nothing
+    float texcoord = 2.0f;  // per coordinate
+};
+
+// Every triangle of `a` is one of `b` (as many of each), in the same winding, with the same normals and
+// texture coordinates at its corners, within `tol`; the triangles' order and first corners may differ
+// (compressors reorder and rotate them).
+void expectSameTriangles(const Scene& a, const Scene& b, const Tolerances& tol) {
     ASSERT_EQ(a.triangles.size(), b.triangles.size());
     std::vector<bool> used(b.triangles.size(), false);
     for (size_t i = 0; i < a.triangles.size(); ++i) {
-        bool found = false;
-        for (size_t j = 0; j < b.triangles.size() && !found; ++j)
-            if (!used[j] && sameTriangle(a.triangles[i], b.triangles[j], tolerance)) found = used[j] = true;
-        EXPECT_TRUE(found) << "triangle " << i << " (" << a.triangles[i].p[0].x << ", "
-                           << a.triangles[i].p[0].y << ", " << a.triangles[i].p[0].z
-                           << ") ... has no counterpart";
+        const Triangle& t = a.triangles[i];
+        int r = -1;
+        size_t j = 0;
+        for (; j < b.triangles.size() && r < 0; ++j)
+            if (!used[j]) r = sameTriangle(t, b.triangles[j], tol.position);
+        if (r < 0) {
+            ADD_FAILURE() << "triangle " << i << " (" << t.p[0].x << ", " << t.p[0].y << ", " << t.p[0].z
+                          << ") ... has no counterpart";
+            continue;
+        }
+        const Triangle& u = b.triangles[--j];
+        used[j] = true;
+        for (size_t k = 0; k < 3; ++k) {
+            size_t m = (k + size_t(r)) % 3;
+            EXPECT_LE(maxDistance(t.n[k], u.n[m]), tol.normal) << "triangle " << i << " corner " << k;
+            glm::vec2 d = glm::abs(t.uv[k] - u.uv[m]);
+            EXPECT_LE(std::max(d.x, d.y), tol.texcoord) << "triangle " << i << " corner " << k;
+        }
     }
 }
 
@@ -60,7 +88,7 @@ TEST(GltfQuantized, AnimatedMorphCubeLoadsAsItsFloatVariant) {
     EXPECT_LE(maxDistance(q.lo, p.lo), step) << "quantized bounds differ from the float file's";
     EXPECT_LE(maxDistance(q.hi, p.hi), step);
     EXPECT_GT(maxDistance(p.lo, p.hi), 1000.0f * step);  // the cube spans many steps
-    expectSameTriangles(quantized, plain, step);
+    expectSameTriangles(quantized, plain, {step});
     // Normals from normalized BYTEs (steps of 1/127), renormalized after the node's transform.
     for (const Triangle& t : quantized.triangles) {
         glm::vec3 geometric = glm::normalize(t.geometricNormal());
@@ -69,6 +97,230 @@ TEST(GltfQuantized, AnimatedMorphCubeLoadsAsItsFloatVariant) {
             EXPECT_GT(glm::dot(n, geometric), 0.999f) << "a cube's normals are its faces'";
         }
     }
+}
+
+// A 4 x 4 grid of vertices over [0, 1]^2 whose heights make every normal different: 18 triangles,
+// indexed.
+struct Grid {
+    std::vector<glm::vec3> positions, normals;
+    std::vector<glm::vec2> uv;
+    std::vector<uint32_t> indices;
+};
+
+Grid bumpyGrid() {
+    Grid g;
+    const int n = 4;
+    auto height = [](float x, float y) { return 0.2f * std::sin(3.0f * x) * std::cos(2.0f * y); };
+    for (int j = 0; j < n; ++j)
+        for (int i = 0; i < n; ++i) {
+            float x = float(i) / (n - 1), y = float(j) / (n - 1);
+            g.positions.push_back({x, y, height(x, y)});
+            // The height field's normal (-dh/dx, -dh/dy, 1), normalized.
+            glm::vec3 normal(-0.6f * std::cos(3.0f * x) * std::cos(2.0f * y),
+                             0.4f * std::sin(3.0f * x) * std::sin(2.0f * y), 1.0f);
+            g.normals.push_back(glm::normalize(normal));
+            g.uv.push_back({x, 1.0f - y});
+        }
+    for (int j = 0; j + 1 < n; ++j)
+        for (int i = 0; i + 1 < n; ++i) {
+            uint32_t a = uint32_t(j * n + i), b = a + 1, c = a + uint32_t(n), d = c + 1;
+            for (uint32_t v : {a, b, d, a, d, c}) g.indices.push_back(v);
+        }
+    return g;
+}
+
+Scene loadBytes(const std::string& file, const std::string& bytes) {
+    test::TempDir dir;
+    return loadScene(dir.write(file, bytes));
+}
+
+std::string rejected(const std::string& file, const std::string& bytes) {
+    test::TempDir dir;
+    std::string path = dir.write(file, bytes);
+    return test::errorOf([&] { loadScene(path); });
+}
+
+// The grid as a plain glTF: float attributes, UNSIGNED_SHORT indices.
+test::GltfBuilder plainGrid(const Grid& g) {
+    test::GltfBuilder b;
+    std::vector<uint16_t> indices(g.indices.begin(), g.indices.end());
+    json attributes = {
+        {"POSITION", b.vec3(g.positions)}, {"NORMAL", b.vec3(g.normals)}, {"TEXCOORD_0", b.vec2(g.uv)}};
+    b.mesh(json::array({{{"attributes", attributes}, {"indices", b.indices16(indices)}}}));
+    b.node({{"mesh", 0}});
+    b.scene({0});
+    return b;
+}
+
+// ---- EXT_meshopt_compression
+
+// A glTF whose views are meshopt streams in buffers[0] and whose fallback, buffers[1], has no data.
+struct MeshoptFile {
+    test::GltfBuilder b;
+    uint64_t fallbackSize = 0;
+
+    // A view of `count` elements of `stride` bytes decoded from `stream` (appended to buffers[0]).
+    int view(const std::string& stream, size_t count, size_t stride, const char* mode, const char* filter,
+             bool withStride) {
+        while (b.bin.size() % 4) b.bin += '\0';
+        json extension = {{"buffer", 0},
+                          {"byteOffset", b.bin.size()},
+                          {"byteLength", stream.size()},
+                          {"byteStride", stride},
+                          {"count", count},
+                          {"mode", mode}};
+        if (std::string(filter) != "NONE") extension["filter"] = filter;
+        b.bin += stream;
+        json v = {{"buffer", 1},
+                  {"byteOffset", fallbackSize},
+                  {"byteLength", count * stride},
+                  {"extensions", {{"EXT_meshopt_compression", extension}}}};
+        if (withStride) v["byteStride"] = stride;
+        fallbackSize += (count * stride + 3) / 4 * 4;
+        return b.push("bufferViews", v);
+    }
+
+    int accessor(int view, int componentType, size_t count, const char* type, bool normalized = false) {
+        json a = {{"bufferView", view}, {"componentType", componentType}, {"count", count}, {"type", type}};
+        if (normalized) a["normalized"] = true;
+        return b.push("accessors", a);
+    }
+
+    // `glb`: buffers[0] is the BIN chunk; else a data URI.
+    std::string bytes(bool glb) {
+        b.doc["extensionsUsed"] = {"EXT_meshopt_compression", "KHR_mesh_quantization"};
+        b.doc["extensionsRequired"] = b.doc["extensionsUsed"];
+        json data = {{"byteLength", b.bin.size()}};
+        if (!glb) data["uri"] = "data:application/octet-stream;base64," + test::base64(b.bin);
+        json fallback = {{"byteLength", fallbackSize},
+                         {"extensions", {{"EXT_meshopt_compression", {{"fallback", true}}}}}};
+        b.doc["buffers"] = {data, fallback};
+        return glb ? b.glb() : b.gltf();
+    }
+};
+
+std::string encodeVertices(const void* data, size_t count, size_t stride) {
+    std::string out(meshopt_encodeVertexBufferBound(count, stride), '\0');
+    out.resize(meshopt_encodeVertexBuffer(reinterpret_cast<unsigned char*>(out.data()), out.size(), data,
+                                          count, stride));
+    return out;
+}
+
+// The grid with its views meshopt-compressed: positions with the EXPONENTIAL filter (15-bit mantissas),
+// normals as OCTAHEDRAL normalized SHORTs (stride 8, 12 bits), texture coordinates unfiltered, indices as
+// `indexMode` (TRIANGLES: UNSIGNED_SHORT; INDICES: UNSIGNED_INT).
+MeshoptFile meshoptGrid(const Grid& g, const char* indexMode) {
+    MeshoptFile f;
+    size_t n = g.positions.size();
+    std::vector<uint32_t> exp(n * 3);
+    meshopt_encodeFilterExp(exp.data(), n, 12, 15, &g.positions[0].x);
+    int p = f.view(encodeVertices(exp.data(), n, 12), n, 12, "ATTRIBUTES", "EXPONENTIAL", true);
+    std::vector<float> normals4;
+    for (const glm::vec3& v : g.normals) normals4.insert(normals4.end(), {v.x, v.y, v.z, 0.0f});
+    std::vector<int16_t> oct(n * 4);
+    meshopt_encodeFilterOct(oct.data(), n, 8, 12, normals4.data());
+    int nv = f.view(encodeVertices(oct.data(), n, 8), n, 8, "ATTRIBUTES", "OCTAHEDRAL", true);
+    int uv = f.view(encodeVertices(g.uv.data(), n, 8), n, 8, "ATTRIBUTES", "NONE", true);
+    size_t count = g.indices.size();
+    std::string stream(
+        std::max(meshopt_encodeIndexBufferBound(count, n), meshopt_encodeIndexSequenceBound(count, n)), '\0');
+    auto* out = reinterpret_cast<unsigned char*>(stream.data());
+    bool triangles = std::string(indexMode) == "TRIANGLES";
+    stream.resize(triangles ? meshopt_encodeIndexBuffer(out, stream.size(), g.indices.data(), count)
+                            : meshopt_encodeIndexSequence(out, stream.size(), g.indices.data(), count));
+    int iv = f.view(stream, count, triangles ? 2 : 4, indexMode, "NONE", false);
+    json attributes = {{"POSITION", f.accessor(p, test::GltfBuilder::kFloat, n, "VEC3")},
+                       {"NORMAL", f.accessor(nv, 5122, n, "VEC3", true)},
+                       {"TEXCOORD_0", f.accessor(uv, test::GltfBuilder::kFloat, n, "VEC2")}};
+    int indices = f.accessor(
+        iv, triangles ? test::GltfBuilder::kUnsignedShort : test::GltfBuilder::kUnsignedInt, count, "SCALAR");
+    f.b.mesh(json::array({{{"attributes", attributes}, {"indices", indices}}}));
+    f.b.node({{"mesh", 0}});
+    f.b.scene({0});
+    return f;
+}
+
+TEST(GltfMeshopt, CompressedGridLoadsAsThePlainOne) {
+    Grid g = bumpyGrid();
+    Scene plain = loadBytes("plain.gltf", plainGrid(g).gltf());
+    ASSERT_EQ(plain.triangles.size(), 18u);
+    for (const char* mode : {"TRIANGLES", "INDICES"})
+        for (bool glb : {false, true}) {
+            SCOPED_TRACE(std::string(mode) + (glb ? " .glb" : " .gltf"));
+            Scene compressed = loadBytes(glb ? "grid.glb" : "grid.gltf", meshoptGrid(g, mode).bytes(glb));
+            // Positions in [0, 1] with 15-bit signed mantissas and an exponent shared by each vector's
+            // coordinates: steps of 2^-14 (rounded to within half of one); normals from 12-bit octahedral
+            // coordinates stored as 16-bit normalized integers: within 2^-10.
+            expectSameTriangles(compressed, plain,
+                                {std::ldexp(1.0f, -14), std::ldexp(1.0f, -10), 0.0f});  // uv: stored exactly
+        }
+}
+
+TEST(GltfMeshopt, BadStreamsAreErrorsNamingTheView) {
+    Grid g = bumpyGrid();
+    // The file as JSON with its compressed views' extension objects (views 0-3) edited.
+    auto edited = [&](const std::function<void(json&)>& edit, const char* mode = "TRIANGLES") {
+        json doc = json::parse(meshoptGrid(g, mode).bytes(false));
+        edit(doc);
+        return rejected("bad.gltf", doc.dump());
+    };
+    auto ext = [](json& d, int view) -> json& {
+        return d["bufferViews"][view]["extensions"]["EXT_meshopt_compression"];
+    };
+    EXPECT_CONTAINS_ALL(
+        edited([&](json& d) { ext(d, 0)["byteLength"] = ext(d, 0)["byteLength"].get<int>() - 8; }),
+        "bad.gltf: bufferViews[0] (EXT_meshopt_compression, mode ATTRIBUTES): its ",
+        "bytes do not decode to 16 elements of 12 bytes (the stream");
+    EXPECT_CONTAINS_ALL(
+        edited([&](json& d) { ext(d, 3)["byteLength"] = ext(d, 3)["byteLength"].get<int>() - 4; }),
+        "bad.gltf: bufferViews[3] (EXT_meshopt_compression, mode TRIANGLES): its ");
+    EXPECT_CONTAINS_ALL(
+        edited([&](json& d) { ext(d, 3)["byteLength"] = ext(d, 3)["byteLength"].get<int>() - 4; }, "INDICES"),
+        "bad.gltf: bufferViews[3] (EXT_meshopt_compression, mode INDICES): its ");
+    // A stream's first byte names its codec and version.
+    EXPECT_CONTAINS_ALL(
+        edited([&](json& d) { ext(d, 2)["byteOffset"] = ext(d, 2)["byteOffset"].get<int>() + 4; }),
+        "bad.gltf: bufferViews[2] (EXT_meshopt_compression, mode ATTRIBUTES): its ",
+        "(not a stream this meshoptimizer (0.18) reads)");
+    EXPECT_CONTAINS_ALL(edited([&](json& d) { ext(d, 1)["count"] = 15; }),
+                        "bad.gltf: bufferViews[1].extensions.EXT_meshopt_compression: 15 elements of 8 bytes "
+                        "(count, byteStride) do not make the view's byteLength 128");
+    EXPECT_CONTAINS_ALL(
+        edited([&](json& d) {
+            ext(d, 1)["filter"] = "QUATERNION";
+            ext(d, 1)["byteStride"] = 4;
+            d["bufferViews"][1].erase("byteStride");
+            ext(d, 1)["count"] = 32;
+        }),
+        "bufferViews[1].extensions.EXT_meshopt_compression.filter: 'QUATERNION' with byteStride 4 "
+        "is not a filter the extension defines");
+    EXPECT_CONTAINS_ALL(
+        edited([&](json& d) { ext(d, 0)["mode"] = "VERTICES"; }),
+        "bufferViews[0].extensions.EXT_meshopt_compression.mode: 'VERTICES' is not ATTRIBUTES, "
+        "TRIANGLES or INDICES");
+    EXPECT_CONTAINS_ALL(
+        edited([&](json& d) { ext(d, 3)["filter"] = "OCTAHEDRAL"; }),
+        "bufferViews[3].extensions.EXT_meshopt_compression.filter: must be NONE in mode TRIANGLES");
+    EXPECT_CONTAINS_ALL(edited([&](json& d) { ext(d, 0)["byteStride"] = 16; }),
+                        "bufferViews[0].extensions.EXT_meshopt_compression.byteStride: 16 differs from the "
+                        "view's byteStride 12");
+    EXPECT_CONTAINS_ALL(edited([&](json& d) { ext(d, 0)["buffer"] = 1; }),
+                        "bufferViews[0].extensions.EXT_meshopt_compression.buffer: buffers[1] has no uri, so "
+                        "holds no compressed data");
+    EXPECT_CONTAINS_ALL(edited([&](json& d) { ext(d, 0).erase("count"); }),
+                        "bufferViews[0].extensions.EXT_meshopt_compression: missing \"count\"");
+    EXPECT_CONTAINS_ALL(edited([&](json& d) { ext(d, 0)["byteLength"] = 2; }),
+                        "bufferViews[0].extensions.EXT_meshopt_compression: its 2 compressed bytes cannot "
+                        "decode to the 192 of the view");
+    // Only compressed views may use the fallback buffer, which has no data.
+    EXPECT_CONTAINS_ALL(edited([&](json& d) { d["bufferViews"][0].erase("extensions"); }),
+                        "bad.gltf: bufferViews[0]: refers to buffers[1], which has no uri");
+    // Without the extension declared, a buffer without a uri is the old error.
+    EXPECT_CONTAINS_ALL(edited([&](json& d) {
+                            d.erase("extensionsUsed");
+                            d.erase("extensionsRequired");
+                        }),
+                        "bad.gltf: buffers[1]: has no uri");
 }
 
 }  // namespace
