@@ -21,6 +21,7 @@
 
 #include <cstdint>
 #include <initializer_list>
+#include <map>
 #include <memory>
 #include <optional>
 #include <string>
@@ -87,16 +88,36 @@ bool isPlaceholderBuffer(const nlohmann::json& root, const Container& container,
 std::vector<MeshoptView> meshoptViews(const nlohmann::json& root, const Container& container,
                                       const std::string& name);
 
-// The file with every placeholder buffer replaced by one byte in a data URI, for tinygltf (which would
-// look for a file, or copy the BIN chunk); empty if the file has none.
-std::string withoutPlaceholderBuffers(std::string_view bytes, const Container& container,
-                                      nlohmann::json root);
-
 // Decodes each view into a buffer of its own, appended to the model, and points the view at it, so that
 // accessors and images read the decoded bytes; throws fp::Error naming the view for data that does not
 // decode to the view's count and stride.
 void decodeMeshoptViews(const std::vector<MeshoptView>& views, tinygltf::Model* model,
                         const std::string& name);
+
+// ---- gltf_tinygltf_input.cpp
+
+// The file as tinygltf 2.7 can read it, and what was taken out of it for that.
+struct TinygltfInput {
+    std::string bytes;  // the file rewritten, or empty if it is read as it is
+    // Each KHR_draco_mesh_compression primitive's indices accessor by (mesh, primitive), taken out of the
+    // JSON: tinygltf refuses an indices accessor without a buffer view, as Draco's are.
+    std::map<std::pair<size_t, size_t>, int> dracoIndices;
+};
+
+// After the schema check: EXT_meshopt_compression's placeholder buffers become one byte in a data URI
+// (tinygltf would look for a file, or copy the BIN chunk), and Draco primitives lose their indices.
+TinygltfInput tinygltfInput(std::string_view bytes, const Container& container, nlohmann::json root);
+
+// ---- gltf_draco.cpp (KHR_draco_mesh_compression)
+
+// Decodes every primitive with the extension (after meshopt decoding) into accessors of their own, which
+// the primitive then names instead (its indices a triangle list of UNSIGNED_INT, each attribute in its
+// accessor's component type), and drops the extension from it. `indices` are the primitives' indices
+// accessors (TinygltfInput), whose counts must agree. Throws fp::Error naming the primitive for data that
+// does not decode or disagrees with the accessors (counts, components, attribute ids missing from the
+// Draco data).
+void decodeDracoPrimitives(tinygltf::Model* model, const std::map<std::pair<size_t, size_t>, int>& indices,
+                           const std::string& name);
 
 // ---- gltf_accessor.cpp
 

@@ -250,19 +250,20 @@ Scene parseGltf(std::string_view bytes, const std::string& name, const GltfLooku
         throw Error(name + ": larger than 4 GiB, more than tinygltf reads");
     Container container = readContainer(bytes, name);
     std::vector<MeshoptView> meshopt;
-    std::string rewritten;  // the file without EXT_meshopt_compression's placeholder buffers, if it has any
+    TinygltfInput input;
     {
         nlohmann::json root = parseJson(container.json, name);
         checkSchema(root, container, name);
         meshopt = meshoptViews(root, container, name);
-        rewritten = withoutPlaceholderBuffers(bytes, container, std::move(root));
+        input = tinygltfInput(bytes, container, std::move(root));
     }
-    if (!rewritten.empty()) {
-        bytes = rewritten;
+    if (!input.bytes.empty()) {
+        bytes = input.bytes;
         container = readContainer(bytes, name);
     }
     tinygltf::Model model = readModel(bytes, container, name, lookup);
     decodeMeshoptViews(meshopt, &model, name);
+    decodeDracoPrimitives(&model, input.dracoIndices, name);
     return buildScene(model, name, lookup);
 }
 

@@ -56,10 +56,6 @@ void appendPrimitive(const tinygltf::Model& model, const MeshInstance& instance,
                      MaterialTable& materials, const std::string& name, Scene* scene, MeshTallies* tallies) {
     const tinygltf::Primitive& primitive = model.meshes[size_t(instance.mesh)].primitives[p];
     std::string where = primitiveName(instance.mesh, p);
-    if (primitive.extensions.count("KHR_draco_mesh_compression"))
-        throw Error(name + ": " + where +
-                    " is compressed with KHR_draco_mesh_compression, which is not supported (save the file "
-                    "without Draco compression)");
     if (!isTriangleMode(primitive.mode)) {
         ++tallies->notTriangles;
         return;

@@ -181,35 +181,4 @@ void decodeMeshoptViews(const std::vector<MeshoptView>& views, tinygltf::Model* 
     }
 }
 
-std::string withoutPlaceholderBuffers(std::string_view bytes, const Container& container, json root) {
-    bool any = false;
-    if (auto buffers = root.find("buffers"); buffers != root.end())
-        for (size_t i = 0; i < buffers->size(); ++i)
-            if (isPlaceholderBuffer(root, container, i)) {
-                // One zero byte for tinygltf to load; the views that refer to it are decoded instead.
-                (*buffers)[i] = {{"byteLength", 1}, {"uri", "data:application/octet-stream;base64,AA=="}};
-                any = true;
-            }
-    if (!any) return {};
-    std::string text = root.dump();
-    if (!container.binary) return text;
-    // A .glb: the new JSON chunk (padded with spaces) before the BIN chunk as it was.
-    while (text.size() % 4) text += ' ';
-    size_t binStart = size_t(container.json.data() - bytes.data()) + container.json.size();
-    uint32_t length = 0;  // the header's, checked by readContainer
-    for (int k = 3; k >= 0; --k) length = (length << 8) | static_cast<unsigned char>(bytes[8 + size_t(k)]);
-    std::string_view rest = bytes.substr(binStart, length - binStart);
-    std::string out = "glTF";
-    auto u32 = [&out](uint64_t v) {
-        for (int k = 0; k < 4; ++k) out += char((v >> (8 * k)) & 0xff);
-    };
-    u32(2);
-    u32(12 + 8 + text.size() + rest.size());
-    u32(text.size());
-    out += "JSON";
-    out += text;
-    out += rest;
-    return out;
-}
-
 }  // namespace fp::gltf

@@ -386,6 +386,10 @@ class Schema {
             index(primitive, p, "indices", "accessors", false);
             index(primitive, p, "material", "materials", false);
             integer(primitive, p, "mode", 0, 6);
+            if (const json* extensions = object(primitive, p, "extensions"))
+                if (const json* draco =
+                        object(*extensions, join(p, "extensions"), "KHR_draco_mesh_compression"))
+                    dracoExtension(*draco, join(p, "extensions.KHR_draco_mesh_compression"));
             if (const json* targets = array(primitive, p, "targets"))
                 for (size_t t = 0; t < targets->size(); ++t) {
                     std::string tp = join(p, "targets") + "[" + std::to_string(t) + "]";
@@ -395,6 +399,15 @@ class Schema {
                         indexValue(item.value(), tp + "." + item.key(), "accessors");
                 }
         }
+    }
+
+    // The Draco data's view, and the attribute ids (gltf_draco.cpp decodes them).
+    void dracoExtension(const json& o, const std::string& path) const {
+        index(o, path, "bufferView", "bufferViews", true);
+        const json* attributes = object(o, path, "attributes", true);
+        for (const auto& item : attributes->items())
+            integerValue(item.value(), join(path, "attributes") + "." + item.key(), 0,
+                         (uint64_t(1) << 31) - 1);
     }
 
     void buffer(const json& o, const std::string& path) const {

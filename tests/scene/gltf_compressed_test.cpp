@@ -6,8 +6,13 @@
 //   (positions through the EXPONENTIAL filter, normals through OCTAHEDRAL, texture coordinates as they
 //   are; indices as TRIANGLES and as INDICES), its fallback buffer a placeholder without data, against
 //   the same grid uncompressed.
+// - KHR_draco_mesh_compression: the same grid encoded in the test with Draco's encoder (positions
+//   quantized to 14 bits, normals 10, texture coordinates 12), against the plain grid.
 // Bad compressed data (truncated, counts that disagree, modes and filters the extension does not
 // define) is one fp::Error naming the file, the buffer view or primitive and the problem.
+#include <draco/compression/decode.h>
+#include <draco/compression/encode.h>
+#include <draco/mesh/mesh.h>
 #include <gtest/gtest.h>
 #include <meshoptimizer.h>
 
@@ -321,6 +326,129 @@ TEST(GltfMeshopt, BadStreamsAreErrorsNamingTheView) {
                             d.erase("extensionsRequired");
                         }),
                         "bad.gltf: buffers[1]: has no uri");
+}
+
+// ---- KHR_draco_mesh_compression
+
+// The grid as a Draco mesh, encoded with Draco's default (edgebreaker) method.
+std::string dracoGrid(const Grid& g) {
+    draco::Mesh mesh;
+    size_t n = g.positions.size();
+    mesh.set_num_points(uint32_t(n));
+    auto add = [&](draco::GeometryAttribute::Type type, int components, const float* values) {
+        draco::GeometryAttribute attribute;
+        attribute.Init(type, nullptr, uint8_t(components), draco::DT_FLOAT32, false,
+                       int64_t(sizeof(float)) * components, 0);
+        int id = mesh.AddAttribute(attribute, true, uint32_t(n));
+        for (size_t i = 0; i < n; ++i)
+            mesh.attribute(id)->SetAttributeValue(draco::AttributeValueIndex(uint32_t(i)),
+                                                  values + i * size_t(components));
+        return id;
+    };
+    add(draco::GeometryAttribute::POSITION, 3, &g.positions[0].x);
+    add(draco::GeometryAttribute::NORMAL, 3, &g.normals[0].x);
+    add(draco::GeometryAttribute::TEX_COORD, 2, &g.uv[0].x);
+    for (size_t t = 0; t < g.indices.size(); t += 3)
+        mesh.AddFace({draco::PointIndex(g.indices[t]), draco::PointIndex(g.indices[t + 1]),
+                      draco::PointIndex(g.indices[t + 2])});
+    draco::Encoder encoder;
+    encoder.SetAttributeQuantization(draco::GeometryAttribute::POSITION, 14);
+    encoder.SetAttributeQuantization(draco::GeometryAttribute::NORMAL, 10);
+    encoder.SetAttributeQuantization(draco::GeometryAttribute::TEX_COORD, 12);
+    draco::EncoderBuffer out;
+    draco::Status status = encoder.EncodeMeshToBuffer(mesh, &out);
+    EXPECT_TRUE(status.ok()) << status.error_msg_string();
+    return std::string(out.data(), out.size());
+}
+
+// A glTF of one primitive whose data is `stream` (attribute ids 0 POSITION, 1 NORMAL, 2 TEXCOORD_0):
+// accessors without buffer views, their counts the decoded mesh's.
+test::GltfBuilder dracoFile(const std::string& stream) {
+    draco::DecoderBuffer buffer;
+    buffer.Init(stream.data(), stream.size());
+    draco::Decoder decoder;
+    auto decoded = decoder.DecodeMeshFromBuffer(&buffer);
+    EXPECT_TRUE(decoded.ok());
+    size_t points = decoded.ok() ? decoded.value()->num_points() : 1;
+    size_t faces = decoded.ok() ? decoded.value()->num_faces() : 1;
+    test::GltfBuilder b;
+    int view = b.view(stream);
+    auto accessor = [&](int componentType, size_t count, const char* type) {
+        return b.push("accessors", {{"componentType", componentType}, {"count", count}, {"type", type}});
+    };
+    json attributes = {{"POSITION", accessor(test::GltfBuilder::kFloat, points, "VEC3")},
+                       {"NORMAL", accessor(test::GltfBuilder::kFloat, points, "VEC3")},
+                       {"TEXCOORD_0", accessor(test::GltfBuilder::kFloat, points, "VEC2")}};
+    json extension = {{"bufferView", view},
+                      {"attributes", {{"POSITION", 0}, {"NORMAL", 1}, {"TEXCOORD_0", 2}}}};
+    b.mesh(json::array({{{"attributes", attributes},
+                         {"indices", accessor(test::GltfBuilder::kUnsignedShort, 3 * faces, "SCALAR")},
+                         {"extensions", {{"KHR_draco_mesh_compression", extension}}}}}));
+    b.node({{"mesh", 0}});
+    b.scene({0});
+    b.doc["extensionsUsed"] = {"KHR_draco_mesh_compression"};
+    b.doc["extensionsRequired"] = {"KHR_draco_mesh_compression"};
+    return b;
+}
+
+TEST(GltfDraco, CompressedGridLoadsAsThePlainOne) {
+    Grid g = bumpyGrid();
+    Scene plain = loadBytes("plain.gltf", plainGrid(g).gltf());
+    test::GltfBuilder b = dracoFile(dracoGrid(g));
+    for (bool glb : {false, true}) {
+        SCOPED_TRACE(glb ? ".glb" : ".gltf");
+        Scene compressed = loadBytes(glb ? "grid.glb" : "grid.gltf", glb ? b.glb() : b.gltf());
+        // Quantized over the attributes' ranges: positions (range 1) in 2^14 steps, texture coordinates
+        // (range 1) in 2^12, each within half a step; normals in Draco's 10-bit octahedral coordinates
+        // (steps of about 2^-9 of the octahedron's side, allowed twice that per coordinate).
+        expectSameTriangles(compressed, plain,
+                            {std::ldexp(1.0f, -14), std::ldexp(1.0f, -8), std::ldexp(1.0f, -12)});
+    }
+}
+
+TEST(GltfDraco, BadDataIsAnErrorNamingThePrimitive) {
+    Grid g = bumpyGrid();
+    std::string stream = dracoGrid(g);
+    auto edited = [&](const std::function<void(test::GltfBuilder&)>& edit, const std::string& data) {
+        test::GltfBuilder b = dracoFile(stream);
+        if (data != stream) {  // the same JSON over other data
+            b.bin = data;
+            b.doc["bufferViews"][0]["byteLength"] = data.size();
+        }
+        edit(b);
+        return rejected("bad.gltf", b.gltf());
+    };
+    auto none = [](test::GltfBuilder&) {};
+    auto ext = [](test::GltfBuilder& b) -> json& {
+        return b.doc["meshes"][0]["primitives"][0]["extensions"]["KHR_draco_mesh_compression"];
+    };
+    const std::string where = "bad.gltf: meshes[0].primitives[0] (KHR_draco_mesh_compression): ";
+    EXPECT_CONTAINS_ALL(edited(none, stream.substr(0, stream.size() / 2)),
+                        where + "bufferViews[0] does not decode (Draco: ");
+    EXPECT_CONTAINS_ALL(edited(none, "DRACO but not really"), where + "bufferViews[0] ");
+    EXPECT_CONTAINS_ALL(edited(none, std::string(64, '\x7f')), where + "bufferViews[0] is not Draco data");
+    EXPECT_CONTAINS_ALL(edited([&](test::GltfBuilder& b) { ext(b)["attributes"]["NORMAL"] = 7; }, stream),
+                        where + "attribute id 7 (NORMAL) is not in the Draco data (which has 3 attributes)");
+    EXPECT_CONTAINS_ALL(edited([](test::GltfBuilder& b) { b.doc["accessors"][1]["count"] = 5; }, stream),
+                        where + "accessors[1] (NORMAL) has 5 elements, but the Draco data has ");
+    EXPECT_CONTAINS_ALL(edited([](test::GltfBuilder& b) { b.doc["accessors"][3]["count"] = 6; }, stream),
+                        where + "accessors[3] (indices) has 6 elements, but the Draco data has 18 triangles");
+    EXPECT_CONTAINS_ALL(edited([](test::GltfBuilder& b) { b.doc["accessors"][2]["type"] = "VEC3"; }, stream),
+                        where + "accessors[2] (TEXCOORD_0) has 3 components, but Draco attribute 2 has 2");
+    EXPECT_CONTAINS_ALL(
+        edited([](test::GltfBuilder& b) { b.doc["meshes"][0]["primitives"][0]["mode"] = 1; }, stream),
+        where + "mode 1 is not TRIANGLES or TRIANGLE_STRIP");
+    // The schema check: the extension's own properties.
+    EXPECT_CONTAINS_ALL(
+        edited([&](test::GltfBuilder& b) { ext(b)["attributes"]["NORMAL"] = -1; }, stream),
+        "bad.gltf: meshes[0].primitives[0].extensions.KHR_draco_mesh_compression.attributes.NORMAL: "
+        "must be in [0, 2147483647], got -1");
+    EXPECT_CONTAINS_ALL(edited([&](test::GltfBuilder& b) { ext(b)["bufferView"] = 4; }, stream),
+                        "bad.gltf: meshes[0].primitives[0].extensions.KHR_draco_mesh_compression.bufferView: "
+                        "bufferViews[4] does not exist");
+    // An attribute the extension does not name is read as usual: here it has no data.
+    EXPECT_CONTAINS_ALL(edited([&](test::GltfBuilder& b) { ext(b)["attributes"].erase("NORMAL"); }, stream),
+                        "bad.gltf: accessors[1] (NORMAL of meshes[0].primitives[0]) has no bufferView");
 }
 
 }  // namespace

@@ -72,12 +72,14 @@ TEST(GltfReject, RequiredExtensionsWeDoNotImplement) {
     EXPECT_CONTAINS_ALL(requiring("KHR_materials_clearcoat"),
                         "bad.gltf: the file requires the extension KHR_materials_clearcoat, which fragpath "
                         "does not implement");
-    // A Draco primitive the file does not declare as required still cannot be drawn.
+    // A Draco primitive is decoded whether or not the file declares the extension (its data is checked:
+    // tests/scene/gltf_compressed_test.cpp).
     std::string message = rejectedEdit([](json& d) {
-        d["meshes"][0]["primitives"][0]["extensions"] = {{"KHR_draco_mesh_compression", {{"bufferView", 0}}}};
+        d["meshes"][0]["primitives"][0]["extensions"] = {
+            {"KHR_draco_mesh_compression", {{"bufferView", 0}, {"attributes", {{"POSITION", 0}}}}}};
     });
     EXPECT_CONTAINS_ALL(message,
-                        "bad.gltf: meshes[0].primitives[0] is compressed with KHR_draco_mesh_compression");
+                        "bad.gltf: meshes[0].primitives[0] (KHR_draco_mesh_compression): bufferViews[0] ");
 }
 
 TEST(GltfReject, SchemaErrorsNameTheProperty) {
