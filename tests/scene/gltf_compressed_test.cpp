@@ -1,7 +1,8 @@
 // Compressed glTF meshes load to the triangles of their uncompressed originals:
 // - KHR_mesh_quantization: the Khronos sample AnimatedMorphCube, quantized by gltfpack (BYTE normals,
 //   UNSIGNED_SHORT positions dequantized by its node's scale and translation), against its float
-//   glTF-Binary variant.
+//   glTF-Binary variant; and a bumpy grid quantized in the test (integer positions, normalized BYTE
+//   normals and UNSIGNED_SHORT texture coordinates) against the same grid in floats.
 // - EXT_meshopt_compression: a small bumpy grid encoded in the test with meshoptimizer's encoders
 //   (positions through the EXPONENTIAL filter, normals through OCTAHEDRAL, texture coordinates as they
 //   are; indices as TRIANGLES and as INDICES), its fallback buffer a placeholder without data, against
@@ -155,6 +156,53 @@ test::GltfBuilder plainGrid(const Grid& g) {
     b.node({{"mesh", 0}});
     b.scene({0});
     return b;
+}
+
+// ---- KHR_mesh_quantization
+
+// The grid quantized as gltfpack does without normalizing positions: UNSIGNED_SHORT positions (in steps
+// of 1/1000, offset by 1) that its node scales and translates back, normalized BYTE normals (stride 4),
+// normalized UNSIGNED_SHORT texture coordinates.
+test::GltfBuilder quantizedGrid(const Grid& g) {
+    test::GltfBuilder b;
+    std::vector<uint16_t> p, uv;
+    std::vector<int8_t> n;
+    for (size_t i = 0; i < g.positions.size(); ++i) {
+        for (int c = 0; c < 3; ++c) p.push_back(uint16_t(std::lround((g.positions[i][c] + 1.0f) * 1000.0f)));
+        p.push_back(0);
+        for (int c = 0; c < 3; ++c) n.push_back(int8_t(std::lround(g.normals[i][c] * 127.0f)));
+        n.push_back(0);
+        for (int c = 0; c < 2; ++c) uv.push_back(uint16_t(std::lround(g.uv[i][c] * 65535.0f)));
+    }
+    size_t count = g.positions.size();
+    auto accessor = [&](const std::string& bytes, int stride, int componentType, bool normalized,
+                        const char* type) {
+        json extra = stride ? json{{"byteStride", stride}} : json::object();
+        return b.push("accessors", {{"bufferView", b.view(bytes, extra)},
+                                    {"componentType", componentType},
+                                    {"normalized", normalized},
+                                    {"count", count},
+                                    {"type", type}});
+    };
+    json attributes = {{"POSITION", accessor(test::GltfBuilder::raw(p), 8, 5123, false, "VEC3")},
+                       {"NORMAL", accessor(test::GltfBuilder::raw(n), 4, 5120, true, "VEC3")},
+                       {"TEXCOORD_0", accessor(test::GltfBuilder::raw(uv), 0, 5123, true, "VEC2")}};
+    std::vector<uint16_t> indices(g.indices.begin(), g.indices.end());
+    b.mesh(json::array({{{"attributes", attributes}, {"indices", b.indices16(indices)}}}));
+    b.node({{"mesh", 0}, {"scale", {0.001, 0.001, 0.001}}, {"translation", {-1, -1, -1}}});
+    b.scene({0});
+    b.doc["extensionsUsed"] = {"KHR_mesh_quantization"};
+    b.doc["extensionsRequired"] = {"KHR_mesh_quantization"};
+    return b;
+}
+
+TEST(GltfQuantized, IntegerPositionsNormalizedNormalsAndTexcoordsLoadAsThePlainGrid) {
+    Grid g = bumpyGrid();
+    Scene plain = loadBytes("plain.gltf", plainGrid(g).gltf());
+    Scene quantized = loadBytes("grid.gltf", quantizedGrid(g).gltf());
+    // Half a step each: positions 1/2000, normals 1/254 per coordinate (then renormalized, allow 2/127),
+    // texture coordinates 1/131070.
+    expectSameTriangles(quantized, plain, {0.5e-3f + 1e-6f, 2.0f / 127.0f, 1e-5f});
 }
 
 // ---- EXT_meshopt_compression
