@@ -5,6 +5,9 @@
 //      (tinygltf 2.7 reads an image's bufferView unchecked, silently ignores wrongly typed optional
 //      properties and wraps indices beyond 2^31) and every message names the property ("nodes[3].mesh").
 //   2. gltf_loader.cpp: tinygltf itself, with our file access and image callbacks; the conversion.
+//      Around it, for compressed meshes: gltf_meshopt.cpp checks EXT_meshopt_compression's views,
+//      gltf_tinygltf_input.cpp rewrites what tinygltf 2.7 would refuse (placeholder buffers, Draco's
+//      indices without a buffer view), then gltf_meshopt.cpp and gltf_draco.cpp decode into the model.
 //   3. gltf_nodes.cpp: the node forest (trees, no cycles), world transforms, the camera.
 //   4. gltf_accessor.cpp: bounds-checked reading of accessors.
 //   5. gltf_mesh.cpp: primitives to world-space triangles.
