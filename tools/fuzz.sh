@@ -11,7 +11,9 @@ cmake --build build-fuzz --target obj_fuzz scene_fuzz gltf_fuzz -j 2
 for target in obj scene gltf; do
     mkdir -p build-fuzz/corpus_$target
     echo "fuzzing the $target loader for ${seconds}s"
-    (cd build-fuzz && ./${target}_fuzz -max_total_time="$seconds" -max_len=4096 -timeout=10 \
+    dict=()  # a dictionary of the format's words, if the harness has one (tests/fuzz/gltf.dict)
+    [ -f tests/fuzz/$target.dict ] && dict=(-dict=../tests/fuzz/$target.dict)
+    (cd build-fuzz && ./${target}_fuzz -max_total_time="$seconds" -max_len=4096 -timeout=10 "${dict[@]}" \
         corpus_$target ../tests/fuzz/corpus/$target 2>&1 | tail -n 3)
 done
 echo "fuzz: no crashes"

@@ -65,6 +65,9 @@ nlohmann::json parseJson(std::string_view text, const std::string& name);
 // "<name>: <json path>: <problem>".
 void checkSchema(const nlohmann::json& root, const Container& container, const std::string& name);
 
+// A JSON value as messages quote it: at most 60 characters.
+std::string shown(const nlohmann::json& value);
+
 // The extensions the loader implements (the others in extensionsUsed are ignored with a warning).
 bool isImplementedExtension(const std::string& extension);
 

@@ -33,7 +33,7 @@ uint64_t integer(const json& extension, const char* key, uint64_t lo, const std:
     if (!it->is_number_integer() || !it->is_number_unsigned() || it->get<uint64_t>() < lo ||
         it->get<uint64_t>() > hi)
         throw Error(name + ": " + path + "." + key + ": must be an integer in [" + std::to_string(lo) + ", " +
-                    std::to_string(hi) + "], got " + it->dump());
+                    std::to_string(hi) + "], got " + shown(*it));
     return it->get<uint64_t>();
 }
 
@@ -42,7 +42,7 @@ std::string word(const json& extension, const char* key, const char* fallback, c
     auto it = extension.find(key);
     if (it == extension.end()) return fallback;
     if (!it->is_string())
-        throw Error(name + ": " + path + "." + key + ": must be a string, got " + it->dump());
+        throw Error(name + ": " + path + "." + key + ": must be a string, got " + shown(*it));
     return it->get<std::string>();
 }
 
@@ -77,7 +77,7 @@ std::vector<MeshoptView> meshoptViews(const json& root, const Container& contain
             continue;
         }
         path += ".extensions." + std::string(kExtension);
-        if (!extension->is_object()) fail(path, "must be a JSON object, got " + extension->dump());
+        if (!extension->is_object()) fail(path, "must be a JSON object, got " + shown(*extension));
         MeshoptView m;
         m.view = i;
         uint64_t buffer = integer(*extension, "buffer", 0, path, true, 0, name);
@@ -92,8 +92,8 @@ std::vector<MeshoptView> meshoptViews(const json& root, const Container& contain
         m.byteLength = integer(*extension, "byteLength", 1, path, true, 0, name);
         m.byteStride = integer(*extension, "byteStride", 1, path, true, 0, name);
         m.count = integer(*extension, "count", 1, path, true, 0, name);
-        m.mode = word(*extension, "mode", "", path, name);
-        m.filter = word(*extension, "filter", "NONE", path, name);
+        m.mode = word(*extension, "mode", "", path, name).substr(0, 40);  // quoted in messages
+        m.filter = word(*extension, "filter", "NONE", path, name).substr(0, 40);
         uint64_t bufferLength = buffers[buffer].at("byteLength").get<uint64_t>();
         if (m.byteOffset > bufferLength || m.byteLength > bufferLength - m.byteOffset)
             fail(path, "bytes " + std::to_string(m.byteOffset) + " and " + std::to_string(m.byteLength) +

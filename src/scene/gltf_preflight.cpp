@@ -31,11 +31,6 @@ uint32_t littleEndian32(std::string_view bytes, uint64_t at) {
     return v;
 }
 
-std::string shown(const json& value) {
-    std::string text = value.dump(-1, ' ', false, json::error_handler_t::replace);
-    return text.size() > 60 ? text.substr(0, 57) + "..." : text;
-}
-
 std::string withoutId(const json::exception& e) {
     std::string what = e.what();
     size_t start = what.find("] ");
@@ -594,6 +589,11 @@ class Schema {
 };
 
 }  // namespace
+
+std::string shown(const json& value) {
+    std::string text = value.dump(-1, ' ', false, json::error_handler_t::replace);
+    return text.size() > 60 ? text.substr(0, 57) + "..." : text;
+}
 
 bool isImplementedExtension(const std::string& extension) {
     return extension == "KHR_materials_emissive_strength" || extension == "KHR_materials_transmission" ||
