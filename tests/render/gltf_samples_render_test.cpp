@@ -6,6 +6,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <map>
+#include <optional>
 
 #include "gltf_samples.h"
 #include "render_test_util.h"
@@ -19,14 +21,16 @@ namespace {
 constexpr int kWidth = 64, kHeight = 48, kSpp = 4;
 
 // One render of `path` with the plain command's defaults (RenderRequest, as `fragpath render PATH`
-// reads them) at kWidth x kHeight and kSpp, with the same camera's depth (0 where no surface is seen)
-// and, optionally, another debug view.
+// reads them) at kWidth x kHeight and kSpp, with the first-hit guides the denoisers use (which change
+// nothing in the radiance and cost no second shader compile): per pixel, the mean over the samples of
+// the distance to the first surface (0 where none is seen), its shading normal (the side facing the
+// camera) and its albedo.
 struct DefaultRender {
     Scene scene;
-    Image radiance, depth, view;
+    Image radiance, depth, normal, albedo;
 };
 
-DefaultRender renderWithDefaults(const std::string& path, View view = View::Radiance) {
+DefaultRender renderWithDefaults(const std::string& path) {
     ensureGlContext();
     const std::vector<std::string> argv = {path, "--size",
                                            std::to_string(kWidth) + "x" + std::to_string(kHeight), "--spp",
@@ -35,17 +39,18 @@ DefaultRender renderWithDefaults(const std::string& path, View view = View::Radi
     DefaultRender out;
     out.scene = request.loadScene();
     RenderSettings settings = request.settings(out.scene);
-    const Camera camera = request.camera(out.scene);
+    settings.guides = true;
     Renderer renderer(out.scene, testShaders());
-    renderer.configure(settings, camera);
+    renderer.configure(settings, request.camera(out.scene));
     renderer.render(request.spp(out.scene));
-    out.radiance = renderer.readback().mean();
-    for (View v : {View::Depth, view}) {
-        if (v == View::Radiance) continue;
-        settings.view = v;
-        renderer.configure(settings, camera);
-        renderer.render(1);
-        (v == View::Depth ? out.depth : out.view) = renderer.readback().mean();
+    const Accumulation a = renderer.readback();
+    out.radiance = a.mean();
+    out.depth = out.normal = out.albedo = Image(a.width, a.height);
+    for (size_t i = 0; i < a.albedo.size(); ++i) {
+        const float samples = std::max(a.albedo[i].w, 1.0f);
+        out.depth.pixels[i] = glm::vec3(a.normalDepth[i].w / samples);
+        out.normal.pixels[i] = glm::vec3(a.normalDepth[i]) / samples;
+        out.albedo.pixels[i] = glm::vec3(a.albedo[i]) / samples;
     }
     return out;
 }
@@ -57,14 +62,17 @@ double coverage(const DefaultRender& r) {
     return double(seen) / double(r.depth.pixels.size());
 }
 
-// The mean luminance of the radiance where a surface is seen.
-double meanOnModel(const DefaultRender& r) {
+double luminanceOf(const glm::vec3& p) {
+    return 0.2126 * p.x + 0.7152 * p.y + 0.0722 * p.z;
+}
+
+// The mean luminance of `image` where a surface is seen.
+double meanOnModel(const DefaultRender& r, const Image& image) {
     double sum = 0.0;
     int n = 0;
     for (size_t i = 0; i < r.depth.pixels.size(); ++i)
         if (r.depth.pixels[i].x > 0.0f) {
-            const glm::vec3& p = r.radiance.pixels[i];
-            sum += 0.2126 * p.x + 0.7152 * p.y + 0.0722 * p.z;
+            sum += luminanceOf(image.pixels[i]);
             ++n;
         }
     return n == 0 ? 0.0 : sum / n;
@@ -76,10 +84,10 @@ struct SampleModel {
     const char* file;
 };
 
-// One variant of each of the 14 models. AnimatedMorphCube's glTF-Quantized needs KHR_mesh_quantization
-// and is left to the compressed-mesh tests.
+// One variant of each of the 14 models, and AnimatedMorphCube's glTF-Quantized as well.
 const SampleModel kSamples[] = {
     {"AnimatedMorphCube", "glTF-Binary", "AnimatedMorphCube.glb"},
+    {"AnimatedMorphCube", "glTF-Quantized", "AnimatedMorphCube.gltf"},
     {"Box With Spaces", "glTF", "Box With Spaces.gltf"},
     {"Cameras", "glTF", "Cameras.gltf"},
     {"MultiUVTest", "glTF-Binary", "MultiUVTest.glb"},
@@ -96,18 +104,35 @@ const SampleModel kSamples[] = {
 };
 
 // Every model renders, seen and lit: finite radiance everywhere, the model over at least 5 % of the
-// image (a camera behind it, or edge-on to a flat one, sees less), and its mean above 0.05 (the studio
-// light gives a grey surface of albedo 0.5 about 0.4; unlit, it would be black).
+// image (a camera behind a flat model, or edge-on to it, sees less), and its mean radiance at least a
+// fifth of its mean albedo (the studio light shows a grey surface facing the camera at about 0.65 of its
+// albedo, a surface facing away at about a third; unlit, it would be black).
+// Two files need extensions that other parts of issue 34 add: until then each must fail with the
+// loader's clear message, after which it renders like the rest.
 TEST(GltfSamples, EveryModelRendersSeenAndLitWithThePlainDefaults) {
     WarningCapture quiet;  // the models' own warnings (ignored occlusion maps, ...) are not tested here
+    const std::map<std::string, std::string> pending = {
+        {"UnlitTest", "requires the extension KHR_materials_unlit, which fragpath does not implement"},
+        {"AnimatedMorphCube/glTF-Quantized", "KHR_mesh_quantization"}};
     for (const SampleModel& m : kSamples) {
-        SCOPED_TRACE(m.name);
-        const DefaultRender r = renderWithDefaults(gltfSample(m.name, m.variant, m.file));
+        SCOPED_TRACE(std::string(m.name) + "/" + m.variant);
+        const auto waiting = pending.count(m.name) ? pending.find(m.name)
+                                                   : pending.find(std::string(m.name) + "/" + m.variant);
+        std::optional<DefaultRender> rendered;
+        try {
+            rendered = renderWithDefaults(gltfSample(m.name, m.variant, m.file));
+        } catch (const Error& e) {
+            ASSERT_NE(waiting, pending.end()) << e.what();
+            EXPECT_NE(std::string(e.what()).find(waiting->second), std::string::npos) << e.what();
+            continue;
+        }
+        const DefaultRender& r = *rendered;
         ASSERT_EQ(r.radiance.width, kWidth);
         for (const glm::vec3& p : r.radiance.pixels)
             ASSERT_TRUE(std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z));
         EXPECT_GT(coverage(r), 0.05);
-        EXPECT_GT(meanOnModel(r), 0.05);
+        EXPECT_GT(meanOnModel(r, r.radiance), 0.2 * meanOnModel(r, r.albedo));
+        EXPECT_GT(meanOnModel(r, r.radiance), 0.01);
     }
 }
 
@@ -116,32 +141,27 @@ TEST(GltfSamples, EveryModelRendersSeenAndLitWithThePlainDefaults) {
 TEST(GltfSamples, TwoSidedPlaneIsSeenNotEdgeOn) {
     const DefaultRender r = renderWithDefaults(gltfSample("TwoSidedPlane", "glTF", "TwoSidedPlane.gltf"));
     EXPECT_GT(coverage(r), 0.15);
-    EXPECT_GT(meanOnModel(r), 0.05);
+    EXPECT_GT(meanOnModel(r, r.radiance), 0.2 * meanOnModel(r, r.albedo));
 }
 
 // OrientationTest is a cube with an arrow on each face; its +z face carries the blue arrow (rotations
 // about z by quaternion), the -z face the yellow one (the same by matrix). Seen from the front (+z),
-// the normals facing the camera point along +z and blue shows, yellow does not; from the old -z side it
-// was the other way round.
+// the first hits' normals (facing the camera) point along +z, none along -z, and the blue arrow's
+// albedo shows, the yellow one's does not; from the old -z side it was the other way round.
 TEST(GltfSamples, OrientationTestIsSeenFromTheFront) {
-    const DefaultRender normals =
-        renderWithDefaults(gltfSample("OrientationTest", "glTF-Binary", "OrientationTest.glb"), View::Normal);
-    int towardsPlusZ = 0, towardsMinusZ = 0;
-    for (const glm::vec3& n : normals.view.pixels) {
-        // The normal view maps n to 0.5 n + 0.5; a miss is 0 (z 0 too, so it counts as neither).
-        if (n == glm::vec3(0.0f)) continue;
-        towardsPlusZ += n.z > 0.9f ? 1 : 0;
-        towardsMinusZ += n.z < 0.1f ? 1 : 0;
-    }
-    EXPECT_GT(towardsPlusZ, kWidth * kHeight / 10);
-    EXPECT_EQ(towardsMinusZ, 0);
-    const DefaultRender albedo =
-        renderWithDefaults(gltfSample("OrientationTest", "glTF-Binary", "OrientationTest.glb"), View::Albedo);
-    int blue = 0, yellow = 0;
-    for (const glm::vec3& a : albedo.view.pixels) {
+    const DefaultRender r =
+        renderWithDefaults(gltfSample("OrientationTest", "glTF-Binary", "OrientationTest.glb"));
+    int towardsPlusZ = 0, towardsMinusZ = 0, blue = 0, yellow = 0;
+    for (size_t i = 0; i < r.depth.pixels.size(); ++i) {
+        if (!(r.depth.pixels[i].x > 0.0f)) continue;
+        const glm::vec3 n = r.normal.pixels[i], a = r.albedo.pixels[i];
+        towardsPlusZ += n.z > 0.8f ? 1 : 0;
+        towardsMinusZ += n.z < -0.2f ? 1 : 0;
         blue += a.z > 0.3f && a.x < 0.1f && a.y < 0.1f ? 1 : 0;
         yellow += a.x > 0.3f && a.y > 0.3f && a.z < 0.1f ? 1 : 0;
     }
+    EXPECT_GT(towardsPlusZ, kWidth * kHeight / 10);
+    EXPECT_EQ(towardsMinusZ, 0);
     EXPECT_GT(blue, 20);
     EXPECT_EQ(yellow, 0);
 }
@@ -172,7 +192,7 @@ TEST(GltfSamples, AModelWithAGlowingPatchIsLit) {
     EXPECT_TRUE(r.scene.environment.hasMap());
     // The patch covers under a tenth of the model's pixels: the rest must be lit by the studio.
     EXPECT_GT(coverage(r), 0.2);
-    EXPECT_GT(meanOnModel(r), 0.1);
+    EXPECT_GT(meanOnModel(r, r.radiance), 0.2 * 0.5);
 }
 
 }  // namespace
