@@ -201,6 +201,24 @@ TEST(RenderRequest, TheSceneIsThePositionalArgumentUnlessTheFrontEndSaysOtherwis
     EXPECT_FALSE(request({"a.exr", "b.exr"}, merge, kDisplayOptions).scenePath());
 }
 
+// A scene without a camera is framed for the image's aspect ratio (scene/scene.h frameBounds): a wide
+// model in a wide image is seen from closer than in a tall one, where its width must fit the narrow
+// horizontal field of view.
+TEST(RenderRequest, TheDefaultFramingFitsTheImagesAspectRatio) {
+    Scene wide;
+    wide.materials.push_back(Material{});
+    Triangle t;
+    t.p = {glm::vec3(-10, 0, 0), glm::vec3(10, 0, 0), glm::vec3(0, 1, 0)};
+    wide.triangles.push_back(t);
+    const Camera inWide = request({"--size", "400x100"}).camera(wide);
+    const Camera inTall = request({"--size", "100x400"}).camera(wide);
+    EXPECT_EQ(inWide.eye, frameBounds(wide.bounds(), 40.0f, 4.0f).eye);
+    EXPECT_EQ(inTall.eye, frameBounds(wide.bounds(), 40.0f, 0.25f).eye);
+    EXPECT_LT(glm::length(inWide.eye - inWide.target), 0.5f * glm::length(inTall.eye - inTall.target));
+    // A camera flag still overrides the framing's.
+    EXPECT_EQ(request({"--size", "400x100", "--eye", "0,0,-7"}).camera(wide).eye, glm::vec3(0, 0, -7));
+}
+
 // What each --environment choice does to a scene without light (one Lambertian triangle).
 TEST(RenderRequest, EnvironmentChoicesLightAScene) {
     Scene bare;
