@@ -1,7 +1,6 @@
 #include "scene/lighting.h"
 
 #include <cmath>
-#include <cstdio>
 
 #include "core/error.h"
 #include "core/log.h"
@@ -36,12 +35,6 @@ bool hasEmitters(const Scene& scene) {
     return false;
 }
 
-std::string fixed2(double x) {
-    char text[32];
-    std::snprintf(text, sizeof text, "%.2f", x);
-    return text;
-}
-
 }  // namespace
 
 bool hasLight(const Scene& scene) {
@@ -60,9 +53,10 @@ bool lightIfUnlit(Scene& scene, DefaultLight light) {
     if (hasEmitters(scene)) {
         const OwnLightEstimate own = estimateOwnLight(scene);
         if (own.lightsTheScene()) return false;
-        why = "its emitters are glowing detail, not lighting (" + fixed2(100.0 * own.enclosure) +
-              "% of their light stays in the scene, " + fixed2(own.ownToStudio) +
-              "x the studio's light on its surfaces)";
+        why = formatText(
+            "its emitters are glowing detail, not lighting (%.2f%% of their light stays in the "
+            "scene, %.2fx the studio's light on its surfaces)",
+            100.0 * own.enclosure, own.ownToStudio);
     }
     const bool studio = light == DefaultLight::Studio;
     note((scene.source.empty() ? std::string() : scene.source + ": ") + why + ": lit by " +
