@@ -17,7 +17,8 @@ namespace fp {
 // - a fill light, dimmer and wider, from the front right, low (kStudioFill, 30 fading to 45 degrees).
 // Neutral (equal channels) and of moderate dynamic range (kStudioKey / kStudioGround = 20), so that the
 // environment map's importance sampling (pack/environment.h) finds the key without fireflies. A
-// Lambertian surface of albedo 0.8 facing the camera shows about 0.65, within the clamp tone map.
+// Lambertian surface facing +z (the default camera) shows 0.87 of its albedo after one bounce, one facing
+// up 1.01 (measured, 256 spp), so an albedo of 0.8 stays within the clamp tone map.
 glm::vec3 studioRadiance(const glm::vec3& d);
 
 constexpr float kStudioGround = 0.2f, kStudioHorizon = 0.4f, kStudioZenith = 0.6f;

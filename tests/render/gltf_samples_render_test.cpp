@@ -105,7 +105,7 @@ const SampleModel kSamples[] = {
 
 // Every model renders, seen and lit: finite radiance everywhere, the model over at least 5 % of the
 // image (a camera behind a flat model, or edge-on to it, sees less), and its mean radiance at least a
-// fifth of its mean albedo (the studio light shows a grey surface facing the camera at about 0.65 of its
+// fifth of its mean albedo (the studio light shows a surface facing the camera at 0.87 of its
 // albedo, a surface facing away at about a third; unlit, it would be black).
 // Two files need extensions that other parts of issue 34 add: until then each must fail with the
 // loader's clear message, after which it renders like the rest.
