@@ -4,7 +4,9 @@
 
 #include <fstream>
 
+#include "core/log.h"
 #include "gltf_test_util.h"
+#include "scene/lighting.h"
 #include "scene/load.h"
 #include "scene/own_light.h"
 #include "scene/procedural.h"
@@ -79,6 +81,12 @@ TEST(OwnLight, TheCornellBoxAsGltfIsLitByItsLamp) {
     EXPECT_GT(e.enclosure, 0.6);
     EXPECT_GT(e.ownToStudio, 1.0);
     EXPECT_TRUE(e.lightsTheScene());
+    // So the default light leaves it alone: no environment, no note.
+    Scene lit = gltf;
+    WarningCapture capture;
+    EXPECT_FALSE(lightIfUnlit(lit));
+    EXPECT_TRUE(lit.environment.isBlack());
+    EXPECT_TRUE(capture.notes().empty());
 }
 
 TEST(OwnLight, TheProjectsLitRoomsAreLitByTheirLamps) {
