@@ -63,8 +63,10 @@ const char* kBenchNotes =
 // and the suite renders every scene at one size.
 constexpr unsigned kBenchOptions = kSizeOption | kSppOption | kIntegratorOption | kPathOptions |
                                    kSamplingOptions | kCameraOptions | kShaderOptions | kSceneOptions;
-FrontEndDefaults benchDefaults(bool suite) {
+FrontEndDefaults benchDefaults(bool suite, bool native = false) {
     FrontEndDefaults d = FrontEndDefaults::ownImage(glm::ivec2(suite ? 256 : 512), suite ? 2 : 8);
+    // The native reference has constant skies only: with --native an unlit scene gets the uniform sky.
+    if (native) d.defaultLight = DefaultLight::UniformSky;
     d.sceneSize = !suite;
     d.samplesPerPass = 8;  // the timed runs' (about 5 % less CPU per path than 1 on llvmpipe)
     return d;
@@ -173,7 +175,7 @@ int benchCommand(const std::vector<std::string>& argv) {
     if (suite && !args.positional().empty()) throw Error("bench --suite takes no scene file");
     if (suite && args.has("--environment"))
         throw Error("--environment goes with a scene file, not --suite (the suite's scenes are lit)");
-    const RenderRequest request(args, benchDefaults(suite));
+    const RenderRequest request(args, benchDefaults(suite, args.has("--native")));
 
     bench::BenchSettings settings;
     settings.request = request;

@@ -114,7 +114,10 @@ RenderSettings BenchSettings::renderFor(const Scene& scene) const {
 }
 
 Camera BenchSettings::cameraFor(const Scene& scene) const {
-    return request ? request->camera(scene) : scene.camera.value_or(frameBounds(scene.bounds()));
+    if (request) return request->camera(scene);
+    const RenderSettings r = renderFor(scene);
+    return scene.camera.value_or(
+        frameBounds(scene.bounds(), Camera().fovY, float(r.width) / float(r.height)));
 }
 
 SceneMeasurement measureScene(const std::function<Scene()>& load, const BenchSettings& settings) {

@@ -26,6 +26,14 @@ void warn(const std::string& message) {
     std::fprintf(stderr, "warning: %s\n", message.c_str());
 }
 
+void note(const std::string& message) {
+    if (activeCapture) {
+        activeCapture->notes_.push_back(message);
+        return;
+    }
+    std::fprintf(stderr, "note: %s\n", message.c_str());
+}
+
 WarningCapture::WarningCapture() : previous_(activeCapture) {
     activeCapture = this;
 }

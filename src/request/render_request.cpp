@@ -1,5 +1,6 @@
 #include "request/render_request.h"
 
+#include <cctype>
 #include <filesystem>
 
 #include "core/error.h"
@@ -9,10 +10,19 @@
 #include "scene/instancing.h"
 #include "scene/lighting.h"
 #include "scene/load.h"
+#include "scene/studio_environment.h"
 
 namespace fp {
 
 namespace {
+
+// A constant colour for --environment: a number, or three separated by commas ("0.5", "1,0.9,0.8"). A
+// file name that starts with a digit is still a file when it has a map's extension.
+bool looksLikeColor(const std::string& text) {
+    if (text.empty() || isEnvironmentMapPath(text)) return false;
+    const char c = text[0];
+    return std::isdigit(static_cast<unsigned char>(c)) || c == '.' || c == '-' || c == '+';
+}
 
 std::string sizeText(glm::ivec2 size) {
     return std::to_string(size.x) + "x" + std::to_string(size.y);
@@ -39,13 +49,15 @@ std::vector<OptionGroup> requestOptionGroups(unsigned options, const FrontEndDef
     if (options & kSceneOptions) {
         scene.options.push_back(
             {"--environment", "", "ENV",
-             "none | default | FILE.hdr | FILE.exr\ndefault (if not given): the scene file's; a scene with "
-             "no "
-             "light at all\ngets a uniform white sky of radiance 1, with a warning | none: black,\nno "
-             "environment | FILE: that equirectangular map instead of the scene's"});
-        scene.options.push_back({"--strict", "", "",
-                                 "every warning about repaired input (a missing texture, no light, ...)\nis "
-                                 "an error: exit status 1 instead of a repaired render"});
+             "default | studio | none | X | R,G,B | FILE.hdr | FILE.exr\ndefault (if not given): the scene "
+             "file's; a model with no light of its\nown (emitters that are only glowing detail do not count) "
+             "gets the\nstudio environment, with a note | studio: that soft key, fill and\ngrey floor "
+             "instead of the scene's | none: black, no environment |\nX or R,G,B: a constant sky of that "
+             "radiance (1: the white furnace's) |\nFILE: that equirectangular map instead of the scene's"});
+        scene.options.push_back(
+            {"--strict", "", "",
+             "every warning about repaired input (a missing texture, a dropped\ntriangle, ...) is "
+             "an error: exit status 1 instead of a repaired render"});
         scene.options.push_back({"--flatten-instances", "", "",
                                  "store a glTF mesh that several nodes use once per node instead of\nonce "
                                  "(one BVH over every triangle, no two-level traversal)"});
@@ -188,10 +200,24 @@ RenderRequest::RenderRequest(const Args& args, const FrontEndDefaults& defaults)
     if (auto t = args.text("--environment")) {
         if (*t == "none") {
             environment_ = EnvironmentChoice::None;
+        } else if (*t == "studio") {
+            environment_ = EnvironmentChoice::Studio;
+        } else if (looksLikeColor(*t)) {
+            environment_ = EnvironmentChoice::Constant;
+            environmentColor_ = t->find(',') != std::string::npos ? *args.vec3("--environment")
+                                                                  : glm::vec3(*args.number("--environment"));
+            for (int c = 0; c < 3; ++c)
+                if (!(environmentColor_[c] >= 0.0f))
+                    throw Error(
+                        "option --environment: a colour's radiance is 0 or more in each channel, got '" + *t +
+                        "'");
         } else if (*t != "default") {
             if (!isEnvironmentMapPath(*t))
-                throw Error("option --environment: expected none, default or an .hdr or .exr file, got '" +
-                            *t + "'");
+                throw Error(
+                    "option --environment: expected none, default, studio, a colour (X or R,G,B) or an .hdr "
+                    "or "
+                    ".exr file, got '" +
+                    *t + "'");
             std::error_code ec;
             if (!std::filesystem::is_regular_file(*t, ec))
                 throw Error("option --environment: " + *t + ": no such file");
@@ -212,7 +238,14 @@ Scene RenderRequest::prepareScene(Scene scene) const {
     if (flattenInstances_ && !scene.instances.empty()) scene = flattenInstances(std::move(scene));
     switch (environment_) {
         case EnvironmentChoice::Default:
-            lightIfUnlit(scene);
+            lightIfUnlit(scene, defaults_.defaultLight);
+            break;
+        case EnvironmentChoice::Studio:
+            scene.environment = studioEnvironment();
+            break;
+        case EnvironmentChoice::Constant:
+            scene.environment = Environment();
+            scene.environment.color = environmentColor_;
             break;
         case EnvironmentChoice::None:
             scene.environment = Environment();
@@ -253,8 +286,13 @@ int RenderRequest::spp(const Scene& scene) const {
     return defaults_.spp;
 }
 
+Camera RenderRequest::framingCamera(const Scene& scene) const {
+    const RenderSettings s = settings(scene);
+    return frameBounds(scene.bounds(), Camera().fovY, float(s.width) / float(s.height));
+}
+
 Camera RenderRequest::camera(const Scene& scene) const {
-    Camera camera = scene.camera.value_or(frameBounds(scene.bounds()));
+    Camera camera = scene.camera ? *scene.camera : framingCamera(scene);
     if (eye_) camera.eye = *eye_;
     if (target_) camera.target = *target_;
     if (up_) camera.up = *up_;

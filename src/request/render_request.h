@@ -14,6 +14,7 @@
 
 #include "image/image.h"
 #include "request/args.h"
+#include "scene/lighting.h"
 #include "scene/scene.h"
 #include "settings/render_settings.h"
 
@@ -32,15 +33,18 @@ enum RequestOption : unsigned {
     kDisplayOptions = 1u << 7,    // --exposure, --tonemap
     kShaderOptions = 1u << 8,     // --shader-dir, --bvh-threads
     kBackendOption = 1u << 9,     // --backend NAME
-    kSceneOptions = 1u << 10,     // --environment none|default|FILE, --strict, --flatten-instances
+    kSceneOptions = 1u << 10,     // --environment ENV, --strict, --flatten-instances
 };
 constexpr unsigned kAllRequestOptions = (1u << 11) - 1;
 
 // What --environment asks for.
 enum class EnvironmentChoice {
-    Default,  // the scene's environment; a scene without any light gets the default sky (scene/lighting.h)
-    None,     // no environment at all: black wherever no surface is seen, whatever the scene file says
-    Map,      // the map named on the command line, in place of the scene's environment
+    Default,   // the scene's environment; a scene without light of its own gets the default light
+               // (scene/lighting.h lightIfUnlit)
+    None,      // no environment at all: black wherever no surface is seen, whatever the scene file says
+    Studio,    // the studio environment (scene/studio_environment.h), in place of the scene's
+    Constant,  // a constant colour (X, a grey, or R,G,B), in place of the scene's environment
+    Map,       // the map named on the command line, in place of the scene's environment
 };
 
 // Where a front end's defaults differ from one final render's.
@@ -50,6 +54,9 @@ struct FrontEndDefaults {
     int spp = 64;           // 0: no target (the viewer refines until stopped)
     bool sceneSpp = true;   // a scene file's spp applies (not to a benchmark run)
     int samplesPerPass = 1;
+    // The light of a scene without its own: the studio map, or the uniform sky for the native reference,
+    // which has constant skies only.
+    DefaultLight defaultLight = DefaultLight::Studio;
     bool scene = true;  // the positional argument names the scene (merge's are the parts it merges)
 
     // A window, a sweep or a benchmark run: its own size and spp (0: none), whatever the scene file says.
@@ -71,8 +78,8 @@ class RenderRequest {
     explicit RenderRequest(const Args& args, const FrontEndDefaults& defaults = {});
 
     // The scene named on the command line (its only positional argument), else the built-in Cornell box,
-    // with the environment --environment asks for: by default a scene without light gets a uniform white
-    // sky, with a warning (scene/lighting.h lightIfUnlit).
+    // with the environment --environment asks for: by default a scene without light of its own gets the
+    // studio environment, with a note (scene/lighting.h lightIfUnlit).
     Scene loadScene() const;
     // What loadScene does to the scene it loads (--flatten-instances, --environment), for a scene that
     // comes from elsewhere (the study's scene set).
@@ -82,7 +89,9 @@ class RenderRequest {
     RenderSettings settings(const Scene& scene) const;
     // Samples per pixel to reach; 0 for none.
     int spp(const Scene& scene) const;
-    // Throws fp::Error when the flags make the scene's camera invalid.
+    // The scene's camera (its file's), else the default framing (scene/scene.h frameBounds) for the
+    // image's aspect ratio, with the camera flags applied. Throws fp::Error when the flags make the
+    // scene's camera invalid.
     Camera camera(const Scene& scene) const;
 
     DisplaySettings display() const { return display_; }
@@ -94,6 +103,8 @@ class RenderRequest {
     bool strict() const { return strict_; }
 
   private:
+    Camera framingCamera(const Scene& scene) const;
+
     FrontEndDefaults defaults_;
     std::optional<std::string> scenePath_;
     std::optional<glm::ivec2> size_;
@@ -112,7 +123,8 @@ class RenderRequest {
     std::string shaderDir_, backend_ = "auto";
     int bvhThreads_ = 0;
     EnvironmentChoice environment_ = EnvironmentChoice::Default;
-    std::string environmentMap_;  // with EnvironmentChoice::Map
+    std::string environmentMap_;        // with EnvironmentChoice::Map
+    glm::vec3 environmentColor_{0.0f};  // with EnvironmentChoice::Constant
     bool strict_ = false;
     bool flattenInstances_ = false;
 };

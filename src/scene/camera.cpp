@@ -6,17 +6,37 @@
 
 namespace fp {
 
-Camera frameBounds(const Aabb& bounds, float fovY) {
+Camera frameBounds(const Aabb& bounds, float fovY, float aspect) {
     Camera camera;
     camera.fovY = fovY;
     camera.up = {0.0f, 1.0f, 0.0f};
     if (bounds.empty()) return camera;
-    // Back off along -z until the bounding sphere fits in the vertical field of view.
-    glm::vec3 center = bounds.center();
-    float radius = std::max(0.5f * glm::length(bounds.extent()), 1e-3f);
-    float distance = radius / std::sin(0.5f * glm::radians(fovY));
+    // From the front (glTF's convention: a model faces +z) and kFrameElevationDegrees above, as model
+    // viewers look at a model, aimed at the box's centre.
+    const float elevation = glm::radians(kFrameElevationDegrees);
+    const glm::vec3 center = bounds.center();
+    const glm::vec3 back(0.0f, std::sin(elevation), std::cos(elevation));  // from the centre to the eye
+    const glm::vec3 forward = -back;
+    const glm::vec3 right = glm::normalize(glm::cross(forward, camera.up));
+    const glm::vec3 up = glm::cross(right, forward);
+    // The distance at which every corner of the box lies inside both fields of view, widened by
+    // kFrameMargin. A corner at (x, y) across and z along the view from the centre is in view from the
+    // distance d when |x| <= (d + z) tan(fovX / 2) and |y| <= (d + z) tan(fovY / 2).
+    const float tanY = std::tan(0.5f * glm::radians(fovY)) / kFrameMargin;
+    const float tanX = tanY * std::max(aspect, 1e-3f);
+    const float radius = std::max(0.5f * glm::length(bounds.extent()), 1e-3f);
+    float distance = radius / std::sin(0.5f * glm::radians(fovY));  // a point-like box: its sphere
+    if (glm::length(bounds.extent()) > 0.0f) distance = 0.0f;
+    for (int corner = 0; corner < 8; ++corner) {
+        const glm::vec3 p((corner & 1) ? bounds.hi.x : bounds.lo.x, (corner & 2) ? bounds.hi.y : bounds.lo.y,
+                          (corner & 4) ? bounds.hi.z : bounds.lo.z);
+        const glm::vec3 offset = p - center;
+        const float x = glm::dot(offset, right), y = glm::dot(offset, up), z = glm::dot(offset, forward);
+        // Never closer than a tenth of the radius in front of any corner (a corner on the view axis).
+        distance = std::max({distance, std::abs(x) / tanX - z, std::abs(y) / tanY - z, 0.1f * radius - z});
+    }
     camera.target = center;
-    camera.eye = center + glm::vec3(0.0f, 0.0f, -distance);
+    camera.eye = center + back * distance;
     return camera;
 }
 

@@ -26,12 +26,6 @@ double punctualLightPower(const PunctualLight& light, float sceneRadius) {
     return 0.0;
 }
 
-namespace {
-
-// The mean radiance of a material's emitters over their area, as far as it is known without texture
-// coordinates: Ke times its emission map's mean colour, times the coverage of a constant alpha (BLEND:
-// alpha; MASK: 0 or 1). An emitter whose mean is 0 emits nothing anywhere (a black map, or no coverage),
-// so light sampling may skip it.
 double meanEmittedLuminance(const Scene& scene, const Material& m) {
     glm::vec3 emission = m.emission;
     if (m.emissionTexture >= 0 && size_t(m.emissionTexture) < scene.textures.size())
@@ -41,8 +35,6 @@ double meanEmittedLuminance(const Scene& scene, const Material& m) {
     if (m.alphaTexture < 0 && m.alphaMode == AlphaMode::Mask) coverage = m.alpha >= m.alphaCutoff ? 1.0 : 0.0;
     return double(luminance(emission)) * coverage;
 }
-
-}  // namespace
 
 EmitterPmfs emitterPmfs(const Scene& scene, const uint32_t* order, size_t count) {
     const size_t punctual = scene.punctualLights.size();

@@ -22,6 +22,12 @@ float luminance(const glm::vec3& rgb);
 // last.
 double punctualLightPower(const PunctualLight& light, float sceneRadius);
 
+// The mean radiance (luminance) of a material's emitters over their area, as far as it is known without
+// texture coordinates: Ke times its emission map's mean colour, times the coverage of a constant alpha
+// (BLEND: alpha; MASK: 0 or 1). An emitter whose mean is 0 emits nothing anywhere (a black map, or no
+// coverage), so light sampling may skip it.
+double meanEmittedLuminance(const Scene& scene, const Material& material);
+
 struct EmitterPmfs {
     std::vector<float> pmf;          // per triangle, in the order asked for; 0 for non-emitters
     std::vector<float> punctualPmf;  // per Scene::punctualLights entry, after the triangles in the cdf

@@ -256,9 +256,15 @@ struct Scene {
     size_t triangleCount() const;
 };
 
-// A camera that frames the whole bounding box from the -z side looking along +z (as the Cornell box
-// camera does), for scenes that bring none.
-Camera frameBounds(const Aabb& bounds, float fovY = 40.0f);
+// The camera of a scene that brings none, as model viewers frame a model: from the front (glTF's
+// convention is that a model faces +z, so the eye is on the +z side looking towards -z), raised
+// kFrameElevationDegrees above the horizontal (<model-viewer>'s default orbit, 75 degrees from the pole),
+// aimed at the bounding box's centre, at the distance where all eight corners of the box are inside both
+// the vertical field of view fovY and the horizontal one of an image of width / height `aspect`, with a
+// margin of kFrameMargin. A flat model facing +z is seen nearly face-on, never edge-on.
+constexpr float kFrameElevationDegrees = 15.0f;
+constexpr float kFrameMargin = 1.1f;  // the box fills 1 / 1.1 of the image's tighter direction
+Camera frameBounds(const Aabb& bounds, float fovY = 40.0f, float aspect = 1.0f);
 
 }  // namespace fp
 

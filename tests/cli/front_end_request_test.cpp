@@ -22,6 +22,9 @@ using test::CliRun;
 using test::runFragpath;
 
 const std::string kObj = std::string(FP_SOURCE_DIR) + "/assets/cornell/cornell.obj";
+// The Cornell box's own camera (assets/cornell/cornell.json), looking into the room through its open -z
+// side: the bare OBJ's default framing is from the front, +z, where the room shows its closed back.
+const std::string kIntoTheRoom = " --eye 278,273,-800 --target 278,273,0 --fov 39.3 ";
 double mean(const Image& image) {
     glm::dvec3 c = meanColor(image);
     return (c.x + c.y + c.z) / 3.0;
@@ -40,14 +43,14 @@ class FrontEndRequest : public test::TempDirTest {
     // `fragpath render` of the bare OBJ with the depth given by flag: what the scene file should give.
     Image renderObj(int depth, const std::string& more = "") {
         std::string out = path("obj_" + std::to_string(depth) + ".pfm");
-        CliRun r = runFragpath("render " + kObj + " --size 24x20 --spp 2 --max-depth " +
+        CliRun r = runFragpath("render " + kObj + kIntoTheRoom + " --size 24x20 --spp 2 --max-depth " +
                                std::to_string(depth) + " --quiet " + more + " -o " + out);
         EXPECT_EQ(r.exitCode, 0) << r.output;
         return readImage(out);
     }
     Image renderScene(const std::string& flags) {
         std::string out = path("scene.pfm");
-        CliRun r = runFragpath("render " + scene_ + " --quiet " + flags + " -o " + out);
+        CliRun r = runFragpath("render " + scene_ + kIntoTheRoom + " --quiet " + flags + " -o " + out);
         EXPECT_EQ(r.exitCode, 0) << r.output;
         return readImage(out);
     }
@@ -68,7 +71,8 @@ TEST_F(FrontEndRequest, NativeTakesTheSceneFilesDefaultsAndFlagsOverrideThem) {
     // unlit: the image's mean is the lamp's few pixels) against depth 2.
     auto native = [&](const std::string& flags) {
         std::string out = path("native.pfm");
-        std::string command = kNative + " " + scene_ + " " + flags + " -o " + out + " > /dev/null 2>&1";
+        std::string command =
+            kNative + " " + scene_ + kIntoTheRoom + flags + " -o " + out + " > /dev/null 2>&1";
         EXPECT_EQ(std::system(command.c_str()), 0) << command;
         return readImage(out);
     };
@@ -103,7 +107,8 @@ TEST_F(FrontEndRequest, StudyTakesTheSceneFilesDefaultsAndFlagsOverrideThem) {
     auto reference = [&](const std::string& flags) {
         std::string out = path("study");
         CliRun r =
-            runFragpath("study " + scene_ + " --size 24x20 --max-spp 1 --reference-spp 2 --integrators nee " +
+            runFragpath("study " + scene_ + kIntoTheRoom +
+                        "--size 24x20 --max-spp 1 --reference-spp 2 --integrators nee " +
                         "--denoisers none --count-spp 1 --no-plots --quiet --out " + out + " " + flags);
         EXPECT_EQ(r.exitCode, 0) << r.output;
         return readImage(out + "/reference_scene.exr");  // named after scene.json

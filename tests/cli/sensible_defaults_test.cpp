@@ -1,7 +1,9 @@
-// Sensible defaults, as a user meets them (issue 18, item 6): a scene without light gets a uniform white
-// sky of radiance 1 and a warning, in every front end, and `--environment none` keeps it black; a
-// missing texture gets a warning and the magenta and black checker, and `--strict` makes every such
-// warning an error; `--environment FILE` and scene files take .exr maps as well as .hdr.
+// Sensible defaults, as a user meets them (issue 18, item 6; issue 34, item 2): a scene without light of
+// its own gets the studio environment and a note, in every front end (the native reference, which has
+// constant skies only, the uniform white sky of radiance 1), `--environment 1` the uniform sky and
+// `--environment none` keeps it black; a missing texture gets a warning and the magenta and black
+// checker, and `--strict` makes every such warning an error (the default light is not one);
+// `--environment FILE` and scene files take .exr maps as well as .hdr.
 //
 // The checks use an open quad of Lambertian reflectance k under the uniform sky at max depth 1: each
 // point of it sees the whole sky over its hemisphere, so its radiance is exactly k (the white furnace's
@@ -31,7 +33,9 @@ using test::runFragpath;
 const std::string kNative = fs::path(FP_BINARY).parent_path().string() + "/fragpath_native";
 const glm::vec3 kAlbedo(0.25f, 0.5f, 0.75f);
 const char* kNoLight =
-    "scene has no light: using a uniform white sky of radiance 1 (--environment none keeps it black)";
+    "no light of its own: lit by the studio environment (--environment none keeps it dark)";
+const char* kNativeNoLight =
+    "no light of its own: lit by a uniform white sky of radiance 1 (--environment none keeps it dark)";
 
 // The unit quad in z = 0, facing -z (toward the camera below), texture coordinates = (x, y).
 const char* kQuadObj =
@@ -110,16 +114,32 @@ void expectSkyCorners(const Image& image) {
         EXPECT_EQ(image.at(x, y), glm::vec3(1.0f)) << "pixel " << x << "," << y;
 }
 
-TEST_F(SensibleDefaults, ASceneWithoutLightGetsTheUniformSkyAndAWarning) {
+TEST_F(SensibleDefaults, TheUniformSkyIsAConstantEnvironmentOfOne) {
     CliRun run;
-    Image bsdf = render(quad_ + kCamera + " --integrator bsdf --max-depth 1 --spp 4", &run);
-    EXPECT_NE(run.output.find("warning: " + quad_ + ": " + kNoLight), std::string::npos) << run.output;
+    Image bsdf = render(quad_ + kCamera + " --environment 1 --integrator bsdf --max-depth 1 --spp 4", &run);
+    EXPECT_EQ(run.output.find("no light"), std::string::npos) << run.output;
     expectAlbedoBlocks(bsdf, true);
     expectSkyCorners(bsdf);
     // The default integrator, nee, samples the sky too: the same answer within its noise.
-    Image nee = render(quad_ + kCamera + " --max-depth 1 --spp 64");
+    Image nee = render(quad_ + kCamera + " --environment 1,1,1 --max-depth 1 --spp 64");
     expectAlbedoBlocks(nee, false);
     expectSkyCorners(nee);
+    // A colour scales it channel by channel: the sky seen directly is the colour, the quad k times it.
+    Image tinted = render(quad_ + kCamera + " --environment 0.5,1,2 --integrator bsdf --max-depth 1 --spp 4");
+    EXPECT_EQ(tinted.at(0, 0), glm::vec3(0.5f, 1.0f, 2.0f));
+    EXPECT_NEAR(tinted.at(16, 16).x, 0.5f * kAlbedo.x, 1e-5f);
+    EXPECT_NEAR(tinted.at(16, 16).z, 2.0f * kAlbedo.z, 1e-5f);
+}
+
+TEST_F(SensibleDefaults, ASceneWithoutLightGetsTheStudioEnvironmentAndANote) {
+    CliRun run;
+    const std::string args = quad_ + kCamera + " --max-depth 2 --spp 4";
+    Image studio = render(args, &run);
+    EXPECT_NE(run.output.find("note: " + quad_ + ": " + kNoLight), std::string::npos) << run.output;
+    EXPECT_EQ(run.output.find("warning"), std::string::npos) << run.output;
+    EXPECT_EQ(studio.pixels, render(args + " --environment studio").pixels) << "the studio environment";
+    EXPECT_NE(studio.pixels, render(args + " --environment 1").pixels);
+    for (const glm::vec3& p : studio.pixels) ASSERT_GT(p.y, 0.0f) << "the quad lit, the backdrop not black";
 }
 
 TEST_F(SensibleDefaults, EnvironmentNoneKeepsItBlack) {
@@ -129,9 +149,8 @@ TEST_F(SensibleDefaults, EnvironmentNoneKeepsItBlack) {
     ASSERT_EQ(image.width, kSize);
     for (const glm::vec3& p : image.pixels) ASSERT_EQ(p, glm::vec3(0.0f));
     // `default` is the default.
-    Image byDefault =
-        render(quad_ + kCamera + " --environment default --integrator bsdf --max-depth 1 --spp 1");
-    expectAlbedoBlocks(byDefault, true);
+    const std::string args = quad_ + kCamera + " --integrator bsdf --max-depth 1 --spp 1";
+    EXPECT_EQ(render(args + " --environment default").pixels, render(args).pixels);
 }
 
 TEST_F(SensibleDefaults, ALitSceneIsLeftAlone) {
@@ -157,7 +176,7 @@ TEST_F(SensibleDefaults, TheNativeReferenceGetsTheSameSky) {
     std::string out = path("native.pfm");
     CliRun r = run(kNative + " " + quad_ + kCamera + " --size 32x32 --max-depth 1 --spp 64 -o " + out);
     ASSERT_EQ(r.exitCode, 0) << r.output;
-    EXPECT_NE(r.output.find(kNoLight), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find(kNativeNoLight), std::string::npos) << r.output;
     Image native = readImage(out);
     expectAlbedoBlocks(native, false);
     expectSkyCorners(native);
@@ -176,7 +195,7 @@ TEST_F(SensibleDefaults, TheNativeReferenceGetsTheSameSky) {
 }
 
 TEST_F(SensibleDefaults, EveryFrontEndThatLoadsAScene) {
-    // study: its reference is rendered with the sky (not black), after the warning.
+    // study: its reference is rendered with the studio environment (not black), after the note.
     CliRun r = runFragpath("study " + quad_ + kCamera +
                            " --size 16x16 --max-spp 1 --reference-spp 2 --integrators bsdf --denoisers none "
                            "--count-spp 1 --no-plots --quiet --max-depth 1 --out " +
@@ -184,30 +203,35 @@ TEST_F(SensibleDefaults, EveryFrontEndThatLoadsAScene) {
     ASSERT_EQ(r.exitCode, 0) << r.output;
     EXPECT_NE(r.output.find(kNoLight), std::string::npos) << r.output;
     Image reference = readImage(path("study/reference_quad.exr"));  // named after quad.obj
-    EXPECT_EQ(reference.at(0, 0), glm::vec3(1.0f));                             // the sky, seen directly
-    EXPECT_GT(meanColor(reference, PixelRect{6, 6, 4, 4}).y, 0.5 * kAlbedo.y);  // the quad, lit (nee, 2 spp)
-    // bench: the warning, and with --strict the error before any measuring.
+    EXPECT_GT(reference.at(0, 0).y, 0.0f);                          // the backdrop
+    // The quad, lit (nee, 2 spp): it faces -z, away from the studio's key and fill, and sees its sky and
+    // floor, about a third of its albedo (0.17 of 0.5 measured); unlit, it would be 0.
+    EXPECT_GT(meanColor(reference, PixelRect{6, 6, 4, 4}).y, 0.15 * kAlbedo.y);
+    // bench: the note, with --strict too (the default light is not a repair).
     r = runFragpath("bench " + quad_ + " --size 8x8 --spp 1 --runs 1");
     EXPECT_EQ(r.exitCode, 0) << r.output;
     EXPECT_NE(r.output.find(kNoLight), std::string::npos) << r.output;
     r = runFragpath("bench " + quad_ + " --size 8x8 --spp 1 --runs 1 --strict");
-    EXPECT_EQ(r.exitCode, 1) << r.output;
-    EXPECT_NE(r.output.find("fragpath: error: " + quad_ + ": scene has no light"), std::string::npos)
-        << r.output;
+    EXPECT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_NE(r.output.find(kNoLight), std::string::npos) << r.output;
     r = runFragpath("bench --suite --environment none");
     EXPECT_EQ(r.exitCode, 1) << r.output;
     EXPECT_NE(r.output.find("--environment goes with a scene file, not --suite"), std::string::npos);
-    // view: the same image as render's, sky included.
+    // view: the note, and the studio light; with --environment 1 the same furnace as render's.
     std::string shot = path("view.pfm");
-    r = run("LP_NUM_THREADS=2 xvfb-run -a -s \"-screen 0 1280x1024x24\" " + std::string(FP_BINARY) +
-            " view " + quad_ + kCamera +
-            " --size 32x32 --integrator bsdf --max-depth 1 --spp 1 --frames 1 --no-ui " + "--screenshot " +
-            shot);
+    const std::string view = "LP_NUM_THREADS=2 xvfb-run -a -s \"-screen 0 1280x1024x24\" " +
+                             std::string(FP_BINARY) + " view " + quad_ + kCamera +
+                             " --size 32x32 --integrator bsdf --max-depth 1 --spp 1 --frames 1 --no-ui " +
+                             "--screenshot " + shot;
+    r = run(view);
     ASSERT_EQ(r.exitCode, 0) << r.output;
     EXPECT_NE(r.output.find(kNoLight), std::string::npos) << r.output;
-    Image view = readImage(shot);
-    expectAlbedoBlocks(view, true);
-    expectSkyCorners(view);
+    EXPECT_GT(readImage(shot).at(0, 0).y, 0.0f);
+    r = run(view + " --environment 1");
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    Image furnace = readImage(shot);
+    expectAlbedoBlocks(furnace, true);
+    expectSkyCorners(furnace);
     // Each lists the options in its --help.
     for (const char* command : {"render", "view", "study", "bench"}) {
         r = runFragpath(std::string(command) + " --help");
@@ -218,13 +242,14 @@ TEST_F(SensibleDefaults, EveryFrontEndThatLoadsAScene) {
     EXPECT_NE(r.output.find("--environment ENV"), std::string::npos) << r.output;
 }
 
-// A texture file that is missing shows as the magenta and black checker.
+// A texture file that is missing shows as the magenta and black checker (under the uniform sky, where a
+// Lambertian quad shows exactly its albedo).
 TEST_F(SensibleDefaults, AMissingTextureWarnsAndShowsTheChecker) {
     write("quad.mtl", "newmtl quad\nKd 0.2 0.9 0.2\nmap_Kd textures/missing.png\n");
     const int size = 64;
     std::string out = path("checker.pfm");
     CliRun r = runFragpath("render " + quad_ + kCamera + " --size 64x64 --integrator bsdf --max-depth 1 " +
-                           "--spp 4 --quiet -o " + out);
+                           "--environment 1 --spp 4 --quiet -o " + out);
     ASSERT_EQ(r.exitCode, 0) << r.output;
     EXPECT_NE(r.output.find("warning: " + path("quad.mtl") +
                             ":3: material 'quad': map_Kd texture 'textures/missing.png' not found"),
@@ -269,14 +294,12 @@ TEST_F(SensibleDefaults, StrictMakesWarningsErrors) {
         << r.output;
     EXPECT_NE(r.output.find("(an error with --strict)"), std::string::npos) << r.output;
     EXPECT_FALSE(fs::exists(out));
-    // With the texture in place the next warning is the missing light.
+    // A scene without light is not repaired input: the studio light is the default, --strict or not.
     std::string lightless = write("plain.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
     r = runFragpath("render " + lightless + " --size 8x8 --spp 1 --strict -o " + out);
-    EXPECT_EQ(r.exitCode, 1) << r.output;
-    EXPECT_NE(r.output.find("fragpath: error: " + lightless + ": " + kNoLight + " (an error with --strict)"),
-              std::string::npos)
-        << r.output;
-    EXPECT_FALSE(fs::exists(out));
+    EXPECT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_NE(r.output.find("note: " + lightless + ": " + kNoLight), std::string::npos) << r.output;
+    EXPECT_TRUE(fs::exists(out));
     // --strict with nothing to warn about changes nothing.
     r = runFragpath("render " + lightless + " --environment none --size 8x8 --spp 1 --strict --quiet -o " +
                     out);
@@ -330,9 +353,13 @@ TEST_F(SensibleDefaults, BadEnvironmentsAreClearErrors) {
         EXPECT_NE(r.output.find("fragpath: error: " + fragment), std::string::npos) << r.output;
         EXPECT_FALSE(fs::exists(path("bad.png")));
     };
-    expectError("--environment sky.png",
-                "option --environment: expected none, default or an .hdr or .exr "
-                "file, got 'sky.png'");
+    expectError(
+        "--environment sky.png",
+        "option --environment: expected none, default, studio, a colour (X or R,G,B) or an .hdr or .exr "
+        "file, got 'sky.png'");
+    expectError("--environment -0.5",
+                "option --environment: a colour's radiance is 0 or more in each channel");
+    expectError("--environment 1,1", "option --environment: expected X,Y,Z, got '1,1'");
     expectError("--environment " + path("missing.exr"),
                 "option --environment: " + path("missing.exr") + ": no such file");
     write("text.exr", "not an EXR\n");

@@ -5,6 +5,7 @@
 #include "core/error.h"
 #include "core/log.h"
 #include "request/render_request.h"
+#include "scene/studio_environment.h"
 
 namespace fp {
 namespace {
@@ -200,16 +201,72 @@ TEST(RenderRequest, TheSceneIsThePositionalArgumentUnlessTheFrontEndSaysOtherwis
     EXPECT_FALSE(request({"a.exr", "b.exr"}, merge, kDisplayOptions).scenePath());
 }
 
+// A scene without a camera is framed for the image's aspect ratio (scene/scene.h frameBounds): a wide
+// model in a wide image is seen from closer than in a tall one, where its width must fit the narrow
+// horizontal field of view.
+TEST(RenderRequest, TheDefaultFramingFitsTheImagesAspectRatio) {
+    Scene wide;
+    wide.materials.push_back(Material{});
+    Triangle t;
+    t.p = {glm::vec3(-10, 0, 0), glm::vec3(10, 0, 0), glm::vec3(0, 1, 0)};
+    wide.triangles.push_back(t);
+    const Camera inWide = request({"--size", "400x100"}).camera(wide);
+    const Camera inTall = request({"--size", "100x400"}).camera(wide);
+    EXPECT_EQ(inWide.eye, frameBounds(wide.bounds(), 40.0f, 4.0f).eye);
+    EXPECT_EQ(inTall.eye, frameBounds(wide.bounds(), 40.0f, 0.25f).eye);
+    EXPECT_LT(glm::length(inWide.eye - inWide.target), 0.5f * glm::length(inTall.eye - inTall.target));
+    // A camera flag still overrides the framing's.
+    EXPECT_EQ(request({"--size", "400x100", "--eye", "0,0,-7"}).camera(wide).eye, glm::vec3(0, 0, -7));
+}
+
+// What each --environment choice does to a scene without light (one Lambertian triangle).
+TEST(RenderRequest, EnvironmentChoicesLightAScene) {
+    Scene bare;
+    bare.materials.push_back(Material{});
+    Triangle t;
+    t.p = {glm::vec3(0, 0, 0), glm::vec3(1, 0, 0), glm::vec3(0, 1, 0)};
+    bare.triangles.push_back(t);
+    WarningCapture capture;
+    Scene byDefault = request({}).prepareScene(bare);
+    EXPECT_EQ(byDefault.environment.map.pixels, studioEnvironment().map.pixels);
+    EXPECT_EQ(capture.notes().size(), 1u);
+    EXPECT_EQ(request({"--environment", "studio"}).prepareScene(bare).environment.map.pixels,
+              studioEnvironment().map.pixels);
+    Scene grey = request({"--environment", "0.5"}).prepareScene(bare);
+    EXPECT_FALSE(grey.environment.hasMap());
+    EXPECT_EQ(grey.environment.color, glm::vec3(0.5f));
+    EXPECT_EQ(request({"--environment", "1,0.9,0.8"}).prepareScene(bare).environment.color,
+              glm::vec3(1.0f, 0.9f, 0.8f));
+    EXPECT_TRUE(request({"--environment", "none"}).prepareScene(bare).environment.isBlack());
+    FrontEndDefaults native;
+    native.defaultLight = DefaultLight::UniformSky;
+    EXPECT_EQ(request({}, native).prepareScene(bare).environment.color, glm::vec3(1.0f));
+    EXPECT_TRUE(capture.messages().empty()) << "notes only";
+}
+
 TEST(RenderRequest, EnvironmentAndStrictAreReadAndCheckedAtOnce) {
     EXPECT_EQ(request({}).environment(), EnvironmentChoice::Default);
     EXPECT_EQ(request({"--environment", "default"}).environment(), EnvironmentChoice::Default);
     EXPECT_EQ(request({"--environment=none"}).environment(), EnvironmentChoice::None);
     // A map must be an .hdr or .exr that exists, before any scene is loaded.
-    EXPECT_EQ(message({"--environment", "black"}),
-              "option --environment: expected none, default or an .hdr or .exr file, got 'black'");
+    EXPECT_EQ(
+        message({"--environment", "black"}),
+        "option --environment: expected none, default, studio, a colour (X or R,G,B) or an .hdr or .exr "
+        "file, got 'black'");
     EXPECT_EQ(message({"--environment", "/no/such/sky.exr"}),
               "option --environment: /no/such/sky.exr: no such file");
     EXPECT_THROW(request({"--environment", "none"}, {}, kAllRequestOptions & ~kSceneOptions), UsageError);
+    // The studio environment and constant colours: a grey X or R,G,B, finite and 0 or more.
+    EXPECT_EQ(request({"--environment", "studio"}).environment(), EnvironmentChoice::Studio);
+    EXPECT_EQ(request({"--environment", "0.5"}).environment(), EnvironmentChoice::Constant);
+    EXPECT_EQ(request({"--environment", "1,0.9,0.8"}).environment(), EnvironmentChoice::Constant);
+    EXPECT_EQ(message({"--environment", "-1"}),
+              "option --environment: a colour's radiance is 0 or more in each channel, got '-1'");
+    EXPECT_EQ(message({"--environment", "1,-0.5,1"}),
+              "option --environment: a colour's radiance is 0 or more in each channel, got '1,-0.5,1'");
+    EXPECT_EQ(message({"--environment", "1,2"}), "option --environment: expected X,Y,Z, got '1,2'");
+    EXPECT_EQ(message({"--environment", "0.5x"}), "option --environment: '0.5x' is not a finite number");
+    EXPECT_EQ(message({"--environment", "1e99"}), "option --environment: '1e99' is not a finite number");
 
     // --strict sets core/log's strict mode, and a request without it clears it.
     EXPECT_TRUE(request({"--strict"}).strict());

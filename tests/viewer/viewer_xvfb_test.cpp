@@ -230,14 +230,18 @@ TEST_F(ViewerXvfb, TakesTheSceneFilesDefaultsAndFlagsOverrideThem) {
     const std::string obj = std::string(FP_SOURCE_DIR) + "/assets/cornell/cornell.obj";
     const std::string scene =
         write("scene.json", R"({"mesh": ")" + obj + R"(", "render": {"max_depth": 0, "seed": 5}})");
+    // The box's own camera (assets/cornell/cornell.json) by flags: the bare OBJ's default framing looks
+    // from +z at the room's closed back.
+    const std::string intoTheRoom = " --eye 278,273,-800 --target 278,273,0 --fov 39.3";
     auto screenshot = [&](const std::string& flags) {
-        CliRun r = view(scene + " --size 32x32 --spp 2 --frames 1 --no-ui --screenshot " + path("v.pfm") +
-                        " " + flags);
+        CliRun r = view(scene + intoTheRoom + " --size 32x32 --spp 2 --frames 1 --no-ui --screenshot " +
+                        path("v.pfm") + " " + flags);
         EXPECT_EQ(r.exitCode, 0) << r.output;
         return readImage(path("v.pfm"));
     };
     auto render = [&](int depth) {
-        CliRun r = test::runFragpath("render " + obj + " --size 32x32 --spp 2 --seed 5 --quiet --max-depth " +
+        CliRun r = test::runFragpath("render " + obj + intoTheRoom +
+                                     " --size 32x32 --spp 2 --seed 5 --quiet --max-depth " +
                                      std::to_string(depth) + " -o " + path("r.pfm"));
         EXPECT_EQ(r.exitCode, 0) << r.output;
         return readImage(path("r.pfm"));

@@ -21,6 +21,7 @@ fp::FrontEndDefaults nativeDefaults() {
     fp::FrontEndDefaults d;
     d.spp = 1;
     d.sceneSpp = false;
+    d.defaultLight = fp::DefaultLight::UniformSky;  // constant skies only (native_scene.cpp)
     return d;
 }
 
