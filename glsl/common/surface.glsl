@@ -16,11 +16,15 @@ struct Surface {
 int gSurfacesShaded = 0;  // surface interactions of the current path, for the cost view
 
 #ifdef SURFACE_TEXTURES
+#if HAS_MAP(NORMAL_MAP_BIT)
+#include "common/valid_reflection.glsl"
+#endif
 // Every map material s.materialIndex has, at the hit: a colour map multiplies Kd (a metallic-roughness's
 // base colour), one of emission Ke, one of specular Ks; the metallic-roughness map's G multiplies the
 // roughness and B the metallic factor (glTF's channels); a normal map replaces the shading normal and
-// frame. ns is the interpolated vertex normal before it was turned to the ray's side.
-void applyTextureMaps(inout Surface s, Hit hit, vec3 ns) {
+// frame. ns is the interpolated vertex normal before it was turned to the ray's side, wo the direction
+// back along the ray.
+void applyTextureMaps(inout Surface s, Hit hit, vec3 ns, vec3 wo) {
     ivec4 maps = materialMaps(s.materialIndex);  // (diffuse, metallic-roughness, emission, normal)
     vec2 uv = fetchTexcoord(hit.triangle, hit.uv);
 #if HAS_MAP(DIFFUSE_MAP_BIT)
@@ -45,15 +49,10 @@ void applyTextureMaps(inout Surface s, Hit hit, vec3 ns) {
 #if HAS_MAP(NORMAL_MAP_BIT)
     if (maps.w >= 0) {
         vec3 n = normalMapped(maps.w, extra.y, hit.triangle, hit.uv, uv, ns);
-        // On the ray's side as the vertex normal was turned, then kept a little above the surface's
-        // plane: a shading normal below the geometric hemisphere would make every direction leak
-        // (sameSide); bending it back is the simple alternative to Schuessler et al. 2017's
-        // microfacet-based normal mapping.
+        // On the ray's side as the vertex normal was turned, then tilted back toward the geometric normal
+        // until the view direction's mirror reflection stays above the surface (keepReflectionAbove).
         n = dot(ns, s.geometricNormal) < 0.0 ? -n : n;
-        float c = dot(n, s.geometricNormal);
-        const float kMinCos = 0.05;
-        if (c < kMinCos) n = normalize(n + (kMinCos - c) * s.geometricNormal);
-        s.shadingNormal = n;
+        s.shadingNormal = keepReflectionAbove(n, s.geometricNormal, wo);
         orthonormalBasis(s.shadingNormal, s.tangent, s.bitangent);
     }
 #endif
@@ -105,7 +104,7 @@ Surface surfaceAt(Ray ray, Hit hit) {
 #if SURFACE_MAPS == DIFFUSE_MAP_BIT
     s.material.diffuse = texturedDiffuse(s.materialIndex, s.material.diffuse, hit.triangle, hit.uv);
 #else
-    applyTextureMaps(s, hit, ns);
+    applyTextureMaps(s, hit, ns, -ray.dir);
 #endif
 #endif
     // Front faces face out of a closed glass object: a ray hitting one enters it.
