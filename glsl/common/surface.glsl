@@ -1,5 +1,11 @@
 // What an integrator needs to know about the point a ray hit.
 #include "common/ray_offset.glsl"
+#ifdef SURFACE_TEXTURES
+#if HAS_MAP(NORMAL_MAP_BIT)
+#define NORMAL_MAPPED_SURFACES 1
+#include "common/valid_reflection.glsl"
+#endif
+#endif
 
 struct Surface {
     vec3 position;
@@ -11,14 +17,16 @@ struct Surface {
     int materialIndex;     // where `material` came from, for code that stores vertices
     float eta;             // n_transmitted / n_incident for a dielectric, as seen from the ray's side
     bool frontFace;        // the ray hit the counter-clockwise side: the side that emits
+#ifdef NORMAL_MAPPED_SURFACES
+    // A normal map's normal on the ray's side before keepReflectionAbove bent it for this ray into
+    // shadingNormal, which bdpt bends again for the camera's side of each join (bdpt_subpaths.glsl).
+    vec3 mappedNormal;
+#endif
 };
 
 int gSurfacesShaded = 0;  // surface interactions of the current path, for the cost view
 
 #ifdef SURFACE_TEXTURES
-#if HAS_MAP(NORMAL_MAP_BIT)
-#include "common/valid_reflection.glsl"
-#endif
 // Every map material s.materialIndex has, at the hit: a colour map multiplies Kd (a metallic-roughness's
 // base colour), one of emission Ke, one of specular Ks; the metallic-roughness map's G multiplies the
 // roughness and B the metallic factor (glTF's channels); a normal map replaces the shading normal and
@@ -52,6 +60,7 @@ void applyTextureMaps(inout Surface s, Hit hit, vec3 ns, vec3 wo) {
         // On the ray's side as the vertex normal was turned, then tilted back toward the geometric normal
         // until the view direction's mirror reflection stays above the surface (keepReflectionAbove).
         n = dot(ns, s.geometricNormal) < 0.0 ? -n : n;
+        s.mappedNormal = n;
         s.shadingNormal = keepReflectionAbove(n, s.geometricNormal, wo);
         orthonormalBasis(s.shadingNormal, s.tangent, s.bitangent);
     }
@@ -97,6 +106,9 @@ Surface surfaceAt(Ray ray, Hit hit) {
 #endif
     s.shadingNormal = dot(ns, s.geometricNormal) < 0.0 ? -ns : ns;
     orthonormalBasis(s.shadingNormal, s.tangent, s.bitangent);
+#ifdef NORMAL_MAPPED_SURFACES
+    s.mappedNormal = s.shadingNormal;
+#endif
     s.materialIndex = tri.material;
     s.material = fetchMaterial(s.materialIndex);
 #ifdef SURFACE_TEXTURES
