@@ -150,6 +150,18 @@ vec3 emittedRadiance(Surface s) { return s.frontFace ? s.material.emission : vec
 // surface; such a direction cannot be followed (it would leak light through the surface).
 bool sameSide(Surface s, vec3 local, vec3 world) { return (local.z > 0.0) == (dot(world, s.geometricNormal) > 0.0); }
 
+#ifdef NORMAL_MAPPED_SURFACES
+// Whether a delta lobe's direction wi, sampled from wo, met a normal map's normal bent for either of the
+// two (keepReflectionAboveFor): the bend depends on the direction, so a path arriving from wi would not
+// sample wo. Light subpaths end there (bdpt_subpaths.glsl), and the estimators that join or split paths
+// by which end traced them leave such paths to the camera's side (bdpt's gCameraBent, nee's light pass).
+bool bentDelta(Surface s, vec3 wo, vec3 wi) {
+    if (materialMaps(s.materialIndex).w < 0) return false;
+    vec3 n = s.mappedNormal, ng = s.geometricNormal;
+    return keepReflectionAboveFor(n, ng, wo) != n || keepReflectionAboveFor(n, ng, wi) != n;
+}
+#endif
+
 // A ray leaving the surface, nudged off it to the side it leaves on.
 Ray spawnRay(Surface s, vec3 dir) { return Ray(offsetToward(s.position, s.geometricNormal, s.offset, dir), dir); }
 

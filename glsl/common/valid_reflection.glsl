@@ -27,3 +27,10 @@ vec3 keepReflectionAbove(vec3 n, vec3 ng, vec3 wo) {
     float theta = 0.5 * (atan(a, c) + acos(clamp(lowest * inversesqrt(a * a + c * c), 0.0, 1.0)));
     return cos(theta) * ng + sin(theta) * x;
 }
+
+// The same for a direction w on either side of the surface (a path may arrive from the far side of a
+// glass): n and ng turned to w's side, bent, and turned back.
+vec3 keepReflectionAboveFor(vec3 n, vec3 ng, vec3 w) {
+    float side = dot(w, ng) < 0.0 ? -1.0 : 1.0;
+    return side * keepReflectionAbove(side * n, side * ng, w);
+}

@@ -218,7 +218,7 @@ vec3 radiance(Ray ray) {
         beta *= bs.weight;
         etaScale *= refractionScale(bs, s);
 #if defined(NORMAL_MAPPED_SURFACES) && !CAUSTICS_LIGHT_TRACED
-        gCameraBent[t - 1] = bs.delta && (bentFor(z, -ray.dir) || bentFor(z, dir));
+        gCameraBent[t - 1] = bs.delta && bentDelta(s, -ray.dir, dir);
 #endif
         if (bs.delta) {
             gCamera[t - 1].delta = true;

@@ -107,8 +107,8 @@ vec3 storedNormal(Surface s) {
 }
 
 #if defined(NORMAL_MAPPED_SURFACES) && !CAUSTICS_LIGHT_TRACED
-// Camera vertices whose sampled direction came from a delta lobe with a bent normal (bentFor, for either
-// direction): no light subpath goes through them, so misWeight leaves out the strategies that would.
+// Camera vertices whose sampled direction came from a delta lobe with a bent normal (surface.glsl,
+// bentDelta): no light subpath goes through them, so misWeight leaves out the strategies that would.
 bool gCameraBent[BDPT_CAMERA_VERTICES];
 #endif
 
@@ -167,18 +167,10 @@ float remap0(float pdf) { return pdf != 0.0 ? pdf : 1.0; }
 // arrives from (vertexPdf), as surfaceAt did.
 vec3 vertexNormal(PathVertex v, vec3 cameraSide) {
 #ifdef NORMAL_MAPPED_SURFACES
-    if (materialMaps(v.material).w >= 0) {
-        float side = dot(cameraSide, v.ng) < 0.0 ? -1.0 : 1.0;
-        return side * keepReflectionAbove(side * v.ns, side * v.ng, cameraSide);
-    }
+    if (materialMaps(v.material).w >= 0) return keepReflectionAboveFor(v.ns, v.ng, cameraSide);
 #endif
     return v.ns;
 }
-
-// Whether a normal map's normal at v is bent for direction w: a delta lobe sampled there from one side
-// is then not the one the other side samples (the bend depends on the direction), so light subpaths end
-// at such a vertex and the weights count only the camera's strategies through it (gCameraBent).
-bool bentFor(PathVertex v, vec3 w) { return vertexNormal(v, w) != v.ns; }
 
 // w in the local frame of shading normal n, as surfaceAt's frame (toLocal).
 vec3 vertexLocal(vec3 n, vec3 w) {
@@ -497,8 +489,8 @@ int traceLightSubpath(int maxDepth) {
         if (cosInG == 0.0 || bs.wi.z == 0.0) break;
         float correction = wo.z * abs(dot(next, s.geometricNormal)) / (cosInG * abs(bs.wi.z));
         beta *= mixed ? bs.weight : bs.weight * (bs.wi.z < 0.0 ? s.eta * s.eta : 1.0) * correction;
-#if defined(NORMAL_MAPPED_SURFACES) && !CAUSTICS_LIGHT_TRACED
-        if (bs.delta && (bentFor(y, -ray.dir) || bentFor(y, next))) break;
+#ifdef NORMAL_MAPPED_SURFACES
+        if (bs.delta && bentDelta(s, -ray.dir, next)) break;  // (surface.glsl)
 #endif
         if (bs.delta) {
             gLightDelta[count - 1] = true;
