@@ -1,5 +1,11 @@
 // What an integrator needs to know about the point a ray hit.
 #include "common/ray_offset.glsl"
+#ifdef SURFACE_TEXTURES
+#if HAS_MAP(NORMAL_MAP_BIT)
+#define NORMAL_MAPPED_SURFACES 1
+#include "common/valid_reflection.glsl"
+#endif
+#endif
 
 struct Surface {
     vec3 position;
@@ -11,6 +17,11 @@ struct Surface {
     int materialIndex;     // where `material` came from, for code that stores vertices
     float eta;             // n_transmitted / n_incident for a dielectric, as seen from the ray's side
     bool frontFace;        // the ray hit the counter-clockwise side: the side that emits
+#ifdef NORMAL_MAPPED_SURFACES
+    // A normal map's normal on the ray's side before keepReflectionAbove bent it for this ray into
+    // shadingNormal, which bdpt bends again for the camera's side of each join (bdpt_subpaths.glsl).
+    vec3 mappedNormal;
+#endif
 };
 
 int gSurfacesShaded = 0;  // surface interactions of the current path, for the cost view
@@ -19,8 +30,9 @@ int gSurfacesShaded = 0;  // surface interactions of the current path, for the c
 // Every map material s.materialIndex has, at the hit: a colour map multiplies Kd (a metallic-roughness's
 // base colour), one of emission Ke, one of specular Ks; the metallic-roughness map's G multiplies the
 // roughness and B the metallic factor (glTF's channels); a normal map replaces the shading normal and
-// frame. ns is the interpolated vertex normal before it was turned to the ray's side.
-void applyTextureMaps(inout Surface s, Hit hit, vec3 ns) {
+// frame. ns is the interpolated vertex normal before it was turned to the ray's side, wo the direction
+// back along the ray.
+void applyTextureMaps(inout Surface s, Hit hit, vec3 ns, vec3 wo) {
     ivec4 maps = materialMaps(s.materialIndex);  // (diffuse, metallic-roughness, emission, normal)
     vec2 uv = fetchTexcoord(hit.triangle, hit.uv);
 #if HAS_MAP(DIFFUSE_MAP_BIT)
@@ -45,15 +57,11 @@ void applyTextureMaps(inout Surface s, Hit hit, vec3 ns) {
 #if HAS_MAP(NORMAL_MAP_BIT)
     if (maps.w >= 0) {
         vec3 n = normalMapped(maps.w, extra.y, hit.triangle, hit.uv, uv, ns);
-        // On the ray's side as the vertex normal was turned, then kept a little above the surface's
-        // plane: a shading normal below the geometric hemisphere would make every direction leak
-        // (sameSide); bending it back is the simple alternative to Schuessler et al. 2017's
-        // microfacet-based normal mapping.
+        // On the ray's side as the vertex normal was turned, then tilted back toward the geometric normal
+        // until the view direction's mirror reflection stays above the surface (keepReflectionAbove).
         n = dot(ns, s.geometricNormal) < 0.0 ? -n : n;
-        float c = dot(n, s.geometricNormal);
-        const float kMinCos = 0.05;
-        if (c < kMinCos) n = normalize(n + (kMinCos - c) * s.geometricNormal);
-        s.shadingNormal = n;
+        s.mappedNormal = n;
+        s.shadingNormal = keepReflectionAbove(n, s.geometricNormal, wo);
         orthonormalBasis(s.shadingNormal, s.tangent, s.bitangent);
     }
 #endif
@@ -98,6 +106,9 @@ Surface surfaceAt(Ray ray, Hit hit) {
 #endif
     s.shadingNormal = dot(ns, s.geometricNormal) < 0.0 ? -ns : ns;
     orthonormalBasis(s.shadingNormal, s.tangent, s.bitangent);
+#ifdef NORMAL_MAPPED_SURFACES
+    s.mappedNormal = s.shadingNormal;
+#endif
     s.materialIndex = tri.material;
     s.material = fetchMaterial(s.materialIndex);
 #ifdef SURFACE_TEXTURES
@@ -105,7 +116,7 @@ Surface surfaceAt(Ray ray, Hit hit) {
 #if SURFACE_MAPS == DIFFUSE_MAP_BIT
     s.material.diffuse = texturedDiffuse(s.materialIndex, s.material.diffuse, hit.triangle, hit.uv);
 #else
-    applyTextureMaps(s, hit, ns);
+    applyTextureMaps(s, hit, ns, -ray.dir);
 #endif
 #endif
     // Front faces face out of a closed glass object: a ray hitting one enters it.
@@ -138,6 +149,18 @@ vec3 emittedRadiance(Surface s) { return s.frontFace ? s.material.emission : vec
 // Shading normals can put a direction on one side of the shading frame and the other side of the true
 // surface; such a direction cannot be followed (it would leak light through the surface).
 bool sameSide(Surface s, vec3 local, vec3 world) { return (local.z > 0.0) == (dot(world, s.geometricNormal) > 0.0); }
+
+#ifdef NORMAL_MAPPED_SURFACES
+// Whether a delta lobe's direction wi, sampled from wo, met a normal map's normal bent for either of the
+// two (keepReflectionAboveFor): the bend depends on the direction, so a path arriving from wi would not
+// sample wo. Light subpaths end there (bdpt_subpaths.glsl), and the estimators that join or split paths
+// by which end traced them leave such paths to the camera's side (bdpt's gCameraBent, nee's light pass).
+bool bentDelta(Surface s, vec3 wo, vec3 wi) {
+    if (materialMaps(s.materialIndex).w < 0) return false;
+    vec3 n = s.mappedNormal, ng = s.geometricNormal;
+    return keepReflectionAboveFor(n, ng, wo) != n || keepReflectionAboveFor(n, ng, wi) != n;
+}
+#endif
 
 // A ray leaving the surface, nudged off it to the side it leaves on.
 Ray spawnRay(Surface s, vec3 dir) { return Ray(offsetToward(s.position, s.geometricNormal, s.offset, dir), dir); }

@@ -94,7 +94,7 @@ vec4 tangentTexel(int i) { return SCENE_TEXEL(uTangents, i); }
 // of Wrinkled Surfaces Revisited", section 2.3): the map's rgb * 2 - 1, x and y scaled by `scale`,
 // gives the normal in the frame (t, b, n) with n the interpolated vertex normal, t the interpolated
 // tangent made orthogonal to n (Gram-Schmidt) and b = sign cross(n, t). The unit result may lean past
-// the surface's plane where a map tilts steeply: surfaceAt keeps it in the geometric normal's hemisphere.
+// the surface's plane where a map tilts steeply: surfaceAt tilts it back (valid_reflection.glsl).
 vec3 normalMapped(int t, float scale, int i, vec2 b, vec2 uv, vec3 n) {
     vec4 tw = (1.0 - b.x - b.y) * tangentTexel(i * TANGENT_TEXELS) + b.x * tangentTexel(i * TANGENT_TEXELS + 1) +
               b.y * tangentTexel(i * TANGENT_TEXELS + 2);

@@ -179,11 +179,14 @@ vec3 radiance(Ray ray) {
         }
         Surface s = surfaceAt(ray, hit);
         dispersive = meetDispersion(s) || dispersive;
-        PathVertex z = PathVertex(s.position, s.geometricNormal, s.shadingNormal, -ray.dir, beta, s.materialIndex,
+        PathVertex z = PathVertex(s.position, s.geometricNormal, storedNormal(s), -ray.dir, beta, s.materialIndex,
                                   s.eta, 1.0, 0.0, false, dispersive, s.offset);
         // z_1's density is the camera's (its direction spread over the film), for strategy t = 1.
         z.pdfFwd = toArea(t >= 3 ? pdfDir : cameraDirectionPdf(ray.dir), gCamera[t - 2].p, z);
         storeCameraVertex(t - 1, z);
+#if defined(NORMAL_MAPPED_SURFACES) && !CAUSTICS_LIGHT_TRACED
+        gCameraBent[t - 1] = false;  // (set below once its direction is sampled; joins here scatter off no delta)
+#endif
         keepDiffuse(true, t - 1, s);
 
         // s = 0: the camera subpath hit an emitter.
@@ -209,11 +212,14 @@ vec3 radiance(Ray ray) {
 
         BsdfSample bs;
         BounceNumbers u = drawBounceNumbers(depth);
-        if (!bsdfSample(s.material, wo, u.bsdf, s.eta, bs)) break;
+        if (!sampleVertex(s, z, -ray.dir, u.bsdf, false, bs)) break;
         vec3 dir = toWorld(s, bs.wi);
-        if (!sameSide(s, bs.wi, dir)) break;
+        if (!(mixedSampling(s) && !bs.delta) && !sameSide(s, bs.wi, dir)) break;
         beta *= bs.weight;
         etaScale *= refractionScale(bs, s);
+#if defined(NORMAL_MAPPED_SURFACES) && !CAUSTICS_LIGHT_TRACED
+        gCameraBent[t - 1] = bs.delta && bentDelta(s, -ray.dir, dir);
+#endif
         if (bs.delta) {
             gCamera[t - 1].delta = true;
             if (t >= 3) gCamera[t - 2].pdfRev = 0.0;

@@ -96,6 +96,22 @@ MaterialData vertexMaterial(bool camera, int i) {
 #endif
     return m;
 }
+// The normal a surface's path vertex keeps (PathVertex.ns): a normal map's before any bend, which
+// vertexNormal makes for each join; else the shading normal.
+vec3 storedNormal(Surface s) {
+#ifdef NORMAL_MAPPED_SURFACES
+    return s.mappedNormal;
+#else
+    return s.shadingNormal;
+#endif
+}
+
+#if defined(NORMAL_MAPPED_SURFACES) && !CAUSTICS_LIGHT_TRACED
+// Camera vertices whose sampled direction came from a delta lobe with a bent normal (surface.glsl,
+// bentDelta): no light subpath goes through them, so misWeight leaves out the strategies that would.
+bool gCameraBent[BDPT_CAMERA_VERTICES];
+#endif
+
 // The delta flags of the light vertices, apart from gLight: on llvmpipe (Mesa 22.3.6) `gLight[count -
 // 1].delta = true` in traceLightSubpath read back false afterwards (measured with a debug copy of the
 // light-tracing pass), which made the weights count impossible strategies through smooth glass.
@@ -143,10 +159,24 @@ vec3 spectralFactor(bool dispersive) { return dispersive ? gSpectralWeight : vec
 // stored as 0 and counts as 1; the strategies that would need it are skipped by the delta flags.
 float remap0(float pdf) { return pdf != 0.0 ? pdf : 1.0; }
 
-vec3 vertexLocal(PathVertex v, vec3 w) {
+// The shading normal at v for a join or a sample whose camera-side direction (away from v) is
+// `cameraSide`. A normal map's normal (stored unbent in ns: surface.glsl, mappedNormal) is bent for it
+// as surfaceAt bends it for a camera ray arriving along it (valid_reflection.glsl), from whichever side
+// of the surface that is: so every strategy sees the BSDF the camera's paths see, f(wo, wi) with the
+// normal bent for wo, whichever subpath found the vertex. BSDF sampling bends for the direction it
+// arrives from (vertexPdf), as surfaceAt did.
+vec3 vertexNormal(PathVertex v, vec3 cameraSide) {
+#ifdef NORMAL_MAPPED_SURFACES
+    if (materialMaps(v.material).w >= 0) return keepReflectionAboveFor(v.ns, v.ng, cameraSide);
+#endif
+    return v.ns;
+}
+
+// w in the local frame of shading normal n, as surfaceAt's frame (toLocal).
+vec3 vertexLocal(vec3 n, vec3 w) {
     vec3 t, b;
-    orthonormalBasis(v.ns, t, b);
-    return vec3(dot(w, t), dot(w, b), dot(w, v.ns));
+    orthonormalBasis(n, t, b);
+    return vec3(dot(w, t), dot(w, b), dot(w, n));
 }
 
 // A direction is usable at v if the shading and geometric normals put it on the same side.
@@ -161,7 +191,8 @@ bool agrees(PathVertex v, vec3 local, vec3 world) {
 // (light subpaths): the adjoint BSDF f*(a, b) = f(b, a), i.e. without the 1/eta^2 radiance scaling, and
 // times the shading-normal correction |a.ns| |b.ng| / (|a.ng| |b.ns|) (Veach 1997, ch. 5; pbrt-v3 16.1).
 vec3 vertexBsdf(PathVertex v, MaterialData m, vec3 a, vec3 b, bool importance) {
-    vec3 la = vertexLocal(v, a), lb = vertexLocal(v, b);
+    vec3 n = vertexNormal(v, importance ? b : a);
+    vec3 la = vertexLocal(n, a), lb = vertexLocal(n, b);
     if (!agrees(v, la, a) || !agrees(v, lb, b)) return vec3(0.0);
     float eta = v.eta;
     float correction = 1.0;
@@ -176,9 +207,10 @@ vec3 vertexBsdf(PathVertex v, MaterialData m, vec3 a, vec3 b, bool importance) {
     return f * correction;
 }
 
-// Solid-angle density with which BSDF sampling at v, arriving from direction a, picks direction b.
-float vertexPdf(PathVertex v, MaterialData m, vec3 a, vec3 b) {
-    vec3 la = vertexLocal(v, a), lb = vertexLocal(v, b);
+// Solid-angle density with which the BSDF's own sampling at v, arriving from direction a, picks b.
+float bsdfVertexPdf(PathVertex v, MaterialData m, vec3 a, vec3 b) {
+    vec3 n = vertexNormal(v, a);
+    vec3 la = vertexLocal(n, a), lb = vertexLocal(n, b);
     if (!agrees(v, la, a) || !agrees(v, lb, b)) return 0.0;
     float eta = v.eta;
     if (la.z < 0.0) {
@@ -187,6 +219,59 @@ float vertexPdf(PathVertex v, MaterialData m, vec3 a, vec3 b) {
         eta = 1.0 / eta;
     }
     return bsdfPdf(m, la, lb, eta);
+}
+
+// Whether bdpt samples surface s's scattering by the mixture of sampleVertex: a normal map that is not
+// a mirror's.
+bool mixedSampling(Surface s) {
+#ifdef NORMAL_MAPPED_SURFACES
+    return materialMaps(s.materialIndex).w >= 0 && !isDeltaOnly(s.material);
+#else
+    return false;
+#endif
+}
+
+// Solid-angle density with which bdpt's sampling at v (sampleVertex), arriving from direction a, picks
+// direction b.
+float vertexPdf(PathVertex v, MaterialData m, vec3 a, vec3 b) {
+    float pdf = bsdfVertexPdf(v, m, a, b);
+#ifdef NORMAL_MAPPED_SURFACES
+    if (materialMaps(v.material).w >= 0 && !isDeltaOnly(m)) {
+        float side = dot(a, v.ng) < 0.0 ? -1.0 : 1.0;
+        pdf = 0.5 * pdf + 0.5 * max(0.0, side * dot(b, v.ng)) / PI;
+    }
+#endif
+    return pdf;
+}
+
+// bdpt's sampling of the direction leaving vertex v of surface s, arrived at from world direction `from`
+// (-ray.dir), with numbers u (drawBounceNumbers' bsdf), for radiance (camera subpaths) or importance
+// (light subpaths). At a normal-mapped surface the BSDF bends its normal for the camera's side of each
+// vertex (vertexNormal), which a light subpath learns only after sampling there: its BSDF sampling,
+// bent for the side it arrived from, misses directions the camera's side can scatter into. So there half
+// of the samples are the BSDF's own and half cosine-weighted about the geometric normal, which covers
+// every reflection (one-sample MIS over the two, Veach 1997, section 9.2.4: weight f / the mixture's
+// density, vertexPdf), the same on both subpaths. A delta lobe's sample keeps its own weight, doubled
+// for the half it was drawn in. Elsewhere the BSDF's sampling as it is. bs.wi is in s's frame.
+bool sampleVertex(Surface s, PathVertex v, vec3 from, vec3 u, bool importance, out BsdfSample bs) {
+    vec3 wo = toLocal(s, from);
+    if (!mixedSampling(s)) return bsdfSample(s.material, wo, u, s.eta, bs);
+    if (u.z < 0.5) {
+        if (!bsdfSample(s.material, wo, vec3(u.xy, 2.0 * u.z), s.eta, bs)) return false;
+        if (bs.delta) {
+            bs.weight *= 2.0;
+            return true;
+        }
+    } else {
+        float side = dot(from, v.ng) < 0.0 ? -1.0 : 1.0;
+        bs = BsdfSample(toLocal(s, toWorld(sampleCosineLocal(u.xy), side * v.ng)), vec3(0.0), 0.0, false);
+    }
+    vec3 dir = toWorld(s, bs.wi);
+    MaterialData m = s.material;
+    bs.pdf = vertexPdf(v, m, from, dir);
+    if (!(bs.pdf > 0.0)) return false;
+    bs.weight = vertexBsdf(v, m, from, dir, importance) / bs.pdf;
+    return bs.weight != vec3(0.0);
 }
 
 // Solid angle to area density at `to`: p_A = p_omega |cos(theta_to)| / r^2 (d omega = cos dA / r^2),
@@ -229,6 +314,9 @@ float misWeight(int s, int t, float zRevLast, float zRevPrev, float yRevLast, fl
     float r = 1.0;
     for (int i = t - 1; i >= 1; --i) {
         if (s + t - i > BDPT_MAX_LIGHT_VERTICES) break;
+#if defined(NORMAL_MAPPED_SURFACES) && !CAUSTICS_LIGHT_TRACED
+        if (i + 1 <= t - 1 && gCameraBent[i + 1]) break;  // the light subpath would scatter at z_{i+1}
+#endif
         float rev = i == t - 1 ? zRevLast : (i == t - 2 ? zRevPrev : gCamera[i].pdfRev);
         r *= remap0(rev) / remap0(gCamera[i].pdfFwd);
         bool deltaHere = i == t - 1 ? false : gCamera[i].delta;
@@ -358,7 +446,7 @@ int traceLightSubpath(int maxDepth) {
         if (!traceClosest(ray, hit)) break;
         Surface s = surfaceAt(ray, hit);
         dispersive = meetDispersion(s) || dispersive;
-        PathVertex y = PathVertex(s.position, s.geometricNormal, s.shadingNormal, -ray.dir, beta,
+        PathVertex y = PathVertex(s.position, s.geometricNormal, storedNormal(s), -ray.dir, beta,
                                   s.materialIndex, s.eta, 0.0, 0.0, false, dispersive, s.offset);
         y.pdfFwd = toArea(pdfDir, gLight[count - 1].p, y);
 #if PUNCTUAL_LIGHTS
@@ -380,7 +468,8 @@ int traceLightSubpath(int maxDepth) {
         if (wo.z <= 0.0) break;  // -ray.dir disagrees with the shading normal: f = 0
         BsdfSample bs;
         // (The light stream's pairs are the pixel's own at every depth: rng.glsl's rand2Coherent.)
-        if (!bsdfSample(s.material, wo, drawBounceNumbers(count - 1).bsdf, s.eta, bs)) break;
+        if (!sampleVertex(s, y, -ray.dir, drawBounceNumbers(count - 1).bsdf, true, bs)) break;
+        bool mixed = mixedSampling(s) && !bs.delta;  // bs.weight is the adjoint's already
 #if CAUSTICS_LIGHT_TRACED
         // Smooth lobes only from the caustic's receiver on, after at least one caster's lobe; casters'
         // lobes only before it.
@@ -394,12 +483,15 @@ int traceLightSubpath(int maxDepth) {
         }
 #endif
         vec3 next = toWorld(s, bs.wi);
-        if (!sameSide(s, bs.wi, next)) break;
+        if (!mixed && !sameSide(s, bs.wi, next)) break;
         // Adjoint BSDF (see vertexBsdf): undo the radiance scaling and correct for the shading normal.
         float cosInG = abs(dot(ray.dir, s.geometricNormal));
         if (cosInG == 0.0 || bs.wi.z == 0.0) break;
         float correction = wo.z * abs(dot(next, s.geometricNormal)) / (cosInG * abs(bs.wi.z));
-        beta *= bs.weight * (bs.wi.z < 0.0 ? s.eta * s.eta : 1.0) * correction;
+        beta *= mixed ? bs.weight : bs.weight * (bs.wi.z < 0.0 ? s.eta * s.eta : 1.0) * correction;
+#ifdef NORMAL_MAPPED_SURFACES
+        if (bs.delta && bentDelta(s, -ray.dir, next)) break;  // (surface.glsl)
+#endif
         if (bs.delta) {
             gLightDelta[count - 1] = true;
             gLight[count - 2].pdfRev = 0.0;

@@ -123,6 +123,9 @@ bool extendPath(inout CameraPath p) {
         else
             p.causticSmooth = -1;
     }
+#ifdef NORMAL_MAPPED_SURFACES
+    if (bs.delta && bentDelta(s, -ray.dir, dir)) p.causticSmooth = -1;  // no light subpath follows it
+#endif
     if (!survivesRoulette(p.beta, p.etaScale, bs.delta, depth, u.roulette)) return false;
     p.ray = spawnRay(s, dir);
     p.depth = depth + 1;
