@@ -138,7 +138,10 @@ int renderCommand(const std::vector<std::string>& argv) {
 
     std::unique_ptr<GlContext> context = createOffscreenContext(request.backend());
     if (!quiet) std::fprintf(stderr, "renderer: %s\n", context->description().c_str());
-    Renderer renderer(scene, ShaderLibrary(request.shaderDir()), layout::bvhOptions(request.bvhThreads()));
+    // The settings never change here: the caustic casters are found only if they can be used.
+    Renderer renderer(scene, ShaderLibrary(request.shaderDir()), layout::bvhOptions(request.bvhThreads()),
+                      SceneReads::Auto,
+                      usesCausticCasters(settings) ? CasterSearch::Run : CasterSearch::Skip);
     renderer.configure(settings, camera);
     const std::string fingerprint = renderFingerprint(scene, settings, camera);
     int already = 0;

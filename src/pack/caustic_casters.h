@@ -36,7 +36,9 @@ bool isGlossyCasterMaterial(const Material& m, const std::vector<Texture>& textu
 // (centre, radius) spheres that together hold every triangle of a caster material (either of the above),
 // world triangles and instances' alike; empty when there is none. One sphere per such material (per instance
 // for instanced meshes), centred on its box; while there are more than kMaxCausticCasters, the two whose
-// union is smallest are merged (over 64, all of them into one).
-std::vector<glm::vec4> causticCasterSpheres(const Scene& scene);
+// union is smallest are merged (over 64, all of them into one). Each material is judged once and each
+// roughness map read at most once, however many triangles share them: O(triangles + texels).
+// `roughnessMapsRead`, when given, receives how many maps were read (for the tests).
+std::vector<glm::vec4> causticCasterSpheres(const Scene& scene, size_t* roughnessMapsRead = nullptr);
 
 }  // namespace fp
