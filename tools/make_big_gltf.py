@@ -8,27 +8,20 @@ textured models"); they are generated, never committed.
   DamagedHelmet has them.
 - lamp.glb: a ~6k-triangle desk lamp of five materials (metal base, arm and head, fabric shade, glowing
   bulb, cable), each with its own 2048x2048 baseColor and metallicRoughness maps and some with normal maps.
+- parts.glb: 1500 small parts (168k triangles), each under its own node, 375 materials sharing four
+  256x256 maps, every tenth mesh drawn twice (instances).
 
-Only the standard library: the PNGs are written by hand (png()). Run:
-    python3 tools/make_big_gltf.py OUT_DIR [--helmet-triangles N] [--texture-size S]"""
+Only the standard library: the PNGs and the glTF structure come from make_gltf_showcase.py. Run:
+    python3 tools/make_big_gltf.py OUT_DIR [--helmet-triangles N] [--texture-size S] [--parts N]"""
 import argparse
 import json
 import math
 import os
 import struct
-import zlib
+import sys
 
-
-def png(width, height, rows, channels):
-    """An 8-bit RGB or RGBA PNG (PNG spec: signature, IHDR, one IDAT of filter-0 scanlines, IEND)."""
-    def chunk(kind, data):
-        return struct.pack(">I", len(data)) + kind + data + struct.pack(">I", zlib.crc32(kind + data))
-
-    raw = b"".join(b"\x00" + bytes(row) for row in rows)
-    colour_type = 6 if channels == 4 else 2
-    header = struct.pack(">IIBBBBB", width, height, 8, colour_type, 0, 0, 0)
-    return (b"\x89PNG\r\n\x1a\n" + chunk(b"IHDR", header) + chunk(b"IDAT", zlib.compress(raw, 6)) +
-            chunk(b"IEND", b""))
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from make_gltf_showcase import Builder, png, sphere  # noqa: E402
 
 
 def pattern_rows(size, texel, seed):
@@ -50,61 +43,29 @@ def pattern_rows(size, texel, seed):
     return rows
 
 
-class Glb:
+class Glb(Builder):
+    """make_gltf_showcase's builder, writing one .glb with the images inside it."""
+
     def __init__(self, generator):
-        self.bin = bytearray()
-        self.doc = {"asset": {"version": "2.0", "generator": generator}, "buffers": [], "bufferViews": [],
-                    "accessors": [], "meshes": [], "materials": [], "nodes": [], "images": [],
-                    "textures": [], "samplers": [{}], "scenes": [{"nodes": []}], "scene": 0}
-
-    def view(self, data, target=None):
-        while len(self.bin) % 4:
-            self.bin.append(0)
-        view = {"buffer": 0, "byteOffset": len(self.bin), "byteLength": len(data)}
-        if target:
-            view["target"] = target
-        self.bin += data
-        self.doc["bufferViews"].append(view)
-        return len(self.doc["bufferViews"]) - 1
-
-    def floats(self, values, kind):
-        width = {"VEC2": 2, "VEC3": 3}[kind]
-        data = struct.pack("<%df" % len(values), *values)
-        accessor = {"bufferView": self.view(data, 34962), "componentType": 5126,
-                    "count": len(values) // width, "type": kind}
-        if kind == "VEC3":
-            columns = [values[i::3] for i in range(3)]
-            accessor["min"] = [min(c) for c in columns]
-            accessor["max"] = [max(c) for c in columns]
-        self.doc["accessors"].append(accessor)
-        return len(self.doc["accessors"]) - 1
-
-    def indices(self, values):
-        data = struct.pack("<%dI" % len(values), *values)
-        self.doc["accessors"].append({"bufferView": self.view(data, 34963), "componentType": 5125,
-                                      "count": len(values), "type": "SCALAR"})
-        return len(self.doc["accessors"]) - 1
+        super().__init__()
+        self.doc["asset"]["generator"] = generator
+        self.doc["scenes"] = [{"nodes": []}]
+        self.doc["scene"] = 0
 
     def primitive(self, geometry, material):
         positions, normals, uvs, indices = geometry
-        return {"attributes": {"POSITION": self.floats(positions, "VEC3"),
-                               "NORMAL": self.floats(normals, "VEC3"),
-                               "TEXCOORD_0": self.floats(uvs, "VEC2")},
-                "indices": self.indices(indices), "material": material}
+        attributes, index_accessor = self.geometry(positions, normals, uvs, indices)
+        return {"attributes": attributes, "indices": index_accessor, "material": material}
 
     def image(self, size, rows):
         self.doc["images"].append({"bufferView": self.view(png(size, size, rows, 3)), "mimeType": "image/png"})
         self.doc["textures"].append({"source": len(self.doc["images"]) - 1, "sampler": 0})
         return {"index": len(self.doc["textures"]) - 1}
 
-    def material(self, m):
-        self.doc["materials"].append(m)
-        return len(self.doc["materials"]) - 1
-
     def mesh_node(self, primitives, translation=(0, 0, 0)):
         self.doc["meshes"].append({"primitives": primitives})
-        self.doc["nodes"].append({"mesh": len(self.doc["meshes"]) - 1, "translation": list(translation)})
-        self.doc["scenes"][0]["nodes"].append(len(self.doc["nodes"]) - 1)
+        self.doc["scenes"][0]["nodes"].append(self.node({"mesh": len(self.doc["meshes"]) - 1,
+                                                         "translation": list(translation)}))
 
     def write(self, path):
         while len(self.bin) % 4:
@@ -119,25 +80,14 @@ class Glb:
 
 
 def lumpy_sphere(stacks, slices, radius=1.0, lump=0.03, centre=(0, 0, 0)):
-    """A UV sphere with small bumps (so that no two triangles are alike), 2 * stacks * (slices - 1)
-    triangles."""
-    positions, normals, uvs, indices = [], [], [], []
-    for i in range(stacks + 1):
-        theta = math.pi * i / stacks
-        for j in range(slices + 1):
-            phi = 2 * math.pi * j / slices
-            n = (math.sin(theta) * math.cos(phi), math.cos(theta), math.sin(theta) * math.sin(phi))
-            r = radius * (1 + lump * math.sin(7 * theta) * math.sin(5 * phi))
-            positions += [centre[k] + r * n[k] for k in range(3)]
-            normals += n
-            uvs += [j / slices, i / stacks]
-    for i in range(stacks):
-        for j in range(slices):
-            a, b = i * (slices + 1) + j, (i + 1) * (slices + 1) + j
-            if i > 0:
-                indices += [a, a + 1, b]
-            if i < stacks - 1:
-                indices += [a + 1, b + 1, b]
+    """make_gltf_showcase's UV sphere with small bumps (so that no two triangles are alike), scaled and
+    moved: 2 * stacks * (slices - 1) triangles."""
+    unit, normals, uvs, indices = sphere(stacks, slices)
+    positions = []
+    for v in range(len(unit) // 3):
+        theta, phi = math.pi * (v // (slices + 1)) / stacks, 2 * math.pi * (v % (slices + 1)) / slices
+        r = radius * (1 + lump * math.sin(7 * theta) * math.sin(5 * phi))
+        positions += [centre[k] + r * unit[3 * v + k] for k in range(3)]
     return positions, normals, uvs, indices
 
 
@@ -215,15 +165,39 @@ def lamp(out, size):
     g.write(os.path.join(out, "lamp.glb"))
 
 
+def parts(out, count, size):
+    """`count` small parts (a machine's or a city's many nodes): each a sphere of 112 triangles under
+    its own node, with one of count / 4 materials, which share 4 small maps; every tenth mesh is drawn
+    by two nodes (an instance). Finds costs that grow with nodes x meshes or materials x triangles."""
+    g = Glb("fragpath tools/make_big_gltf.py")
+    maps = [g.image(size, pattern_rows(size, roughness_map(8 * k, 255 if k % 2 else 0), k + 1)) for k in range(4)]
+    materials = [g.material({"name": "part %d" % k,
+                             "pbrMetallicRoughness": {"baseColorFactor": [0.2 + 0.6 * (k % 5) / 4, 0.5, 0.5, 1.0],
+                                                      "metallicRoughnessTexture": maps[k % 4],
+                                                      "metallicFactor": float(k % 2), "roughnessFactor": 1.0}})
+                 for k in range(max(1, count // 4))]
+    side = int(math.ceil(math.sqrt(count)))
+    geometry = lumpy_sphere(8, 8, 0.4, 0.05)
+    for k in range(count):
+        translation = (k % side - side / 2, 0, k // side - side / 2)
+        g.mesh_node([g.primitive(geometry, materials[k % len(materials)])], translation)
+        if k % 10 == 0:
+            g.doc["scenes"][0]["nodes"].append(g.node({"mesh": len(g.doc["meshes"]) - 1,
+                                                       "translation": [translation[0], 1.0, translation[2]]}))
+    g.write(os.path.join(out, "parts.glb"))
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("out")
     parser.add_argument("--helmet-triangles", type=int, default=100000)
     parser.add_argument("--texture-size", type=int, default=2048)
+    parser.add_argument("--parts", type=int, default=1500)
     args = parser.parse_args()
     os.makedirs(args.out, exist_ok=True)
     helmet(args.out, args.helmet_triangles, args.texture_size)
     lamp(args.out, args.texture_size)
+    parts(args.out, args.parts, 256)
 
 
 if __name__ == "__main__":
