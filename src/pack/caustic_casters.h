@@ -25,7 +25,8 @@ constexpr float kGlossyCasterRoughness = 0.35f;
 // Whether some point of a surface of this material can have a delta lobe: every model but the
 // Lambertian has a specular lobe, a delta one below kSmoothRoughness. A roughness map multiplies the
 // factor by its G channel, filtered bilinearly, so by at least its smallest texel: `textures` (the
-// scene's) bound it; a map that is not there counts as one that can reach 0.
+// scene's) bound it; a map that is not there counts as one that can reach 0. Each call reads the whole
+// map: a question about one material (causticCasterSpheres asks each material once).
 bool hasDeltaLobe(const Material& m, const std::vector<Texture>& textures);
 
 // Whether some point of a surface of this material can be a glossy caster: a conductor, or a
