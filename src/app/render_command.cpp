@@ -126,6 +126,8 @@ int renderCommand(const std::vector<std::string>& argv) {
     std::signal(SIGINT, onInterrupt);
     std::signal(SIGTERM, onInterrupt);
     auto start = SteadyClock::now();
+    const double startCpu = processCpuSeconds();
+    FirstFrameStages stages;
     Scene scene = request.loadScene();
     RenderSettings settings = request.settings(scene);
     settings.sampleOffset = sampleOffset;
@@ -135,11 +137,22 @@ int renderCommand(const std::vector<std::string>& argv) {
     Camera camera = request.camera(scene);
     std::optional<PartialRender> resumed;
     if (auto r = args.text("--resume")) resumed = readPartial(*r);
+    stages.loadSeconds = secondsSince(start);
 
+    auto stage = SteadyClock::now();
     std::unique_ptr<GlContext> context = createOffscreenContext(request.backend());
+    stages.contextSeconds = secondsSince(stage);
     if (!quiet) std::fprintf(stderr, "renderer: %s\n", context->description().c_str());
-    Renderer renderer(scene, ShaderLibrary(request.shaderDir()), layout::bvhOptions(request.bvhThreads()));
+    stage = SteadyClock::now();
+    // The settings never change here: the caustic casters are found only if they can be used.
+    Renderer renderer(scene, ShaderLibrary(request.shaderDir()), layout::bvhOptions(request.bvhThreads()),
+                      SceneReads::Auto,
+                      usesCausticCasters(settings) ? CasterSearch::Run : CasterSearch::Skip);
+    stages.bvhSeconds = renderer.stats().bvhBuildSeconds;
+    stages.packAndUploadSeconds = secondsSince(stage) - stages.bvhSeconds;
+    stage = SteadyClock::now();
     renderer.configure(settings, camera);
+    stages.compileSeconds = secondsSince(stage);
     const std::string fingerprint = renderFingerprint(scene, settings, camera);
     int already = 0;
     if (resumed) {
@@ -167,7 +180,11 @@ int renderCommand(const std::vector<std::string>& argv) {
     double firstFrameSeconds = 0.0;
     renderer.render(std::max(spp - already, 0), [&](int done) {
         auto now = SteadyClock::now();
-        if (firstFrameSeconds == 0.0) firstFrameSeconds = secondsBetween(start, now);
+        if (firstFrameSeconds == 0.0) {
+            firstFrameSeconds = secondsBetween(start, now);
+            stages.firstPassSeconds = secondsBetween(traceStart, now);
+            stages.cpuSeconds = processCpuSeconds() - startCpu;
+        }
         if (!quiet) progress.update(done);
         bool overBudget = budget && secondsBetween(traceStart, now) >= *budget;
         return !interrupted.load() && !overBudget;
@@ -193,7 +210,7 @@ int renderCommand(const std::vector<std::string>& argv) {
                      acc.raysTraced() / seconds);
     if (showStats || statsJson) {
         RenderStats stats = collectRenderStats(renderer, acc, context->description(), scene.source, output,
-                                               {done, firstFrameSeconds, seconds, cpuSeconds});
+                                               {done, firstFrameSeconds, seconds, cpuSeconds, stages});
         if (showStats) std::fputs(formatRenderStats(stats).c_str(), stdout);
         if (statsJson) writeRenderStatsJson(*statsJson, stats);
     }

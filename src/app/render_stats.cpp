@@ -37,6 +37,7 @@ RenderStats collectRenderStats(const Renderer& renderer, const Accumulation& acc
     s.rays = uint64_t(std::llround(acc.raysTraced()));
     s.droppedSamples = acc.droppedSamples();
     s.firstFrameSeconds = times.firstFrameSeconds;
+    s.firstFrame = times.firstFrame;
     s.seconds = times.seconds;
     s.cpuSeconds = times.cpuSeconds;
     return s;
@@ -73,6 +74,12 @@ std::string formatRenderStats(const RenderStats& stats) {
     text +=
         formatText("first frame      %.3f s after start (load, build, upload, shader compile, first pass)\n",
                    stats.firstFrameSeconds);
+    const FirstFrameStages& f = stats.firstFrame;
+    text += formatText(
+        "  of which       load %.3f, context %.3f, bvh %.3f, pack + upload %.3f, compile %.3f, first pass "
+        "%.3f s; %.3f CPU-s\n",
+        f.loadSeconds, f.contextSeconds, f.bvhSeconds, f.packAndUploadSeconds, f.compileSeconds,
+        f.firstPassSeconds, f.cpuSeconds);
     text += formatText("samples          %d per pixel, %.0f paths, %.0f rays (%.2f rays per path)\n",
                        stats.spp, paths, rays, per(rays, paths));
     text += formatText("throughput       %.3g paths/s, %.3g rays/s, %.3g paths per CPU-second\n",
@@ -135,6 +142,14 @@ nlohmann::json renderStatsJson(const RenderStats& stats) {
         {"memory", memory},
         {"scene_reads", sceneReadsName(s.sceneReads)},
         {"first_frame_seconds", stats.firstFrameSeconds},
+        {"first_frame",
+         {{"load_seconds", stats.firstFrame.loadSeconds},
+          {"context_seconds", stats.firstFrame.contextSeconds},
+          {"bvh_seconds", stats.firstFrame.bvhSeconds},
+          {"pack_and_upload_seconds", stats.firstFrame.packAndUploadSeconds},
+          {"compile_seconds", stats.firstFrame.compileSeconds},
+          {"first_pass_seconds", stats.firstFrame.firstPassSeconds},
+          {"cpu_seconds", stats.firstFrame.cpuSeconds}}},
         {"spp", stats.spp},
         {"paths", stats.paths},
         {"rays", stats.rays},

@@ -136,7 +136,8 @@ SceneMeasurement measureScene(const std::function<Scene()>& load, const BenchSet
         m.source = scene.source;
         m.loadSeconds = secondsSince(m.loadStart);
         auto stage = SteadyClock::now();
-        renderer.emplace(scene, ShaderLibrary(settings.shaderDir), settings.bvh);
+        renderer.emplace(scene, ShaderLibrary(settings.shaderDir), settings.bvh, SceneReads::Auto,
+                         usesCausticCasters(render) ? CasterSearch::Run : CasterSearch::Skip);
         m.rendererSeconds = secondsSince(stage);  // BVH build, packing and upload
     }
     auto stage = SteadyClock::now();

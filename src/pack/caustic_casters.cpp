@@ -33,44 +33,99 @@ glm::vec4 sphereAbout(const Aabb& box, const std::vector<glm::vec3>& points) {
     return glm::vec4(centre, std::sqrt(radius2));
 }
 
-// The smallest roughness a surface of material m can have: the factor times the roughness map's
-// smallest G texel (0 for a map that is not there).
-float smallestRoughness(const Material& m, const std::vector<Texture>& textures) {
-    if (m.metallicRoughnessTexture < 0) return m.roughness;
-    if (size_t(m.metallicRoughnessTexture) >= textures.size()) return 0.0f;
-    const std::vector<uint8_t>& texels = textures[size_t(m.metallicRoughnessTexture)].image.texels;
+// The smallest G texel of a metallic-roughness map (255 for a map without texels).
+uint8_t smallestG(const Texture& map) {
+    const std::vector<uint8_t>& texels = map.image.texels;
     uint8_t g = 255;
     for (size_t i = 1; i < texels.size(); i += 4) g = std::min(g, texels[i]);
-    return m.roughness * float(g) / 255.0f;
+    return g;
 }
 
-bool isCaster(const Material& m, const std::vector<Texture>& textures) {
-    return hasDeltaLobe(m, textures) || isGlossyCasterMaterial(m, textures);
+// The smallest roughness a surface of material m can have, given its map's smallest G texel: the factor
+// times that texel (0 for a map that is not there).
+float smallestRoughness(const Material& m, size_t textureCount, uint8_t mapSmallestG) {
+    if (m.metallicRoughnessTexture < 0) return m.roughness;
+    if (size_t(m.metallicRoughnessTexture) >= textureCount) return 0.0f;
+    return m.roughness * float(mapSmallestG) / 255.0f;
 }
+
+bool deltaLobeBelow(const Material& m, float smallest) {
+    // Twice the threshold: the GPU's filtered value may round below the smallest texel, and a delta lobe
+    // missed here would lose its caustics (the camera pass leaves them to the light pass).
+    return m.type != MaterialType::Diffuse && smallest < 2.0f * kSmoothRoughness;
+}
+
+bool glossyCasterBelow(const Material& m, float smallest) {
+    bool metal = m.type == MaterialType::Conductor ||
+                 (m.type == MaterialType::MetallicRoughness && m.metallic >= 1.0f);
+    // A margin of one texel's step over the threshold, for the same reason as deltaLobeBelow's.
+    return metal && smallest < kGlossyCasterRoughness + 1.0f / 255.0f;
+}
+
+float smallestRoughness(const Material& m, const std::vector<Texture>& textures) {
+    bool mapped = m.metallicRoughnessTexture >= 0 && size_t(m.metallicRoughnessTexture) < textures.size();
+    return smallestRoughness(m, textures.size(),
+                             mapped ? smallestG(textures[size_t(m.metallicRoughnessTexture)]) : uint8_t(255));
+}
+
+// Whether each material is a caster, judged when first asked and remembered, and each roughness map
+// read at most once, so that the search costs O(triangles + texels) however many triangles and
+// materials share a map (it had read a material's map for every triangle: minutes for a 100k-triangle
+// model with 2048x2048 maps).
+class CasterMaterials {
+  public:
+    explicit CasterMaterials(const Scene& scene)
+        : scene_(scene), caster_(scene.materials.size(), kUnknown), mapG_(scene.textures.size(), kUnknown) {}
+
+    bool operator()(uint32_t material) {
+        if (material >= caster_.size()) return false;
+        int& known = caster_[material];
+        if (known == kUnknown) known = judge(scene_.materials[material]);
+        return known != 0;
+    }
+    size_t mapsRead() const { return mapsRead_; }
+
+  private:
+    static constexpr int kUnknown = -1;
+
+    int judge(const Material& m) {
+        if (m.type == MaterialType::Diffuse) return 0;  // neither test holds, whatever the map says
+        int texture = m.metallicRoughnessTexture;
+        uint8_t g = 255;
+        if (texture >= 0 && size_t(texture) < mapG_.size()) {
+            int& known = mapG_[size_t(texture)];
+            if (known == kUnknown) {
+                known = smallestG(scene_.textures[size_t(texture)]);
+                ++mapsRead_;
+            }
+            g = uint8_t(known);
+        }
+        float smallest = smallestRoughness(m, scene_.textures.size(), g);
+        return deltaLobeBelow(m, smallest) || glossyCasterBelow(m, smallest);
+    }
+
+    const Scene& scene_;
+    std::vector<int> caster_, mapG_;  // per material, per texture; kUnknown until asked
+    size_t mapsRead_ = 0;
+};
 
 }  // namespace
 
 bool hasDeltaLobe(const Material& m, const std::vector<Texture>& textures) {
-    if (m.type == MaterialType::Diffuse) return false;
-    // Twice the threshold: the GPU's filtered value may round below the smallest texel, and a delta lobe
-    // missed here would lose its caustics (the camera pass leaves them to the light pass).
-    return smallestRoughness(m, textures) < 2.0f * kSmoothRoughness;
+    return deltaLobeBelow(m, smallestRoughness(m, textures));
 }
 
 bool isGlossyCasterMaterial(const Material& m, const std::vector<Texture>& textures) {
-    bool metal = m.type == MaterialType::Conductor ||
-                 (m.type == MaterialType::MetallicRoughness && m.metallic >= 1.0f);
-    // A margin of one texel's step over the threshold, for the same reason as hasDeltaLobe's.
-    return metal && smallestRoughness(m, textures) < kGlossyCasterRoughness + 1.0f / 255.0f;
+    return glossyCasterBelow(m, smallestRoughness(m, textures));
 }
 
-std::vector<glm::vec4> causticCasterSpheres(const Scene& scene) {
+std::vector<glm::vec4> causticCasterSpheres(const Scene& scene, size_t* roughnessMapsRead) {
+    CasterMaterials isCaster(scene);
     std::vector<glm::vec4> spheres;
     // World triangles, one sphere per material.
     std::map<uint32_t, std::pair<Aabb, std::vector<glm::vec3>>> byMaterial;
     for (const Triangle& t : scene.triangles) {
-        if (t.material >= scene.materials.size() || !isCaster(scene.materials[t.material], scene.textures))
-            continue;
+        if (!isCaster(t.material)) continue;
         auto& [box, points] = byMaterial[t.material];
         for (const glm::vec3& p : t.p) {
             box.grow(p);
@@ -83,12 +138,12 @@ std::vector<glm::vec4> causticCasterSpheres(const Scene& scene) {
     std::vector<Aabb> meshCasters(scene.meshes.size());
     for (size_t i = 0; i < scene.meshes.size(); ++i)
         for (const Triangle& t : scene.meshes[i].triangles)
-            if (t.material < scene.materials.size() && isCaster(scene.materials[t.material], scene.textures))
-                meshCasters[i].grow(t.bounds());
+            if (isCaster(t.material)) meshCasters[i].grow(t.bounds());
     for (const Instance& instance : scene.instances)
         if (instance.mesh < meshCasters.size() && !meshCasters[instance.mesh].empty())
             spheres.push_back(
                 sphereAbout(instanceBounds(meshCasters[instance.mesh], instance.objectToWorld), {}));
+    if (roughnessMapsRead) *roughnessMapsRead = isCaster.mapsRead();
 
     if (spheres.size() > 64) {
         glm::vec4 all = spheres[0];

@@ -25,7 +25,8 @@ constexpr float kGlossyCasterRoughness = 0.35f;
 // Whether some point of a surface of this material can have a delta lobe: every model but the
 // Lambertian has a specular lobe, a delta one below kSmoothRoughness. A roughness map multiplies the
 // factor by its G channel, filtered bilinearly, so by at least its smallest texel: `textures` (the
-// scene's) bound it; a map that is not there counts as one that can reach 0.
+// scene's) bound it; a map that is not there counts as one that can reach 0. Each call reads the whole
+// map: a question about one material (causticCasterSpheres asks each material once).
 bool hasDeltaLobe(const Material& m, const std::vector<Texture>& textures);
 
 // Whether some point of a surface of this material can be a glossy caster: a conductor, or a
@@ -36,7 +37,9 @@ bool isGlossyCasterMaterial(const Material& m, const std::vector<Texture>& textu
 // (centre, radius) spheres that together hold every triangle of a caster material (either of the above),
 // world triangles and instances' alike; empty when there is none. One sphere per such material (per instance
 // for instanced meshes), centred on its box; while there are more than kMaxCausticCasters, the two whose
-// union is smallest are merged (over 64, all of them into one).
-std::vector<glm::vec4> causticCasterSpheres(const Scene& scene);
+// union is smallest are merged (over 64, all of them into one). Each material is judged once and each
+// roughness map read at most once, however many triangles share them: O(triangles + texels).
+// `roughnessMapsRead`, when given, receives how many maps were read (for the tests).
+std::vector<glm::vec4> causticCasterSpheres(const Scene& scene, size_t* roughnessMapsRead = nullptr);
 
 }  // namespace fp

@@ -31,8 +31,15 @@ static_assert(kCausticSmoothBounces + 3 <= LightSplat::kLightVertices);
 
 }  // namespace
 
+bool usesCausticCasters(const RenderSettings& settings) {
+    if (settings.view != View::Radiance || settings.caustics == Caustics::Path) return false;
+    if (settings.caustics == Caustics::Auto && settings.clampIndirect > 0.0f) return false;
+    return settings.integrator == Integrator::Nee ||
+           (settings.split && settings.split->integrator == Integrator::Nee);
+}
+
 Renderer::Renderer(const Scene& scene, ShaderLibrary shaders, const BvhBuildOptions& bvhOptions,
-                   SceneReads reads)
+                   SceneReads reads, CasterSearch casters)
     : shaders_(std::move(shaders)) {
     stats_.sceneReads = resolveSceneReads(reads);  // before the slow work, so that a refusal is quick
     auto start = SteadyClock::now();
@@ -59,7 +66,8 @@ Renderer::Renderer(const Scene& scene, ShaderLibrary shaders, const BvhBuildOpti
 
     start = SteadyClock::now();
     closeEmitters_ = emittersFaceCloseSurfaces(scene, bvh, meshBvhs);
-    causticCasters_ = causticCasterSpheres(scene);
+    castersSearched_ = casters == CasterSearch::Run;
+    if (castersSearched_) causticCasters_ = causticCasterSpheres(scene);
     PackedScene packed = packScene(scene, bvh, meshBvhs);
     stats_.triangles = uint32_t(scene.triangleCount());
     stats_.storedTriangles = packed.triangleCount;
@@ -239,6 +247,10 @@ void Renderer::configure(const RenderSettings& settings, const Camera& camera) {
         throw Error("the indirect clamp is implemented for nee, bsdf and naive, not for bdpt");
     if (settings.caustics == Caustics::Light && settings.clampIndirect > 0.0f)
         throw Error("light-traced caustics are not clamped: use --caustics path with --clamp-indirect");
+    if (!castersSearched_ && usesCausticCasters(settings))
+        throw Error(
+            "internal: these settings use the caustic casters, and the renderer was built without "
+            "them (CasterSearch::Skip)");
     if (settings.caustics == Caustics::Light && causticCasters_.empty())
         throw Error(
             "light-traced caustics need a surface with a smooth (delta) lobe, glass or a mirror, "

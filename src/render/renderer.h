@@ -34,12 +34,23 @@ struct SceneStats {
     SceneReads sceneReads = SceneReads::TexelFetch;  // how the trace shaders read the scene buffers
 };
 
+// Whether a renderer finds the scene's caustic casters when it is built (pack/caustic_casters.h: a pass
+// over the triangles and a read of every caster candidate's roughness map). Only nee's light pass for
+// caustics aims at them, so a front end whose settings are known beforehand skips the search when they
+// cannot use it (usesCausticCasters); configure() then refuses settings that would.
+enum class CasterSearch { Run, Skip };
+
+// Whether rendering with `settings` may need the caustic casters: nee (either half of a split) with the
+// radiance view, its caustics not left to camera paths (--caustics path) nor clamped.
+bool usesCausticCasters(const RenderSettings& settings);
+
 class Renderer {
   public:
     // `reads` is resolved for the current context (resolveSceneReads, gpu/scene_textures.h); the choice
     // is in stats().sceneReads.
     Renderer(const Scene& scene, ShaderLibrary shaders = ShaderLibrary(),
-             const BvhBuildOptions& bvh = layout::bvhOptions(), SceneReads reads = SceneReads::Auto);
+             const BvhBuildOptions& bvh = layout::bvhOptions(), SceneReads reads = SceneReads::Auto,
+             CasterSearch casters = CasterSearch::Run);
     ~Renderer();
 
     // Sets what to render; restarts accumulation, recompiling shaders only when the integrator, view, guides
@@ -104,6 +115,7 @@ class Renderer {
     bool closeEmitters_ = false;      // LightSampling::Auto samples by solid angle (pack/light_strategy.h)
     std::vector<glm::vec4>
         causticCasters_;            // spheres nee's caustic light paths aim at (pack/caustic_casters.h)
+    bool castersSearched_ = false;  // CasterSearch::Run: causticCasters_ holds them
     bool surfaceTextures_ = false;  // some material has a texture: compile the lookups in
     int surfaceMaps_ = 0;           // which kinds of map (layout::MapBit): SURFACE_MAPS
     bool surfaceOpacity_ = false;   // some material has alpha or is single-sided: SURFACE_OPACITY

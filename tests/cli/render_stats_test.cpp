@@ -53,6 +53,16 @@ TEST_F(RenderStatsCli, JsonIsConsistentAndMatchesThePrintedStats) {
     EXPECT_GT(j["memory"]["image_bytes"].get<uint64_t>(), 0u);
     EXPECT_GT(j["seconds"].get<double>(), 0.0);
     EXPECT_GT(j["first_frame_seconds"].get<double>(), 0.0);
+    // The first frame's stages follow one another inside it.
+    double stages = 0.0;
+    for (const char* key : {"load_seconds", "context_seconds", "bvh_seconds", "pack_and_upload_seconds",
+                            "compile_seconds", "first_pass_seconds"}) {
+        EXPECT_GE(j["first_frame"][key].get<double>(), 0.0) << key;
+        stages += j["first_frame"][key].get<double>();
+    }
+    EXPECT_GT(j["first_frame"]["first_pass_seconds"].get<double>(), 0.0);
+    EXPECT_LE(stages, j["first_frame_seconds"].get<double>() + 1e-9);
+    EXPECT_GT(j["first_frame"]["cpu_seconds"].get<double>(), 0.0);
     EXPECT_NEAR(j["throughput"]["paths_per_second"].get<double>() * j["seconds"].get<double>(),
                 j["paths"].get<double>(), 1e-6 * j["paths"].get<double>());
     EXPECT_NEAR(j["throughput"]["rays_per_second"].get<double>() * j["seconds"].get<double>(),

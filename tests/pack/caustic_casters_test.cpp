@@ -115,6 +115,41 @@ TEST(CausticCasters, EveryCasterVertexIsInsideASphere) {
     EXPECT_GT(casterVertices, 1000);
 }
 
+// Start-up had grown with triangles x texels: a material's roughness map was read for every one of its
+// triangles. Now each map is read once, whatever the number of triangles and materials sharing it, and
+// not at all for a material that cannot be a caster (Lambertian).
+TEST(CausticCasters, EachRoughnessMapIsReadOnceHoweverManyTrianglesShareIt) {
+    Scene scene;
+    // Maps: 0 reaches roughness 0.08 at one texel (glossy for a metal); 1 stays rough; 2 is on a
+    // Lambertian material only.
+    scene.textures = {roughnessMap(255, 20), roughnessMap(255, 255), roughnessMap(0, 0)};
+    for (int i = 0; i < 3; ++i) {  // three metals sharing map 0
+        Material metal = material(MaterialType::MetallicRoughness, 1.0f);
+        metal.metallic = 1.0f;
+        metal.metallicRoughnessTexture = 0;
+        scene.materials.push_back(metal);
+    }
+    Material rough = material(MaterialType::Conductor, 1.0f);
+    rough.metallicRoughnessTexture = 1;
+    scene.materials.push_back(rough);  // 3
+    Material lambertian = material(MaterialType::Diffuse, 1.0f);
+    lambertian.metallicRoughnessTexture = 2;
+    scene.materials.push_back(lambertian);  // 4
+    for (uint32_t m = 0; m < 5; ++m)
+        appendSphere(scene, glm::vec3(4.0f * float(m), 0.0f, 0.0f), 1.0f, 12, 24, m, true);
+    ASSERT_GT(scene.triangles.size(), 2000u);
+
+    size_t mapsRead = 0;
+    std::vector<glm::vec4> spheres = causticCasterSpheres(scene, &mapsRead);
+    EXPECT_EQ(mapsRead, 2u) << "maps 0 and 1, once each";
+    // The three metals are casters (and only they: the rough conductor's sphere at x = 12 would reach
+    // past x = 11).
+    ASSERT_FALSE(spheres.empty());
+    for (const Triangle& t : scene.triangles)
+        for (const glm::vec3& p : t.p)
+            EXPECT_EQ(insideSome(spheres, p), t.material < 3) << p.x << " " << p.y << " " << p.z;
+}
+
 TEST(CausticCasters, NoneWithoutADeltaLobe) {
     Scene scene;
     scene.materials = {material(MaterialType::Diffuse, 0.0f), material(MaterialType::Dielectric, 0.4f)};
