@@ -335,34 +335,45 @@ TEST(GltfMaterial, AThirdUvPairIsTheMapsMeanAndSamplersReachTheTextures) {
     b.push("samplers", {{"wrapS", 33071}, {"wrapT", 33648}, {"magFilter", 9728}});
     int clamped = b.push("textures", {{"source", 0}, {"sampler", 0}});
     auto offset = [](double u) { return json{{"KHR_texture_transform", {{"offset", {u, 0.0}}}}}; };
+    int three = b.material({{"name", "three"},
+                            {"pbrMetallicRoughness",
+                             pbr(1, 1,
+                                 {{"baseColorTexture", {{"index", checker}}},
+                                  {"metallicRoughnessTexture", {{"index", mr}, {"texCoord", 1}}}})},
+                            {"emissiveFactor", {1, 1, 1}},
+                            {"emissiveTexture", {{"index", grey}, {"extensions", offset(0.5)}}}});
+    int clampedMaterial = b.material(
+        {{"name", "clamped"}, {"pbrMetallicRoughness", pbr(0, 1, {{"baseColorTexture", {{"index", clamped}}}})}});
+    json primitives = json::array();
+    for (int m : {three, clampedMaterial}) {
+        json p = quadPrimitive(b, m, true, "TEXCOORD_0");
+        p["attributes"]["TEXCOORD_1"] = p["attributes"]["TEXCOORD_0"];
+        primitives.push_back(p);
+    }
+    b.mesh(primitives);
+    b.node({{"mesh", 0}});
+    b.scene({0});
+    test::TempDir dir;
     WarningCapture capture;
-    Scene scene = withMaterials(
-        b, {{{"name", "three"},
-             {"pbrMetallicRoughness",
-              pbr(1, 1,
-                  {{"baseColorTexture", {{"index", checker}}},
-                   {"metallicRoughnessTexture", {{"index", mr}, {"texCoord", 1}}}})},
-             {"emissiveFactor", {1, 1, 1}},
-             {"emissiveTexture", {{"index", grey}, {"extensions", offset(0.5)}}}},
-            {{"name", "clamped"}, {"pbrMetallicRoughness", pbr(0, 1, {{"baseColorTexture", {{"index", clamped}}}})}}});
-    const Material& three = materialOfQuad(scene, 0);
-    EXPECT_GE(three.diffuseTexture, 0);
-    EXPECT_GE(three.metallicRoughnessTexture, 0);
-    EXPECT_EQ(scene.textures[size_t(three.metallicRoughnessTexture)].uvSlot, 1);
-    EXPECT_EQ(three.emissionTexture, -1);
-    EXPECT_NEAR(three.emission.r, srgbDecode(128.0f / 255.0f), 1e-6f);  // the mean, not 1
+    Scene scene = loadScene(dir.write("m.gltf", b.gltf()));
+    const Material& mapped = materialOfQuad(scene, 0);
+    EXPECT_GE(mapped.diffuseTexture, 0);
+    EXPECT_GE(mapped.metallicRoughnessTexture, 0);
+    EXPECT_EQ(scene.textures[size_t(mapped.metallicRoughnessTexture)].uvSlot, 1);
+    EXPECT_EQ(mapped.emissionTexture, -1);
+    EXPECT_NEAR(mapped.emission.r, srgbDecode(128.0f / 255.0f), 1e-6f);  // the mean, not 1
     EXPECT_TRUE(capture.contains("maps needing a third pair of TEXCOORD set and KHR_texture_transform in one "
                                  "material (two are drawn) replaced by their means (material 'three'"))
         << test::joined(capture);
     const Material& other = materialOfQuad(scene, 1);
     ASSERT_GE(other.diffuseTexture, 0);
-    ASSERT_NE(other.diffuseTexture, three.diffuseTexture);
+    ASSERT_NE(other.diffuseTexture, mapped.diffuseTexture);
     const Texture& t = scene.textures[size_t(other.diffuseTexture)];
     EXPECT_EQ(t.wrapS, TextureWrap::ClampToEdge);
     EXPECT_EQ(t.wrapT, TextureWrap::MirroredRepeat);
     EXPECT_TRUE(t.nearest);
-    EXPECT_EQ(scene.textures[size_t(three.diffuseTexture)].wrapS, TextureWrap::Repeat);
-    EXPECT_FALSE(scene.textures[size_t(three.diffuseTexture)].nearest);
+    EXPECT_EQ(scene.textures[size_t(mapped.diffuseTexture)].wrapS, TextureWrap::Repeat);
+    EXPECT_FALSE(scene.textures[size_t(mapped.diffuseTexture)].nearest);
 }
 
 TEST(GltfMaterial, TexturedMaterialWithoutItsTexcoordsGetsTheMeanColour) {
