@@ -105,6 +105,37 @@ TEST(Textures, AlbedoViewReproducesTheTexture) {
         }
 }
 
+// A sampler's wrap modes and nearest filtering (glTF's wrapS, wrapT, magFilter; Texture's fields): the
+// quad's uvs stretched over [-1, 2]^2, clamped along u, mirrored along v, nearest. Each pixel centre
+// (half a texel across, never on a texel's edge) must show exactly the texel that the OpenGL rules pick,
+// written independently of the GLSL.
+TEST(Textures, SamplersClampMirrorAndPickTheNearestTexel) {
+    ensureGlContext();
+    std::vector<uint8_t> rgba = gradientTexels();
+    Scene scene = texturedQuad(rgba, true);
+    for (Triangle& t : scene.triangles)
+        for (glm::vec2& uv : t.uv) uv = 3.0f * uv - 1.0f;
+    scene.textures[0].wrapS = TextureWrap::ClampToEdge;
+    scene.textures[0].wrapT = TextureWrap::MirroredRepeat;
+    scene.textures[0].nearest = true;
+    Renderer renderer(scene, testShaders());
+    const int size = 6 * kTexSize;
+    Image image = albedoView(renderer, size);
+    auto mirrored = [](int i) {
+        int m = ((i % (2 * kTexSize)) + 2 * kTexSize) % (2 * kTexSize);
+        return m < kTexSize ? m : 2 * kTexSize - 1 - m;
+    };
+    for (int y = 0; y < size; ++y)
+        for (int x = 0; x < size; ++x) {
+            glm::vec2 uv = 3.0f * glm::vec2((x + 0.5f) / size, 1.0f - (y + 0.5f) / size) - 1.0f;
+            int tx = std::clamp(int(std::floor(uv.x * kTexSize)), 0, kTexSize - 1);
+            int ty = mirrored(int(std::floor((1.0f - uv.y) * kTexSize)));
+            glm::vec3 expected = decodedTexel(rgba, tx, ty);
+            for (int c = 0; c < 3; ++c)
+                EXPECT_NEAR(image.at(x, y)[c], expected[c], 1e-4f) << x << "," << y << " channel " << c;
+        }
+}
+
 TEST(Textures, KdMultipliesTheTextureAndPlasticBasesAreTextured) {
     ensureGlContext();
     std::vector<uint8_t> rgba = gradientTexels();
