@@ -205,6 +205,26 @@ TEST(Textures, BdptJoinsSeeTheSameTexturedKdAsNee) {
     EXPECT_LT(estimate(nee).mean.g, 2.5f);
 }
 
+// Vertex colours (Scene::colors, glTF COLOR_0) multiply Kd in a scene without textures too
+// (VERTEX_COLORS alone), and bdpt's joins keep the coloured Kd of their stored vertices as they keep a
+// textured one: in the closed emissive box of orange walls bdpt and nee agree, and the light is orange.
+TEST(Textures, VertexColoursMultiplyKdForNeeAndBdptAlike) {
+    ensureGlContext();
+    Scene scene = furnaceBox(1.0f, 1.0f);
+    const glm::vec4 orange(0.9f, 0.5f, 0.2f, 1.0f);
+    scene.colors.assign(scene.triangles.size(), {orange, orange, orange});
+    Renderer renderer(scene, testShaders());
+    Accumulation nee = renderScene(renderer, insideCamera(), Integrator::Nee, 16, 64, 3);
+    Accumulation bdpt = renderScene(renderer, insideCamera(), Integrator::Bdpt, 16, 64, 3);
+    std::vector<float> z = blockZScores(bdpt, nee, 2);
+    ASSERT_GT(z.size(), 100u);
+    expectZScoresOfNoise(z);
+    // Emission 1 plus Kd times it, bounce after bounce: 1 + k + k^2 + k^3 per channel with k = Kd times
+    // the colour, so red well above blue.
+    glm::vec3 mean = estimate(nee).mean;
+    EXPECT_GT(mean.r, 1.4f * mean.b);
+}
+
 // Documented fallback: faces without vt show Kd times the texture's mean colour, with one warning, and
 // the scene needs no texture data on the GPU at all.
 TEST(Textures, QuadWithoutTexcoordsShowsTheMeanColour) {

@@ -376,6 +376,42 @@ TEST(GltfMaterial, AThirdUvPairIsTheMapsMeanAndSamplersReachTheTextures) {
     EXPECT_FALSE(scene.textures[size_t(mapped.diffuseTexture)].nearest);
 }
 
+// COLOR_0 (glTF 2.0 3.7.2.1): VEC4 of normalized unsigned bytes and VEC3 of floats (alpha 1) per vertex in
+// Scene::colors, 1 for a primitive without; an unnormalized integer accessor is refused, naming it.
+TEST(GltfMaterial, VertexColoursReachTheScene) {
+    GltfBuilder b;
+    int m = b.material({{"pbrMetallicRoughness", pbr(0, 1)}});
+    json bytes = quadPrimitive(b, m, false);
+    std::vector<uint8_t> rgba = {255, 0, 0, 128, 0, 255, 0, 255, 0, 0, 255, 0, 51, 51, 51, 255};
+    bytes["attributes"]["COLOR_0"] = b.accessor(GltfBuilder::raw(rgba), 5121, 4, "VEC4", {{"normalized", true}});
+    json floats = quadPrimitive(b, m, false);
+    floats["attributes"]["COLOR_0"] = b.vec3({{0.5f, 0.25f, 1.0f}, {0, 0, 0}, {1, 1, 1}, {0.2f, 0.2f, 0.2f}});
+    b.mesh(json::array({bytes, floats, quadPrimitive(b, m, false)}));
+    b.node({{"mesh", 0}});
+    b.scene({0});
+    test::TempDir dir;
+    Scene scene = loadScene(dir.write("c.gltf", b.gltf()));
+    ASSERT_EQ(scene.triangles.size(), 6u);
+    ASSERT_EQ(scene.colors.size(), 6u);
+    // The quad's triangles are corners (0, 1, 2) and (0, 2, 3).
+    EXPECT_EQ(scene.colors[0][0], glm::vec4(1.0f, 0.0f, 0.0f, 128.0f / 255.0f));
+    EXPECT_EQ(scene.colors[1][2], glm::vec4(0.2f, 0.2f, 0.2f, 1.0f));
+    EXPECT_EQ(scene.colors[2][0], glm::vec4(0.5f, 0.25f, 1.0f, 1.0f));
+    for (const glm::vec4& c : scene.colors[5]) EXPECT_EQ(c, glm::vec4(1.0f));
+
+    GltfBuilder c;
+    int n = c.material({{"pbrMetallicRoughness", pbr(0, 1)}});
+    json plain = quadPrimitive(c, n, false);
+    plain["attributes"]["COLOR_0"] = c.accessor(GltfBuilder::raw(rgba), 5121, 4, "VEC4");
+    c.mesh(json::array({plain}));
+    c.node({{"mesh", 0}});
+    c.scene({0});
+    std::string message = test::errorOf([&] { loadScene(dir.write("bad.gltf", c.gltf())); });
+    EXPECT_NE(message.find("COLOR_0 of meshes[0].primitives[0]) must be VEC3 or VEC4 of FLOAT, or of normalized"),
+              std::string::npos)
+        << message;
+}
+
 TEST(GltfMaterial, TexturedMaterialWithoutItsTexcoordsGetsTheMeanColour) {
     GltfBuilder b;
     int checker = addTexture(b, test::checkerTexels(2, 2, {255, 0, 0}, {0, 0, 255}), 2, 2);
