@@ -213,8 +213,8 @@ enum Unit : int {
 // shaders declare the same ones as images under SCENE_READS_IMAGES (glsl/common/scene_data.glsl, and
 // textures.glsl and lights.glsl for the optional ones). A context without image units for all of them
 // reads them all with texelFetch (resolveSceneReads).
-constexpr Unit kImageUnits[] = {kTrianglesUnit,      kNormalsUnit,       kNodesUnit,        kMaterialsUnit,
-                                kLightsUnit,         kTexcoordsUnit,     kTextureTableUnit, kTangentsUnit,
+constexpr Unit kImageUnits[] = {kTrianglesUnit,      kNormalsUnit,        kNodesUnit,        kMaterialsUnit,
+                                kLightsUnit,         kTexcoordsUnit,      kTextureTableUnit, kTangentsUnit,
                                 kEnvironmentMapUnit, kEnvironmentCdfUnit, kColorsUnit};
 // The highest image unit used, plus one.
 constexpr int kImageUnitsNeeded = [] {

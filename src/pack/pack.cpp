@@ -90,8 +90,8 @@ namespace {
 
 // The sampling field of a texture's table entry (pack/layout.h).
 int textureSampling(const Texture& t) {
-    return int(t.wrapS) + (int(t.wrapT) << layout::kTextureWrapTShift) + (t.nearest ? layout::kTextureNearestFlag : 0) +
-           (t.uvSlot == 1 ? layout::kTextureSlot1Flag : 0);
+    return int(t.wrapS) + (int(t.wrapT) << layout::kTextureWrapTShift) +
+           (t.nearest ? layout::kTextureNearestFlag : 0) + (t.uvSlot == 1 ? layout::kTextureSlot1Flag : 0);
 }
 
 // Texture coordinates in leaf order (each triangle's slot 0, then with two slots its slot 1), and every
@@ -107,7 +107,8 @@ void packTextures(const Scene& scene, const std::vector<const Triangle*>& ordere
         for (const glm::vec2& uv : ordered[i]->uv) out->texcoords.push_back(uv);
         if (out->texcoordSlots == 2)
             for (int k = 0; k < 3; ++k)
-                out->texcoords.push_back(orderedTexcoords1[i] ? (*orderedTexcoords1[i])[size_t(k)] : glm::vec2(0.0f));
+                out->texcoords.push_back(orderedTexcoords1[i] ? (*orderedTexcoords1[i])[size_t(k)]
+                                                              : glm::vec2(0.0f));
     }
     // Which earlier texture holds the same texels (a glTF image read with two samplers or uv slots).
     auto sameTexels = [&scene](size_t k) {
@@ -230,7 +231,8 @@ PackedScene packScene(const Scene& scene, const Bvh& bvh, const std::vector<Bvh>
     std::vector<const Triangle*> ordered;
     std::vector<const std::array<glm::vec4, 3>*> orderedTangents, orderedColors;
     std::vector<const std::array<glm::vec2, 3>*> orderedTexcoords1;
-    auto add = [&](const std::vector<Triangle>& triangles, const std::vector<std::array<glm::vec4, 3>>& tangents,
+    auto add = [&](const std::vector<Triangle>& triangles,
+                   const std::vector<std::array<glm::vec4, 3>>& tangents,
                    const std::vector<std::array<glm::vec2, 3>>& texcoords1,
                    const std::vector<std::array<glm::vec4, 3>>& colors, const Bvh& tree) {
         for (size_t perTriangle : {tangents.size(), texcoords1.size(), colors.size()})
@@ -288,7 +290,8 @@ PackedScene packScene(const Scene& scene, const Bvh& bvh, const std::vector<Bvh>
         triangleFlags[k] = float((m.hasAlpha() ? layout::kTriangleAlphaFlag : 0) +
                                  (m.doubleSided ? 0 : layout::kTriangleSingleSidedFlag));
         out.opacity = out.opacity || m.needsOpacityTest();
-        for (const glm::vec4& texel : packMaterial(shaderMaterial(m, vertexColors))) out.materials.push_back(texel);
+        for (const glm::vec4& texel : packMaterial(shaderMaterial(m, vertexColors)))
+            out.materials.push_back(texel);
     }
     const bool tangents = (out.surfaceMaps & layout::kNormalMapBit) != 0;
     // A normal map's own uv slot gives its computed tangents (pack.h, triangleTangent).

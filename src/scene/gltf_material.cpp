@@ -102,9 +102,9 @@ struct MaterialTable::Impl {
 
     struct Resolved {
         bool done = false;
-        uint32_t index = 0;            // into Scene::materials
-        std::vector<UvSlot> uvSlots;   // the (set, transform) pairs its maps read, in order of first use
-        int64_t untextured = -1;       // the copy for primitives without those sets, once made
+        uint32_t index = 0;           // into Scene::materials
+        std::vector<UvSlot> uvSlots;  // the (set, transform) pairs its maps read, in order of first use
+        int64_t untextured = -1;      // the copy for primitives without those sets, once made
         size_t withoutTexcoords = 0;
     };
     std::vector<Resolved> resolved;  // per glTF material, then the default material
@@ -115,8 +115,8 @@ struct MaterialTable::Impl {
         std::string problem;  // empty when the image loaded
         std::string file;     // the file or the part of the glTF it came from, for Texture::name
     };
-    std::map<int, Loaded> images;                                  // by glTF image
-    std::set<int> warned;                                          // images whose problem was warned about
+    std::map<int, Loaded> images;  // by glTF image
+    std::set<int> warned;          // images whose problem was warned about
     // Scene::textures index, by glTF image, how it is sampled and the uv slot that reads it.
     std::map<std::tuple<int, TextureWrap, TextureWrap, bool, int>, int32_t> sceneTextures;
     std::map<std::string, std::vector<std::string>> ignoredKinds;  // what was ignored -> on which materials
@@ -224,8 +224,9 @@ struct MaterialTable::Impl {
             made.nearest = sampler.magFilter == TINYGLTF_TEXTURE_FILTER_NEAREST;
         }
         made.uvSlot = slot;
-        auto [it, added] = sceneTextures.emplace(
-            std::make_tuple(t.source, made.wrapS, made.wrapT, made.nearest, slot), int32_t(scene->textures.size()));
+        auto [it, added] =
+            sceneTextures.emplace(std::make_tuple(t.source, made.wrapS, made.wrapT, made.nearest, slot),
+                                  int32_t(scene->textures.size()));
         if (added) {
             made.image = images.at(t.source).image;
             scene->textures.push_back(std::move(made));
@@ -306,9 +307,10 @@ struct MaterialTable::Impl {
         if (found == r->uvSlots.end() && r->uvSlots.size() < 2) found = r->uvSlots.insert(found, wanted);
         if (found == r->uvSlots.end()) {
             scaleByMapMean(m, kind, map->image);
-            tally("maps needing a third pair of TEXCOORD set and KHR_texture_transform in one material (two "
-                  "are drawn) replaced by their means",
-                  material);
+            tally(
+                "maps needing a third pair of TEXCOORD set and KHR_texture_transform in one material (two "
+                "are drawn) replaced by their means",
+                material);
             return -1;
         }
         return sceneTexture(info.index, int(found - r->uvSlots.begin()));
@@ -323,9 +325,10 @@ struct MaterialTable::Impl {
             mapTexture(pbr.baseColorTexture, material, "baseColorTexture", MapKind::Diffuse, m, r, &broken);
         // The checker shows as it is whatever the factor was, as for a missing map_Kd.
         if (base >= 0 && broken) m->diffuse = glm::vec3(1.0f);
-        int32_t metallicRoughness = mapTexture(pbr.metallicRoughnessTexture, material, "metallicRoughnessTexture",
-                                               MapKind::MetallicRoughness, m, r);
-        m->emissionTexture = mapTexture(g.emissiveTexture, material, "emissiveTexture", MapKind::Emission, m, r);
+        int32_t metallicRoughness = mapTexture(pbr.metallicRoughnessTexture, material,
+                                               "metallicRoughnessTexture", MapKind::MetallicRoughness, m, r);
+        m->emissionTexture =
+            mapTexture(g.emissiveTexture, material, "emissiveTexture", MapKind::Emission, m, r);
         m->normalTexture = mapTexture(g.normalTexture, material, "normalTexture", MapKind::Normal, m, r);
         m->normalScale = float(g.normalTexture.scale);
         if (g.occlusionTexture.index >= 0)

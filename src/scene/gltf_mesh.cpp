@@ -141,10 +141,14 @@ void appendPrimitive(const tinygltf::Model& model, const MeshInstance& instance,
             if (!std::isfinite(t.x) || !std::isfinite(t.y))
                 throw Error(name + ": " + data.label() + " element " + std::to_string(i) +
                             " leaves the float range through its material's KHR_texture_transform");
-            uv[k][i] = glm::vec2(t.x, 1.0f - t.y);  // glTF's v = 0 is the top row of the image, ours the bottom
+            // glTF's v = 0 is the top row of the image, ours the bottom.
+            uv[k][i] = glm::vec2(t.x, 1.0f - t.y);
         }
     }
-    if (!hasTexcoords) uv[0].clear(), uv[1].clear();
+    if (!hasTexcoords) {  // the material's copy without maps (MaterialTable::use) needs none
+        uv[0].clear();
+        uv[1].clear();
+    }
     uint32_t material = materials.use(primitive.material, hasTexcoords);
 
     // COLOR_0 multiplies the base colour and alpha (glTF 2.0, 3.7.2.1): RGB (alpha 1) or RGBA, of float or

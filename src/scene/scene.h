@@ -235,8 +235,8 @@ struct Texture {
 // world triangles, which light sampling picks from.
 struct InstancedMesh {
     std::string name;
-    std::vector<Triangle> triangles;                 // in the mesh's own space; never empty
-    std::vector<std::array<glm::vec4, 3>> tangents;  // as Scene::tangents, for these triangles
+    std::vector<Triangle> triangles;                     // in the mesh's own space; never empty
+    std::vector<std::array<glm::vec4, 3>> tangents;      // as Scene::tangents, for these triangles
     std::vector<std::array<glm::vec2, 3>> texcoords1{};  // as Scene::texcoords1
     std::vector<std::array<glm::vec4, 3>> colors{};      // as Scene::colors
 };

@@ -110,20 +110,22 @@ void expectTheTexture(const Image& rendered, const SquareView& view, const Rgba8
                 lo = glm::min(lo, t);
                 hi = glm::max(hi, t);
             }
-            glm::vec3 first = linearTexel(image, wrapped(lo.x - 0.5f, image.width), wrapped(lo.y - 0.5f, image.height));
+            glm::vec3 first =
+                linearTexel(image, wrapped(lo.x - 0.5f, image.width), wrapped(lo.y - 0.5f, image.height));
             bool solid = true;
             for (float ty = std::floor(lo.y - 0.5f); ty <= std::floor(hi.y + 0.5f) && solid; ty += 1.0f)
                 for (float tx = std::floor(lo.x - 0.5f); tx <= std::floor(hi.x + 0.5f) && solid; tx += 1.0f)
                     solid = glm::all(glm::lessThan(
-                        glm::abs(linearTexel(image, wrapped(tx, image.width), wrapped(ty, image.height)) - first),
+                        glm::abs(linearTexel(image, wrapped(tx, image.width), wrapped(ty, image.height)) -
+                                 first),
                         glm::vec3(1e-3f)));
             if (!solid) continue;
             ++compared;
             glm::vec3 got = rendered.at(x, y);
             if (!glm::all(glm::lessThan(glm::abs(got - first), glm::vec3(0.02f)))) {
                 if (wrong < 5)
-                    ADD_FAILURE() << "pixel (" << x << ", " << y << "): " << got.x << " " << got.y << " " << got.z
-                                  << ", the texture " << first.x << " " << first.y << " " << first.z;
+                    ADD_FAILURE() << "pixel (" << x << ", " << y << "): " << got.x << " " << got.y << " "
+                                  << got.z << ", the texture " << first.x << " " << first.y << " " << first.z;
                 ++wrong;
             }
         }
@@ -170,8 +172,9 @@ TEST(GltfTextureSamples, TextureTransformTestCellsShowTheirTransformedTexture) {
         const Rgba8Image& image = flat.textures[size_t(material.diffuseTexture)].image;
         std::vector<bool> hidden(size_t(size) * size_t(size), false);  // behind a marker
         for (const char* marker : markers)
-            for (glm::ivec2 p : pixelsInside(boundsOf(flat, [&](size_t t) { return materialNamed(flat, t, marker); }),
-                                             view, size, -2))
+            for (glm::ivec2 p :
+                 pixelsInside(boundsOf(flat, [&](size_t t) { return materialNamed(flat, t, marker); }), view,
+                              size, -2))
                 hidden[size_t(p.y) * size_t(size) + size_t(p.x)] = true;
         const float c = std::cos(cell.rotation), s = std::sin(cell.rotation);
         auto uvAt = [&](glm::vec2 q) {
@@ -217,11 +220,13 @@ TEST(GltfTextureSamples, TextureSettingsTestWrapCellsShowNoRed) {
     const Scene flat = flattenInstances(scene);
     Aabb all = flat.bounds();
     glm::vec2 centre = glm::vec2(all.lo + all.hi) / 2.0f;
-    SquareView view{centre, 0.52f * std::max(all.hi.x - all.lo.x, all.hi.y - all.lo.y), 4.0f * (all.hi.y - all.lo.y)};
+    SquareView view{centre, 0.52f * std::max(all.hi.x - all.lo.x, all.hi.y - all.lo.y),
+                    4.0f * (all.hi.y - all.lo.y)};
     const int size = 128;
     Image albedo = renderSquare(scene, view, View::Albedo, size, 8);
-    for (const char* material : {"TextureClampMaterialS", "TextureClampMaterialT", "TextureRepeatMaterialS",
-                                 "TextureRepeatMaterialT", "TextureMirrorMaterialS", "TextureMirrorMaterialT"}) {
+    for (const char* material :
+         {"TextureClampMaterialS", "TextureClampMaterialT", "TextureRepeatMaterialS",
+          "TextureRepeatMaterialT", "TextureMirrorMaterialS", "TextureMirrorMaterialT"}) {
         SCOPED_TRACE(material);
         Aabb cell = boundsOf(flat, [&](size_t t) { return materialNamed(flat, t, material); });
         ASSERT_TRUE(cell.lo.x < cell.hi.x) << "no such material";
@@ -245,7 +250,8 @@ TEST(GltfTextureSamples, MultiUVTestShowsTheEmissiveMapOnTheSecondSet) {
     SquareView view{{0.0f, 0.0f}, 1.0f, 5.0f, 1.0f};  // the face's plane, z = 1
     Image radiance = renderSquare(scene, view, View::Radiance, 64, 8);
     size_t quad = 0;
-    while (quad < scene.triangles.size() && !(scene.materials[scene.triangles[quad].material].emission.x > 0.0f))
+    while (quad < scene.triangles.size() &&
+           !(scene.materials[scene.triangles[quad].material].emission.x > 0.0f))
         ++quad;
     ASSERT_LT(quad, scene.triangles.size());
     const Material& material = scene.materials[scene.triangles[quad].material];

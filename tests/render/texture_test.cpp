@@ -180,6 +180,18 @@ TEST(Textures, EveryIntegratorSeesTheTexturedAlbedoUnderAUniformSky) {
         }
 }
 
+// Expects bdpt and nee to agree (block z-scores) on `scene` seen from insideCamera() after 3 bounces;
+// returns nee's mean.
+glm::vec3 neeAgreesWithBdptInTheBox(const Scene& scene) {
+    Renderer renderer(scene, testShaders());
+    Accumulation nee = renderScene(renderer, insideCamera(), Integrator::Nee, 16, 64, 3);
+    Accumulation bdpt = renderScene(renderer, insideCamera(), Integrator::Bdpt, 16, 64, 3);
+    std::vector<float> z = blockZScores(bdpt, nee, 2);
+    EXPECT_GT(z.size(), 100u);
+    expectZScoresOfNoise(z);
+    return estimate(nee).mean;
+}
+
 // Bidirectional joins evaluate the BSDF at stored vertices, away from where the Surface was built: the
 // textured Kd must travel with them. In a closed emissive box with textured walls bdpt and nee must agree.
 TEST(Textures, BdptJoinsSeeTheSameTexturedKdAsNee) {
@@ -194,15 +206,9 @@ TEST(Textures, BdptJoinsSeeTheSameTexturedKdAsNee) {
     }
     scene.textures.push_back({"gradient", Rgba8Image{kTexSize, kTexSize, gradientTexels()}});
     scene.materials[0].diffuseTexture = 0;
-    Renderer renderer(scene, testShaders());
-    Accumulation nee = renderScene(renderer, insideCamera(), Integrator::Nee, 16, 64, 3);
-    Accumulation bdpt = renderScene(renderer, insideCamera(), Integrator::Bdpt, 16, 64, 3);
-    std::vector<float> z = blockZScores(bdpt, nee, 2);
-    ASSERT_GT(z.size(), 100u);
-    expectZScoresOfNoise(z);
     // With Kd 1 the box would hold radiance 1 + 1 + 1 + 1 after 3 bounces; the texture's albedo is
     // below 0.6, so the image must be well below that.
-    EXPECT_LT(estimate(nee).mean.g, 2.5f);
+    EXPECT_LT(neeAgreesWithBdptInTheBox(scene).g, 2.5f);
 }
 
 // Vertex colours (Scene::colors, glTF COLOR_0) multiply Kd in a scene without textures too
@@ -213,15 +219,9 @@ TEST(Textures, VertexColoursMultiplyKdForNeeAndBdptAlike) {
     Scene scene = furnaceBox(1.0f, 1.0f);
     const glm::vec4 orange(0.9f, 0.5f, 0.2f, 1.0f);
     scene.colors.assign(scene.triangles.size(), {orange, orange, orange});
-    Renderer renderer(scene, testShaders());
-    Accumulation nee = renderScene(renderer, insideCamera(), Integrator::Nee, 16, 64, 3);
-    Accumulation bdpt = renderScene(renderer, insideCamera(), Integrator::Bdpt, 16, 64, 3);
-    std::vector<float> z = blockZScores(bdpt, nee, 2);
-    ASSERT_GT(z.size(), 100u);
-    expectZScoresOfNoise(z);
     // Emission 1 plus Kd times it, bounce after bounce: 1 + k + k^2 + k^3 per channel with k = Kd times
     // the colour, so red well above blue.
-    glm::vec3 mean = estimate(nee).mean;
+    glm::vec3 mean = neeAgreesWithBdptInTheBox(scene);
     EXPECT_GT(mean.r, 1.4f * mean.b);
 }
 

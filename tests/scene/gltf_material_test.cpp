@@ -335,15 +335,16 @@ TEST(GltfMaterial, AThirdUvPairIsTheMapsMeanAndSamplersReachTheTextures) {
     b.push("samplers", {{"wrapS", 33071}, {"wrapT", 33648}, {"magFilter", 9728}});
     int clamped = b.push("textures", {{"source", 0}, {"sampler", 0}});
     auto offset = [](double u) { return json{{"KHR_texture_transform", {{"offset", {u, 0.0}}}}}; };
-    int three = b.material({{"name", "three"},
-                            {"pbrMetallicRoughness",
-                             pbr(1, 1,
-                                 {{"baseColorTexture", {{"index", checker}}},
-                                  {"metallicRoughnessTexture", {{"index", mr}, {"texCoord", 1}}}})},
-                            {"emissiveFactor", {1, 1, 1}},
-                            {"emissiveTexture", {{"index", grey}, {"extensions", offset(0.5)}}}});
-    int clampedMaterial = b.material(
-        {{"name", "clamped"}, {"pbrMetallicRoughness", pbr(0, 1, {{"baseColorTexture", {{"index", clamped}}}})}});
+    int three = b.material(
+        {{"name", "three"},
+         {"pbrMetallicRoughness", pbr(1, 1,
+                                      {{"baseColorTexture", {{"index", checker}}},
+                                       {"metallicRoughnessTexture", {{"index", mr}, {"texCoord", 1}}}})},
+         {"emissiveFactor", {1, 1, 1}},
+         {"emissiveTexture", {{"index", grey}, {"extensions", offset(0.5)}}}});
+    int clampedMaterial =
+        b.material({{"name", "clamped"},
+                    {"pbrMetallicRoughness", pbr(0, 1, {{"baseColorTexture", {{"index", clamped}}}})}});
     json primitives = json::array();
     for (int m : {three, clampedMaterial}) {
         json p = quadPrimitive(b, m, true, "TEXCOORD_0");
@@ -362,8 +363,9 @@ TEST(GltfMaterial, AThirdUvPairIsTheMapsMeanAndSamplersReachTheTextures) {
     EXPECT_EQ(scene.textures[size_t(mapped.metallicRoughnessTexture)].uvSlot, 1);
     EXPECT_EQ(mapped.emissionTexture, -1);
     EXPECT_NEAR(mapped.emission.r, srgbDecode(128.0f / 255.0f), 1e-6f);  // the mean, not 1
-    EXPECT_TRUE(capture.contains("maps needing a third pair of TEXCOORD set and KHR_texture_transform in one "
-                                 "material (two are drawn) replaced by their means (material 'three'"))
+    EXPECT_TRUE(
+        capture.contains("maps needing a third pair of TEXCOORD set and KHR_texture_transform in one "
+                         "material (two are drawn) replaced by their means (material 'three'"))
         << test::joined(capture);
     const Material& other = materialOfQuad(scene, 1);
     ASSERT_GE(other.diffuseTexture, 0);
@@ -383,7 +385,8 @@ TEST(GltfMaterial, VertexColoursReachTheScene) {
     int m = b.material({{"pbrMetallicRoughness", pbr(0, 1)}});
     json bytes = quadPrimitive(b, m, false);
     std::vector<uint8_t> rgba = {255, 0, 0, 128, 0, 255, 0, 255, 0, 0, 255, 0, 51, 51, 51, 255};
-    bytes["attributes"]["COLOR_0"] = b.accessor(GltfBuilder::raw(rgba), 5121, 4, "VEC4", {{"normalized", true}});
+    bytes["attributes"]["COLOR_0"] =
+        b.accessor(GltfBuilder::raw(rgba), 5121, 4, "VEC4", {{"normalized", true}});
     json floats = quadPrimitive(b, m, false);
     floats["attributes"]["COLOR_0"] = b.vec3({{0.5f, 0.25f, 1.0f}, {0, 0, 0}, {1, 1, 1}, {0.2f, 0.2f, 0.2f}});
     b.mesh(json::array({bytes, floats, quadPrimitive(b, m, false)}));
@@ -407,8 +410,9 @@ TEST(GltfMaterial, VertexColoursReachTheScene) {
     c.node({{"mesh", 0}});
     c.scene({0});
     std::string message = test::errorOf([&] { loadScene(dir.write("bad.gltf", c.gltf())); });
-    EXPECT_NE(message.find("COLOR_0 of meshes[0].primitives[0]) must be VEC3 or VEC4 of FLOAT, or of normalized"),
-              std::string::npos)
+    EXPECT_NE(
+        message.find("COLOR_0 of meshes[0].primitives[0]) must be VEC3 or VEC4 of FLOAT, or of normalized"),
+        std::string::npos)
         << message;
 }
 
