@@ -89,10 +89,11 @@ glm::vec3 linearTexel(const Rgba8Image& image, int x, int y) {
 
 // Expects `rendered` (size x size) to show texture `image` wherever the texture is one colour over the
 // whole bilinear footprint of a pixel (edges blur), with uvAt giving glTF's uv (v down the image) of each
-// point of the plane z = 0 the view looks at, wrapped by `wrap`; pixels that `hidden` marks are skipped.
+// point of the plane the view looks at, wrapped by `wrap`, times `factor`; pixels that `hidden` marks are
+// skipped.
 void expectTheTexture(const Image& rendered, const SquareView& view, const Rgba8Image& image,
                       const std::function<glm::vec2(glm::vec2)>& uvAt, TextureWrap wrap,
-                      const std::vector<bool>& hidden) {
+                      const std::vector<bool>& hidden, glm::vec3 factor = glm::vec3(1.0f)) {
     const int size = rendered.width;
     auto wrapped = [wrap](float v, int n) {
         int i = int(std::floor(v));
@@ -121,11 +122,12 @@ void expectTheTexture(const Image& rendered, const SquareView& view, const Rgba8
                         glm::vec3(1e-3f)));
             if (!solid) continue;
             ++compared;
-            glm::vec3 got = rendered.at(x, y);
-            if (!glm::all(glm::lessThan(glm::abs(got - first), glm::vec3(0.02f)))) {
+            glm::vec3 got = rendered.at(x, y), expected = factor * first;
+            if (!glm::all(glm::lessThan(glm::abs(got - expected), glm::vec3(0.02f)))) {
                 if (wrong < 5)
                     ADD_FAILURE() << "pixel (" << x << ", " << y << "): " << got.x << " " << got.y << " "
-                                  << got.z << ", the texture " << first.x << " " << first.y << " " << first.z;
+                                  << got.z << ", expected " << expected.x << " " << expected.y << " "
+                                  << expected.z;
                 ++wrong;
             }
         }
@@ -259,6 +261,36 @@ TEST(GltfTextureSamples, MultiUVTestShowsTheEmissiveMapOnTheSecondSet) {
     const Rgba8Image& image = scene.textures[size_t(material.emissionTexture)].image;
     auto uvAt = [](glm::vec2 q) { return glm::vec2(q.x + 1.0f, 1.0f - q.y) / 8.0f; };
     expectTheTexture(radiance, view, image, uvAt, TextureWrap::Repeat, {});
+}
+
+// TextureCoordinateTest: four quads of side 1 at x, y = +-0.2 to +-1.2, each showing the part of one
+// texture that lies where the quad lies (its accessors' names: TopLeft_TEXCOORD_0 spans u and v from 0 to
+// 0.4, glTF's v = 0 being the image's top), at 0.4 uv per unit, times its base colour factor.
+TEST(GltfTextureSamples, TextureCoordinateTestQuadsShowTheirCornerOfTheTexture) {
+    Scene scene = loadScene(gltfSample("TextureCoordinateTest", "glTF-Binary", "TextureCoordinateTest.glb"));
+    struct Quad {
+        const char* material;
+        glm::vec2 topLeft;  // of the quad, in the plane
+        glm::vec2 uv;       // there
+    };
+    const Quad quads[] = {{"TopLeftMat", {-1.2f, 1.2f}, {0.0f, 0.0f}},
+                          {"TopRightMat", {0.2f, 1.2f}, {0.6f, 0.0f}},
+                          {"BottomLeftMat", {-1.2f, -0.2f}, {0.0f, 0.6f}},
+                          {"BottomRightMat", {0.2f, -0.2f}, {0.6f, 0.6f}}};
+    for (const Quad& quad : quads) {
+        SCOPED_TRACE(quad.material);
+        SquareView view{quad.topLeft + glm::vec2(0.5f, -0.5f), 0.45f};
+        Image albedo = renderSquare(scene, view, View::Albedo, 32, 8);
+        size_t t = 0;
+        while (!materialNamed(scene, t, quad.material)) ++t;
+        const Material& material = scene.materials[scene.triangles[t].material];
+        ASSERT_GE(material.diffuseTexture, 0);
+        auto uvAt = [&](glm::vec2 q) {
+            return quad.uv + 0.4f * glm::vec2(q.x - quad.topLeft.x, quad.topLeft.y - q.y);
+        };
+        expectTheTexture(albedo, view, scene.textures[size_t(material.diffuseTexture)].image, uvAt,
+                         TextureWrap::Repeat, {}, material.diffuse);
+    }
 }
 
 }  // namespace
