@@ -44,7 +44,7 @@ struct PackedScene {
     bool hasTextures() const { return !textureTable.empty(); }
     size_t bytes() const;
     size_t geometryBytes() const;  // positions + BVH only
-    size_t textureBytes() const;   // texture coordinates, texels, table and tangents
+    size_t textureBytes() const;   // texture coordinates, texels, table, tangents and vertex colours
 };
 
 // One material's texels, as pack/layout.h describes them (the BSDF tests pack their materials with it).
