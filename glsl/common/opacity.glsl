@@ -23,6 +23,9 @@ float materialCoverage(int m, int i, vec2 b) {
     if (a.x >= 0.0) alpha *= sampleLinearTexture(int(a.x), fetchTexcoord(i, b)).a;
 #endif
 #endif
+#ifdef VERTEX_COLORS
+    alpha *= fetchVertexColor(i, b).a;
+#endif
     if (a.w == 1.0) return alpha >= a.z ? 1.0 : 0.0;  // fp::AlphaMode::Mask
     return a.w == 2.0 ? alpha : 1.0;                  // Blend, Opaque
 }

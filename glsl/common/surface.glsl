@@ -34,7 +34,7 @@ int gSurfacesShaded = 0;  // surface interactions of the current path, for the c
 // back along the ray.
 void applyTextureMaps(inout Surface s, Hit hit, vec3 ns, vec3 wo) {
     ivec4 maps = materialMaps(s.materialIndex);  // (diffuse, metallic-roughness, emission, normal)
-    vec2 uv = fetchTexcoord(hit.triangle, hit.uv);
+    vec4 uv = fetchTexcoord(hit.triangle, hit.uv);  // both uv slots
 #if HAS_MAP(DIFFUSE_MAP_BIT)
     if (maps.x >= 0) s.material.diffuse *= sampleTexture(maps.x, uv);
 #endif
@@ -118,6 +118,9 @@ Surface surfaceAt(Ray ray, Hit hit) {
 #else
     applyTextureMaps(s, hit, ns, -ray.dir);
 #endif
+#endif
+#ifdef VERTEX_COLORS
+    s.material.diffuse *= fetchVertexColor(hit.triangle, hit.uv).rgb;  // glTF: COLOR_0 times the base colour
 #endif
     // Front faces face out of a closed glass object: a ray hitting one enters it.
     s.eta = s.frontFace ? s.material.ior : 1.0 / s.material.ior;

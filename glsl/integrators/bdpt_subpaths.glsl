@@ -51,10 +51,13 @@ void storeLightVertex(int i, PathVertex v) { gLight[i] = v; }
 // The textured Kd of each stored surface vertex (surface.glsl), which fetchMaterial alone would miss;
 // kept beside PathVertex so that scenes without textures store nothing more. With metallic-roughness
 // maps also the textured roughness and metallic, with specular maps the textured Ks (a normal map's
-// shading normal is the vertex's ns already).
-#ifdef SURFACE_TEXTURES
+// shading normal is the vertex's ns already). Vertex colours change Kd too.
+#if defined(SURFACE_TEXTURES) || defined(VERTEX_COLORS)
+#define KEEPS_DIFFUSE 1
 vec3 gCameraDiffuse[BDPT_CAMERA_VERTICES];
 vec3 gLightDiffuse[BDPT_MAX_LIGHT_VERTICES];
+#endif
+#ifdef SURFACE_TEXTURES
 #if HAS_MAP(ROUGHNESS_MAP_BIT)
 vec2 gCameraRoughness[BDPT_CAMERA_VERTICES];  // (roughness, metallic)
 vec2 gLightRoughness[BDPT_MAX_LIGHT_VERTICES];
@@ -66,9 +69,11 @@ vec3 gLightSpecular[BDPT_MAX_LIGHT_VERTICES];
 #endif
 
 void keepDiffuse(bool camera, int i, Surface s) {
-#ifdef SURFACE_TEXTURES
+#ifdef KEEPS_DIFFUSE
     if (camera) gCameraDiffuse[i] = s.material.diffuse;
     else gLightDiffuse[i] = s.material.diffuse;
+#endif
+#ifdef SURFACE_TEXTURES
 #if HAS_MAP(ROUGHNESS_MAP_BIT)
     if (camera) gCameraRoughness[i] = vec2(s.material.roughness, s.material.metallic);
     else gLightRoughness[i] = vec2(s.material.roughness, s.material.metallic);
@@ -83,8 +88,10 @@ void keepDiffuse(bool camera, int i, Surface s) {
 // The material at stored vertex i of the camera or light subpath, with its Surface's textured values.
 MaterialData vertexMaterial(bool camera, int i) {
     MaterialData m = fetchMaterial(camera ? gCamera[i].material : gLight[i].material);
-#ifdef SURFACE_TEXTURES
+#ifdef KEEPS_DIFFUSE
     m.diffuse = camera ? gCameraDiffuse[i] : gLightDiffuse[i];
+#endif
+#ifdef SURFACE_TEXTURES
 #if HAS_MAP(ROUGHNESS_MAP_BIT)
     vec2 rm = camera ? gCameraRoughness[i] : gLightRoughness[i];
     m.roughness = rm.x;

@@ -120,6 +120,7 @@ SceneTextures::SceneTextures(PackedScene scene, size_t maxTexels) : scene_(std::
         if (!s.tangents.empty())
             specs.push_back(spec("tangents", s.tangents, GL_RGBA32F, layout::kTangentsUnit));
     }
+    if (!s.colors.empty()) specs.push_back(spec("vertex colours", s.colors, GL_RGBA32F, layout::kColorsUnit));
 
     if (maxTexels == 0) maxTexels = size_t(glInteger(GL_MAX_TEXTURE_BUFFER_SIZE));
     for (const BufferSpec& b : specs)

@@ -9,6 +9,7 @@
 #include "core/error.h"
 #include "pack/layout.h"
 #include "pack/light_strategy.h"
+#include "pack/pack.h"
 #include "scene/instancing.h"
 #include "scene/light_selection.h"
 
@@ -19,6 +20,7 @@ std::optional<std::string> unsupportedFeature(const fp::Scene& scene) {
         return "an environment map (the native reference has a constant colour only)";
     if (!scene.punctualLights.empty())
         return "point, spot or directional lights (the native reference samples emissive triangles only)";
+    if (hasVertexColors(scene)) return "vertex colours (the native reference has one Kd per material)";
     for (const Material& m : scene.materials) {
         if (m.type != MaterialType::Diffuse)
             return "material '" + m.name +

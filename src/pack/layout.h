@@ -102,16 +102,28 @@
 //
 // Only when some material has a texture (the renderer then defines SURFACE_TEXTURES; without it the
 // shader has no texture code at all and the three buffers are not allocated):
-//  texcoords     RG32F      3 per triangle   (uv0) (uv1) (uv2): OBJ vt, v = 0 at the image's bottom row
+//  texcoords     RG32F      3 per triangle   (uv0) (uv1) (uv2): OBJ vt, v = 0 at the image's bottom row;
+//                           and slot         with a second uv slot (some texture's Texture::uvSlot is 1;
+//                                            the renderer then defines TEXCOORD_SLOTS 2) 6 per triangle:
+//                                            the three of slot 0, then the three of slot 1
 //  textureTexels RGBA8      1 per texel      every texture's texels, concatenated; each texture row-major
 //                                            with its top row first; codes read as code / 255, the rgb
 //                                            of colour maps (diffuse, emission, specular) then decoded
 //                                            from sRGB in the shader; A is coverage (alpha maps)
-//  textureTable  RGBA32I    1 per texture    (first texel in textureTexels, width, height, 0)
+//  textureTable  RGBA32I    1 per texture    (first texel in textureTexels, width, height, sampling)
+//                                            sampling: the wrap mode along u (fp::TextureWrap) + 4 x the
+//                                            one along v + kTextureNearestFlag + kTextureSlot1Flag
+//                                            (Texture's fields); textures of one image share its texels.
+//                                            Wrap modes other than repeat and nearest filtering are
+//                                            compiled in only when some texture has one
+//                                            (TEXTURE_SAMPLING)
 // Only when some material has a normal map (SURFACE_MAPS has kNormalMapBit):
 //  tangents      RGBA32F    3 per triangle   (t0.xyz, s0) (t1.xyz, s1) (t2.xyz, s2): per-vertex tangents
 //                                            (Scene::tangents, or the triangle's own from its positions
 //                                            and uvs at all three), s = +-1 the bitangent's sign
+// Only when some triangle has vertex colours (Scene::colors; the renderer then defines VERTEX_COLORS):
+//  colors        RGBA32F    3 per triangle   (c0) (c1) (c2): linear rgba, multiplying the base colour and
+//                                            alpha (1 where a triangle has none)
 //
 // An environment map (only when the scene has one) is a 2D RGBA32F texture of W x H radiance texels,
 // texel (x, y) covering u in [x, x+1)/W, v in [y, y+1)/H (v = 0 is straight up), and an R32F buffer
@@ -167,6 +179,11 @@ constexpr int kLightTexels = 1;
 constexpr int kPunctualTexels = 3;  // per punctual light, after the cdf entries in the lights buffer
 constexpr int kTexcoordTexels = 3;
 constexpr int kTangentTexels = 3;
+constexpr int kColorTexels = 3;
+// The sampling field of a textureTable entry (above).
+constexpr int kTextureWrapTShift = 2;
+constexpr int kTextureNearestFlag = 16;
+constexpr int kTextureSlot1Flag = 32;
 constexpr uint32_t kMaxFloatIndex = 1u << 24;
 
 // Scenes of more emitter triangles get no light tree (pack/light_tree.h): its 2 x 2^depth nodes of 3
@@ -186,6 +203,7 @@ enum Unit : int {
     kTangentsUnit,
     kEnvironmentMapUnit,
     kEnvironmentCdfUnit,
+    kColorsUnit,
     kFirstFreeUnit
 };
 
@@ -195,9 +213,9 @@ enum Unit : int {
 // shaders declare the same ones as images under SCENE_READS_IMAGES (glsl/common/scene_data.glsl, and
 // textures.glsl and lights.glsl for the optional ones). A context without image units for all of them
 // reads them all with texelFetch (resolveSceneReads).
-constexpr Unit kImageUnits[] = {kTrianglesUnit,      kNormalsUnit,       kNodesUnit,        kMaterialsUnit,
-                                kLightsUnit,         kTexcoordsUnit,     kTextureTableUnit, kTangentsUnit,
-                                kEnvironmentMapUnit, kEnvironmentCdfUnit};
+constexpr Unit kImageUnits[] = {kTrianglesUnit,      kNormalsUnit,        kNodesUnit,        kMaterialsUnit,
+                                kLightsUnit,         kTexcoordsUnit,      kTextureTableUnit, kTangentsUnit,
+                                kEnvironmentMapUnit, kEnvironmentCdfUnit, kColorsUnit};
 // The highest image unit used, plus one.
 constexpr int kImageUnitsNeeded = [] {
     int highest = 0;

@@ -22,7 +22,7 @@ size_t PackedScene::bytes() const {
 
 size_t PackedScene::textureBytes() const {
     return sizeof(glm::vec2) * texcoords.size() + textureTexels.size() +
-           sizeof(glm::ivec4) * textureTable.size() + sizeof(glm::vec4) * tangents.size();
+           sizeof(glm::ivec4) * textureTable.size() + sizeof(glm::vec4) * (tangents.size() + colors.size());
 }
 
 std::array<glm::vec4, layout::kMaterialTexels> packMaterial(const Material& m) {
@@ -37,10 +37,16 @@ std::array<glm::vec4, layout::kMaterialTexels> packMaterial(const Material& m) {
             glm::vec4(m.metallic, m.normalScale, index(m.specularTexture), 0.0f)};
 }
 
-Material shaderMaterial(const Material& m) {
+bool hasVertexColors(const Scene& scene) {
+    bool any = !scene.colors.empty();
+    for (const InstancedMesh& mesh : scene.meshes) any = any || !mesh.colors.empty();
+    return any;
+}
+
+Material shaderMaterial(const Material& m, bool vertexColors) {
     if (m.type != MaterialType::MetallicRoughness || m.metallicRoughnessTexture >= 0) return m;
     Material out = m;
-    if (m.metallic >= 1.0f && m.diffuseTexture < 0) {
+    if (m.metallic >= 1.0f && m.diffuseTexture < 0 && !vertexColors) {
         out.type = MaterialType::Conductor;
         out.specular = m.diffuse;
         out.metallic = 0.0f;
@@ -82,11 +88,39 @@ size_t PackedScene::geometryBytes() const {
 
 namespace {
 
-// Texture coordinates in leaf order, and every texture's texels with its table entry (pack/layout.h).
-void packTextures(const Scene& scene, const std::vector<const Triangle*>& ordered, PackedScene* out) {
-    out->texcoords.reserve(ordered.size() * layout::kTexcoordTexels);
-    for (const Triangle* t : ordered)
-        for (const glm::vec2& uv : t->uv) out->texcoords.push_back(uv);
+// The sampling field of a texture's table entry (pack/layout.h).
+int textureSampling(const Texture& t) {
+    return int(t.wrapS) + (int(t.wrapT) << layout::kTextureWrapTShift) +
+           (t.nearest ? layout::kTextureNearestFlag : 0) + (t.uvSlot == 1 ? layout::kTextureSlot1Flag : 0);
+}
+
+// Texture coordinates in leaf order (each triangle's slot 0, then with two slots its slot 1), and every
+// texture's texels with its table entry (pack/layout.h); textures of the same texels share them.
+void packTextures(const Scene& scene, const std::vector<const Triangle*>& ordered,
+                  const std::vector<const std::array<glm::vec2, 3>*>& orderedTexcoords1, PackedScene* out) {
+    for (const Texture& t : scene.textures) {
+        if (t.uvSlot == 1) out->texcoordSlots = 2;
+        out->textureSampling = out->textureSampling || (textureSampling(t) & ~layout::kTextureSlot1Flag) != 0;
+    }
+    out->texcoords.reserve(ordered.size() * layout::kTexcoordTexels * size_t(out->texcoordSlots));
+    for (size_t i = 0; i < ordered.size(); ++i) {
+        for (const glm::vec2& uv : ordered[i]->uv) out->texcoords.push_back(uv);
+        if (out->texcoordSlots == 2)
+            for (int k = 0; k < 3; ++k)
+                out->texcoords.push_back(orderedTexcoords1[i] ? (*orderedTexcoords1[i])[size_t(k)]
+                                                              : glm::vec2(0.0f));
+    }
+    // Which earlier texture holds the same texels (a glTF image read with two samplers or uv slots).
+    auto sameTexels = [&scene](size_t k) {
+        const Texture& t = scene.textures[k];
+        for (size_t j = 0; j < k; ++j) {
+            const Texture& u = scene.textures[j];
+            if (u.name == t.name && u.image.width == t.image.width && u.image.height == t.image.height &&
+                u.image.texels == t.image.texels)
+                return j;
+        }
+        return k;
+    };
     size_t texels = 0;
     for (const Texture& t : scene.textures) texels += size_t(t.image.width) * size_t(t.image.height);
     // The table holds offsets as signed 32-bit integers.
@@ -94,11 +128,15 @@ void packTextures(const Scene& scene, const std::vector<const Triangle*>& ordere
         throw Error(scene.source + ": the textures have " + std::to_string(texels) +
                     " texels in all; the GPU layout addresses at most 2^31 - 1");
     out->textureTexels.reserve(texels * 4);
-    for (const Texture& t : scene.textures) {
+    for (size_t k = 0; k < scene.textures.size(); ++k) {
+        const Texture& t = scene.textures[k];
         if (t.image.texels.size() != size_t(t.image.width) * size_t(t.image.height) * 4 || t.image.width <= 0)
             throw Error("internal: texture '" + t.name + "' has the wrong number of texels");
-        out->textureTable.emplace_back(int(out->textureTexels.size() / 4), t.image.width, t.image.height, 0);
-        out->textureTexels.insert(out->textureTexels.end(), t.image.texels.begin(), t.image.texels.end());
+        size_t shared = sameTexels(k);
+        int first = shared < k ? out->textureTable[shared].x : int(out->textureTexels.size() / 4);
+        out->textureTable.emplace_back(first, t.image.width, t.image.height, textureSampling(t));
+        if (shared == k)
+            out->textureTexels.insert(out->textureTexels.end(), t.image.texels.begin(), t.image.texels.end());
     }
 }
 
@@ -191,24 +229,31 @@ PackedScene packScene(const Scene& scene, const Bvh& bvh, const std::vector<Bvh>
     validateInstances(scene);
     // Every triangle stored, in leaf order: the world triangles', then each mesh's.
     std::vector<const Triangle*> ordered;
-    std::vector<const std::array<glm::vec4, 3>*> orderedTangents;
+    std::vector<const std::array<glm::vec4, 3>*> orderedTangents, orderedColors;
+    std::vector<const std::array<glm::vec2, 3>*> orderedTexcoords1;
     auto add = [&](const std::vector<Triangle>& triangles,
-                   const std::vector<std::array<glm::vec4, 3>>& tangents, const Bvh& tree) {
-        if (!tangents.empty() && tangents.size() != triangles.size())
-            throw Error("internal: " + std::to_string(tangents.size()) + " tangent triples for " +
-                        std::to_string(triangles.size()) + " triangles");
+                   const std::vector<std::array<glm::vec4, 3>>& tangents,
+                   const std::vector<std::array<glm::vec2, 3>>& texcoords1,
+                   const std::vector<std::array<glm::vec4, 3>>& colors, const Bvh& tree) {
+        for (size_t perTriangle : {tangents.size(), texcoords1.size(), colors.size()})
+            if (perTriangle != 0 && perTriangle != triangles.size())
+                throw Error("internal: " + std::to_string(perTriangle) + " vertex triples for " +
+                            std::to_string(triangles.size()) + " triangles");
         for (uint32_t prim : tree.primIndex) {
             ordered.push_back(&triangles[prim]);
             orderedTangents.push_back(tangents.empty() ? nullptr : &tangents[prim]);
+            orderedTexcoords1.push_back(texcoords1.empty() ? nullptr : &texcoords1[prim]);
+            orderedColors.push_back(colors.empty() ? nullptr : &colors[prim]);
         }
     };
-    add(scene.triangles, scene.tangents, bvh);
+    add(scene.triangles, scene.tangents, scene.texcoords1, scene.colors, bvh);
     std::vector<uint32_t> meshTriangleBase;
     for (size_t m = 0; m < meshBvhs.size(); ++m) {
         if (meshBvhs[m].primIndex.size() != scene.meshes[m].triangles.size())
             throw Error("internal: BVH does not match instanced mesh " + std::to_string(m));
         meshTriangleBase.push_back(uint32_t(ordered.size()));
-        add(scene.meshes[m].triangles, scene.meshes[m].tangents, meshBvhs[m]);
+        const InstancedMesh& mesh = scene.meshes[m];
+        add(mesh.triangles, mesh.tangents, mesh.texcoords1, mesh.colors, meshBvhs[m]);
     }
     const size_t n = ordered.size();
     if (n == 0) throw Error("internal: a scene without triangles");
@@ -226,6 +271,7 @@ PackedScene packScene(const Scene& scene, const Bvh& bvh, const std::vector<Bvh>
     pmf.resize(n, 0.0f);
 
     bool textured = false;
+    const bool vertexColors = hasVertexColors(scene);
     std::vector<float> triangleFlags(scene.materials.size(), 0.0f);
     for (size_t k = 0; k < scene.materials.size(); ++k) {
         const Material& m = scene.materials[k];
@@ -244,13 +290,20 @@ PackedScene packScene(const Scene& scene, const Bvh& bvh, const std::vector<Bvh>
         triangleFlags[k] = float((m.hasAlpha() ? layout::kTriangleAlphaFlag : 0) +
                                  (m.doubleSided ? 0 : layout::kTriangleSingleSidedFlag));
         out.opacity = out.opacity || m.needsOpacityTest();
-        for (const glm::vec4& texel : packMaterial(shaderMaterial(m))) out.materials.push_back(texel);
+        for (const glm::vec4& texel : packMaterial(shaderMaterial(m, vertexColors)))
+            out.materials.push_back(texel);
     }
     const bool tangents = (out.surfaceMaps & layout::kNormalMapBit) != 0;
+    // A normal map's own uv slot gives its computed tangents (pack.h, triangleTangent).
+    std::vector<int> normalSlot(scene.materials.size(), 0);
+    for (size_t k = 0; k < scene.materials.size(); ++k)
+        if (scene.materials[k].normalTexture >= 0)
+            normalSlot[k] = scene.textures[size_t(scene.materials[k].normalTexture)].uvSlot;
 
     out.triangles.reserve(n * layout::kTriangleTexels);
     out.normals.reserve(n * layout::kNormalTexels);
     if (tangents) out.tangents.reserve(n * layout::kTangentTexels);
+    if (vertexColors) out.colors.reserve(n * layout::kColorTexels);
     float cdf = 0.0f;
     std::vector<LightTreeEmitter> treeEmitters;  // the emitter entries, for the light tree
     for (size_t i = 0; i < n; ++i) {
@@ -261,12 +314,17 @@ PackedScene packScene(const Scene& scene, const Bvh& bvh, const std::vector<Bvh>
         if (tangents) {
             const std::array<glm::vec4, 3>* given = orderedTangents[i];
             if (!given || (*given)[0].w == 0.0f || (*given)[1].w == 0.0f || (*given)[2].w == 0.0f) {
-                glm::vec4 tangent = triangleTangent(t);
+                Triangle inSlot = t;
+                if (normalSlot[t.material] == 1 && orderedTexcoords1[i]) inSlot.uv = *orderedTexcoords1[i];
+                glm::vec4 tangent = triangleTangent(inSlot);
                 for (int v = 0; v < 3; ++v) out.tangents.push_back(tangent);
             } else {
                 for (const glm::vec4& tangent : *given) out.tangents.push_back(tangent);
             }
         }
+        if (vertexColors)
+            for (int v = 0; v < 3; ++v)
+                out.colors.push_back(orderedColors[i] ? (*orderedColors[i])[size_t(v)] : glm::vec4(1.0f));
         const float entry = pmf[i] > 0.0f ? float(out.lights.size()) : 0.0f;  // its light-table entry
         for (int v = 0; v < 3; ++v) out.normals.emplace_back(t.n[v], v == 0 ? entry : 0.0f);
         if (pmf[i] > 0.0f) {
@@ -315,7 +373,7 @@ PackedScene packScene(const Scene& scene, const Bvh& bvh, const std::vector<Bvh>
         for (const glm::vec4& texel : lightTreeTexels(tree)) out.lights.push_back(texel);
     }
 
-    if (textured) packTextures(scene, ordered, &out);
+    if (textured) packTextures(scene, ordered, orderedTexcoords1, &out);
 
     if (scene.instances.empty()) {
         WideBvh wide = collapseToWide(bvh);

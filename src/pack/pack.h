@@ -24,6 +24,9 @@ struct PackedScene {
     HugePageVector<uint8_t> textureTexels;  // 4 bytes per texel
     std::vector<glm::ivec4> textureTable;
     HugePageVector<glm::vec4> tangents;  // empty unless some material has a normal map
+    HugePageVector<glm::vec4> colors;    // empty unless some triangle has vertex colours (Scene::colors)
+    int texcoordSlots = 1;               // TEXCOORD_SLOTS: 2 when some texture reads uv slot 1
+    bool textureSampling = false;        // TEXTURE_SAMPLING: some texture clamps, mirrors or is nearest
     int surfaceMaps = 0;   // SURFACE_MAPS: the layout::MapBit of every kind of map some material has
     bool opacity = false;  // SURFACE_OPACITY: some material has alpha or is single-sided
     // lightCount: entries of the light-selection cdf (emitter triangles, then punctual lights: layout.h);
@@ -41,7 +44,7 @@ struct PackedScene {
     bool hasTextures() const { return !textureTable.empty(); }
     size_t bytes() const;
     size_t geometryBytes() const;  // positions + BVH only
-    size_t textureBytes() const;   // texture coordinates, texels, table and tangents
+    size_t textureBytes() const;   // texture coordinates, texels, table, tangents and vertex colours
 };
 
 // One material's texels, as pack/layout.h describes them (the BSDF tests pack their materials with it).
@@ -52,9 +55,13 @@ std::array<glm::vec4, layout::kMaterialTexels> packMaterial(const Material& m);
 // metallic 0 without a metallic-roughness map exactly the plastic with a white coat (bsdf.glsl runs the
 // same functions; tests/render/metallic_roughness_test.cpp), which compile less shader code: such
 // materials are packed as those, so that a scene of plain metals (MTL Pm 1, glTF metallicFactor 1)
-// renders as fast as with the Conductor type. Every other material is returned as it is. The renderer
-// takes MATERIAL_TYPES from these types.
-Material shaderMaterial(const Material& m);
+// renders as fast as with the Conductor type. Every other material is returned as it is, and so are
+// metals in a scene with vertex colours (`vertexColors`), which multiply the base colour, not the
+// conductor's F0. The renderer takes MATERIAL_TYPES from these types.
+Material shaderMaterial(const Material& m, bool vertexColors = false);
+
+// Whether some triangle of the scene, world or instanced, has vertex colours (Scene::colors).
+bool hasVertexColors(const Scene& scene);
 
 // The tangent frame of a triangle from its positions and texture coordinates (Lengyel 2001, "Computing
 // Tangent Space Basis Vectors for an Arbitrary Mesh"): xyz = dp/du made orthogonal to the triangle's

@@ -81,6 +81,9 @@ Renderer::Renderer(const Scene& scene, ShaderLibrary shaders, const BvhBuildOpti
     surfaceTextures_ = packed.hasTextures();
     surfaceMaps_ = packed.surfaceMaps;
     surfaceOpacity_ = packed.opacity;
+    texcoordSlots_ = packed.texcoordSlots;
+    textureSampling_ = packed.textureSampling;
+    vertexColors_ = !packed.colors.empty();
     stats_.stackSize = layout::traversalStackEntries(packed.bvhDepth);
     lightCount_ = packed.lightCount;
     punctualCount_ = packed.punctualCount;
@@ -98,7 +101,9 @@ Renderer::Renderer(const Scene& scene, ShaderLibrary shaders, const BvhBuildOpti
         if (environment.totalWeight > 0.0)
             environmentTextures_ = std::make_unique<EnvironmentTextures>(environment);
     }
-    for (const Material& m : scene.materials) materialTypes_ |= 1u << uint32_t(shaderMaterial(m).type);
+    const bool vertexColors = hasVertexColors(scene);
+    for (const Material& m : scene.materials)
+        materialTypes_ |= 1u << uint32_t(shaderMaterial(m, vertexColors).type);
     glGenVertexArrays(1, &vertexArray_);
 }
 
@@ -142,7 +147,11 @@ std::unique_ptr<Program> Renderer::compile(Integrator integrator, const char* fr
     if (surfaceTextures_) {
         defines.emplace_back("SURFACE_TEXTURES", "1");
         defines.emplace_back("SURFACE_MAPS", std::to_string(surfaceMaps_));
+        defines.emplace_back("TEXCOORD_SLOTS", std::to_string(texcoordSlots_));
+        if (textureSampling_) defines.emplace_back("TEXTURE_SAMPLING", "1");
     }
+    // Only scenes with vertex colours read them (glsl/common/textures.glsl).
+    if (vertexColors_) defines.emplace_back("VERTEX_COLORS", "1");
     // Only scenes with alpha or single-sided materials test hits during traversal (common/opacity.glsl).
     if (surfaceOpacity_) defines.emplace_back("SURFACE_OPACITY", "1");
     // Only scenes with instances traverse two levels (glsl/common/intersect.glsl).
@@ -333,6 +342,7 @@ void Renderer::setTraceUniforms(Program& p, int maxDepth) {
         p.set("uTextureTable", int(layout::kTextureTableUnit));
         if (surfaceMaps_ & layout::kNormalMapBit) p.set("uTangents", int(layout::kTangentsUnit));
     }
+    if (vertexColors_) p.set("uColors", int(layout::kColorsUnit));
     p.set("uEnvironment", environmentColor_);
     if (environmentTextures_) {
         p.set("uEnvironmentMap", int(layout::kEnvironmentMapUnit));

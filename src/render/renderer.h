@@ -119,6 +119,9 @@ class Renderer {
     bool surfaceTextures_ = false;  // some material has a texture: compile the lookups in
     int surfaceMaps_ = 0;           // which kinds of map (layout::MapBit): SURFACE_MAPS
     bool surfaceOpacity_ = false;   // some material has alpha or is single-sided: SURFACE_OPACITY
+    int texcoordSlots_ = 1;         // TEXCOORD_SLOTS (pack/layout.h, texcoords)
+    bool textureSampling_ = false;  // some texture clamps, mirrors or is nearest: TEXTURE_SAMPLING
+    bool vertexColors_ = false;     // some triangle has vertex colours: VERTEX_COLORS
     std::unique_ptr<SceneTextures> textures_;
     std::unique_ptr<EnvironmentTextures> environmentTextures_;  // only for an environment map
     std::unique_ptr<RenderTargets> targets_;

@@ -263,12 +263,17 @@ class MaterialTable {
     MaterialTable(const MaterialTable&) = delete;
     MaterialTable& operator=(const MaterialTable&) = delete;
 
-    // The TEXCOORD set material `gltfMaterial` (-1: the default material) reads, or -1 if none.
-    int texcoordSet(int gltfMaterial);
-    // The KHR_texture_transform its maps' coordinates go through (identity without), in glTF's uv.
-    glm::mat3 uvTransform(int gltfMaterial);
-    // The Scene material for a primitive using `gltfMaterial`; `hasTexcoords` says whether it has the
-    // set texcoordSet asked for (without, a textured material becomes a copy with its maps' means).
+    // A texture coordinate slot of a material's maps (Texture::uvSlot): the TEXCOORD set it reads and
+    // the KHR_texture_transform its coordinates go through (identity without), in glTF's uv.
+    struct UvSlot {
+        int set = 0;
+        glm::mat3 transform{1.0f};
+    };
+    // The slots the maps of material `gltfMaterial` (-1: the default material) read: none without
+    // maps, at most two (slot k is Texture::uvSlot k).
+    const std::vector<UvSlot>& uvSlots(int gltfMaterial);
+    // The Scene material for a primitive using `gltfMaterial`; `hasTexcoords` says whether it has every
+    // set uvSlots asked for (without, a textured material becomes a copy with its maps' means).
     uint32_t use(int gltfMaterial, bool hasTexcoords);
     // Warns once per kind of what was ignored.
     void reportIgnored() const;

@@ -136,10 +136,15 @@ bool keepsWinding(const MeshInstance& instance) {
 // or -1 (and nothing kept) if it has no triangle or one that emits light (emitters stay world triangles).
 int storeInstancedMesh(const tinygltf::Model& model, int mesh, int node, MaterialTable& materials,
                        const std::string& name, Scene* scene, MeshTallies* tallies) {
-    std::vector<Triangle> world;
-    std::vector<std::array<glm::vec4, 3>> worldTangents;
-    std::swap(world, scene->triangles);
-    std::swap(worldTangents, scene->tangents);
+    // The world's triangles and their per-triangle arrays are set aside while the mesh's are made.
+    InstancedMesh world;
+    auto swapTriangles = [scene](InstancedMesh& m) {
+        std::swap(m.triangles, scene->triangles);
+        std::swap(m.tangents, scene->tangents);
+        std::swap(m.texcoords1, scene->texcoords1);
+        std::swap(m.colors, scene->colors);
+    };
+    swapTriangles(world);
     MeshTallies own;
     MeshInstance local{node, mesh, glm::dmat4(1.0)};
     for (size_t p = 0; p < model.meshes[size_t(mesh)].primitives.size(); ++p)
@@ -147,10 +152,8 @@ int storeInstancedMesh(const tinygltf::Model& model, int mesh, int node, Materia
     InstancedMesh stored;
     stored.name = model.meshes[size_t(mesh)].name.empty() ? "meshes[" + std::to_string(mesh) + "]"
                                                           : model.meshes[size_t(mesh)].name;
-    std::swap(stored.triangles, scene->triangles);
-    std::swap(stored.tangents, scene->tangents);
-    std::swap(world, scene->triangles);
-    std::swap(worldTangents, scene->tangents);
+    swapTriangles(stored);
+    swapTriangles(world);
     for (const Triangle& t : stored.triangles)
         if (scene->materials[t.material].isEmissive()) return -1;
     if (stored.triangles.empty()) return -1;

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <map>
 #include <set>
+#include <tuple>
 
 #include "core/error.h"
 #include "core/log.h"
@@ -102,9 +103,8 @@ struct MaterialTable::Impl {
     struct Resolved {
         bool done = false;
         uint32_t index = 0;           // into Scene::materials
-        int texcoordSet = -1;         // the TEXCOORD set its texture reads, -1 if it has none
-        glm::mat3 uvTransform{1.0f};  // its maps' KHR_texture_transform (the first map's), glTF's uv
-        int64_t untextured = -1;      // the copy for primitives without that set, once made
+        std::vector<UvSlot> uvSlots;  // the (set, transform) pairs its maps read, in order of first use
+        int64_t untextured = -1;      // the copy for primitives without those sets, once made
         size_t withoutTexcoords = 0;
     };
     std::vector<Resolved> resolved;  // per glTF material, then the default material
@@ -115,9 +115,10 @@ struct MaterialTable::Impl {
         std::string problem;  // empty when the image loaded
         std::string file;     // the file or the part of the glTF it came from, for Texture::name
     };
-    std::map<int, Loaded> images;                                  // by glTF image
-    std::set<int> warned;                                          // images whose problem was warned about
-    std::map<int, int32_t> sceneTextures;                          // Scene::textures index, by glTF image
+    std::map<int, Loaded> images;  // by glTF image
+    std::set<int> warned;          // images whose problem was warned about
+    // Scene::textures index, by glTF image, how it is sampled and the uv slot that reads it.
+    std::map<std::tuple<int, TextureWrap, TextureWrap, bool, int>, int32_t> sceneTextures;
     std::map<std::string, std::vector<std::string>> ignoredKinds;  // what was ignored -> on which materials
 
     Impl(const tinygltf::Model& m, const std::string& n, const GltfLookup& l, Scene* s)
@@ -205,20 +206,41 @@ struct MaterialTable::Impl {
         return file.size() && file[0] == '/' ? file : directory + file;
     }
 
-    int32_t sceneTexture(int texture) {
-        int source = model.textures[size_t(texture)].source;
-        auto [it, added] = sceneTextures.emplace(source, int32_t(scene->textures.size()));
-        if (added) scene->textures.push_back({images.at(source).file, images.at(source).image});
+    // glTF texture `texture` read through uv slot `slot`, as a Scene texture with its sampler's wrap
+    // modes and filter (glTF's defaults, REPEAT and linear, without a sampler).
+    int32_t sceneTexture(int texture, int slot) {
+        const tinygltf::Texture& t = model.textures[size_t(texture)];
+        Texture made{images.at(t.source).file, {}};
+        if (t.sampler >= 0 && size_t(t.sampler) < model.samplers.size()) {
+            const tinygltf::Sampler& sampler = model.samplers[size_t(t.sampler)];
+            auto wrap = [](int mode) {
+                return mode == TINYGLTF_TEXTURE_WRAP_CLAMP_TO_EDGE     ? TextureWrap::ClampToEdge
+                       : mode == TINYGLTF_TEXTURE_WRAP_MIRRORED_REPEAT ? TextureWrap::MirroredRepeat
+                                                                       : TextureWrap::Repeat;
+            };
+            made.wrapS = wrap(sampler.wrapS);
+            made.wrapT = wrap(sampler.wrapT);
+            // Without mipmaps only the magnification filter means anything here.
+            made.nearest = sampler.magFilter == TINYGLTF_TEXTURE_FILTER_NEAREST;
+        }
+        made.uvSlot = slot;
+        auto [it, added] =
+            sceneTextures.emplace(std::make_tuple(t.source, made.wrapS, made.wrapT, made.nearest, slot),
+                                  int32_t(scene->textures.size()));
+        if (added) {
+            made.image = images.at(t.source).image;
+            scene->textures.push_back(std::move(made));
+        }
         return it->second;
     }
 
     const std::string kIgnoreMap = "ignoring the map";
     const std::string kShowChecker = "showing a magenta and black checker instead";
 
-    // A textureInfo's KHR_texture_transform as the matrix its specification gives, uv' = T R S (u, v, 1)
-    // in glTF's uv (v down the image): offset, then rotation counter-clockwise by `rotation` radians,
-    // then scale; identity without the extension. Throws fp::Error for a non-finite value, or an offset
-    // or scale beyond 1e6.
+    // A textureInfo's KHR_texture_transform, uv' = T R S (u, v, 1) in glTF's uv (v down the image):
+    // scale, then rotation by `rotation` radians counter-clockwise as seen on the image (u right, v
+    // down), then offset; identity without the extension. Throws fp::Error for a non-finite value, or an
+    // offset or scale beyond 1e6.
     glm::mat3 textureTransform(const tinygltf::ExtensionMap& extensions, int material) const {
         auto it = extensions.find("KHR_texture_transform");
         if (it == extensions.end() || !it->second.IsObject()) return glm::mat3(1.0f);
@@ -239,9 +261,13 @@ struct MaterialTable::Impl {
             throw Error(name + ": " + label(material) +
                         ": KHR_texture_transform holds a value that is not finite or beyond 1e6");
         const double c = std::cos(rotation), s = std::sin(rotation);
-        // Columns, as the specification's GLSL writes them.
+        // Columns. R is u' = c u + s v, v' = -s u + c v: (1, 0) turns towards -v, up the image. The
+        // specification's GLSL listing has the transpose, the counter-clockwise rotation of a y-up frame,
+        // which turns the other way in glTF's v-down uv; its sample model (TextureTransformTest, whose
+        // arrow must point at the green marker), three.js, Babylon.js and Blender's importer all use
+        // this one (KhronosGroup/glTF issue 1563, "KHR_texture_transform has the wrong rotation matrix").
         glm::dmat3 translate(1, 0, 0, 0, 1, 0, offset.x, offset.y, 1);
-        glm::dmat3 rotate(c, s, 0, -s, c, 0, 0, 0, 1);
+        glm::dmat3 rotate(c, -s, 0, s, c, 0, 0, 0, 1);
         glm::dmat3 scaled(scale.x, 0, 0, 0, scale.y, 0, 0, 0, 1);
         return glm::mat3(translate * rotate * scaled);
     }
@@ -259,39 +285,35 @@ struct MaterialTable::Impl {
         return int(n);
     }
 
-    // glTF texture `info` (of the kind `slot`) as a Scene texture index, or -1 (with a warning or a
-    // tally) when it cannot be used: a missing colour map shows the checker, other missing maps are
-    // ignored; every map must read the material's one TEXCOORD set (the first map's).
+    // glTF texture `info` (a map of `kind`, named `slot`) as a Scene texture index, or -1 (with a
+    // warning or a tally) when it cannot be drawn. A missing colour map shows the checker; any other map
+    // that cannot be drawn leaves its factor as the spec has it without the texture, times the map's
+    // mean where the image could be read (scaleByMapMean: the surface keeps its average look, as
+    // without texture coordinates): an image that cannot be read gives the factor alone, a third
+    // (TEXCOORD set, KHR_texture_transform) pair in one material the factor times the mean.
     template <class Info>
-    int32_t mapTexture(const Info& info, int material, const std::string& slot, bool colour, Resolved* r,
-                       bool* broken = nullptr) {
+    int32_t mapTexture(const Info& info, int material, const std::string& slot, MapKind kind, Material* m,
+                       Resolved* r, bool* broken = nullptr) {
         if (info.index < 0) return -1;
+        const bool colour = kind == MapKind::Diffuse || kind == MapKind::Emission;
         const Loaded* map = image(info.index, material, slot, colour ? kShowChecker : kIgnoreMap);
         if (!map || (!colour && !map->problem.empty())) return -1;
         if (broken) *broken = !map->problem.empty();
         // KHR_texture_transform: its own texCoord overrides the map's.
-        int set = transformTexCoord(info.extensions, material, info.texCoord);
-        glm::mat3 transform = textureTransform(info.extensions, material);
-        bool first = r->texcoordSet < 0;
-        if (first) {
-            r->texcoordSet = set;
-            r->uvTransform = transform;
-        }
-        if (set != r->texcoordSet) {
-            tally("maps reading another TEXCOORD set than the material's first map ignored", material);
+        UvSlot wanted{transformTexCoord(info.extensions, material, info.texCoord),
+                      textureTransform(info.extensions, material)};
+        auto same = [&](const UvSlot& u) { return u.set == wanted.set && u.transform == wanted.transform; };
+        auto found = std::find_if(r->uvSlots.begin(), r->uvSlots.end(), same);
+        if (found == r->uvSlots.end() && r->uvSlots.size() < 2) found = r->uvSlots.insert(found, wanted);
+        if (found == r->uvSlots.end()) {
+            scaleByMapMean(m, kind, map->image);
+            tally(
+                "maps needing a third pair of TEXCOORD set and KHR_texture_transform in one material (two "
+                "are drawn) replaced by their means",
+                material);
             return -1;
         }
-        if (!first && transform != r->uvTransform)
-            tally(
-                "maps with another KHR_texture_transform than the material's first map drawn with the "
-                "first's",
-                material);
-        int sampler = model.textures[size_t(info.index)].sampler;
-        if (sampler >= 0 && size_t(sampler) < model.samplers.size() &&
-            (model.samplers[size_t(sampler)].wrapS != TINYGLTF_TEXTURE_WRAP_REPEAT ||
-             model.samplers[size_t(sampler)].wrapT != TINYGLTF_TEXTURE_WRAP_REPEAT))
-            tally("texture wrap modes other than REPEAT drawn as REPEAT", material);
-        return sceneTexture(info.index);
+        return sceneTexture(info.index, int(found - r->uvSlots.begin()));
     }
 
     // The texture maps of glTF material g onto m (README, the material table). Glass reads none of the
@@ -299,13 +321,15 @@ struct MaterialTable::Impl {
     void addMaps(const tinygltf::Material& g, int material, Material* m, Resolved* r) {
         const tinygltf::PbrMetallicRoughness& pbr = g.pbrMetallicRoughness;
         bool broken = false;
-        int32_t base = mapTexture(pbr.baseColorTexture, material, "baseColorTexture", true, r, &broken);
+        int32_t base =
+            mapTexture(pbr.baseColorTexture, material, "baseColorTexture", MapKind::Diffuse, m, r, &broken);
         // The checker shows as it is whatever the factor was, as for a missing map_Kd.
         if (base >= 0 && broken) m->diffuse = glm::vec3(1.0f);
-        int32_t metallicRoughness =
-            mapTexture(pbr.metallicRoughnessTexture, material, "metallicRoughnessTexture", false, r);
-        m->emissionTexture = mapTexture(g.emissiveTexture, material, "emissiveTexture", true, r);
-        m->normalTexture = mapTexture(g.normalTexture, material, "normalTexture", false, r);
+        int32_t metallicRoughness = mapTexture(pbr.metallicRoughnessTexture, material,
+                                               "metallicRoughnessTexture", MapKind::MetallicRoughness, m, r);
+        m->emissionTexture =
+            mapTexture(g.emissiveTexture, material, "emissiveTexture", MapKind::Emission, m, r);
+        m->normalTexture = mapTexture(g.normalTexture, material, "normalTexture", MapKind::Normal, m, r);
         m->normalScale = float(g.normalTexture.scale);
         if (g.occlusionTexture.index >= 0)
             tally("occlusionTexture ignored (a path tracer computes occlusion itself)", material);
@@ -373,17 +397,13 @@ MaterialTable::MaterialTable(const tinygltf::Model& model, const std::string& na
 
 MaterialTable::~MaterialTable() = default;
 
-int MaterialTable::texcoordSet(int gltfMaterial) {
-    return impl_->resolve(gltfMaterial).texcoordSet;
-}
-
-glm::mat3 MaterialTable::uvTransform(int gltfMaterial) {
-    return impl_->resolve(gltfMaterial).uvTransform;
+const std::vector<MaterialTable::UvSlot>& MaterialTable::uvSlots(int gltfMaterial) {
+    return impl_->resolve(gltfMaterial).uvSlots;
 }
 
 uint32_t MaterialTable::use(int gltfMaterial, bool hasTexcoords) {
     Impl::Resolved& r = impl_->resolve(gltfMaterial);
-    if (r.texcoordSet < 0 || hasTexcoords) return r.index;
+    if (r.uvSlots.empty() || hasTexcoords) return r.index;
     // Without texture coordinates a texture cannot be looked up: a copy with its maps' means keeps the
     // surface's average look (as the OBJ loader does).
     ++r.withoutTexcoords;
@@ -391,8 +411,10 @@ uint32_t MaterialTable::use(int gltfMaterial, bool hasTexcoords) {
         Scene& scene = *impl_->scene;
         r.untextured = int64_t(scene.materials.size());
         scene.materials.push_back(withoutMaps(scene.materials[r.index], scene.textures));
-        impl_->tally("primitives without the TEXCOORD_" + std::to_string(r.texcoordSet) +
-                         " their maps need: the factors times the maps' means",
+        std::string sets = "TEXCOORD_" + std::to_string(r.uvSlots[0].set);
+        if (r.uvSlots.size() > 1 && r.uvSlots[1].set != r.uvSlots[0].set)
+            sets += " and TEXCOORD_" + std::to_string(r.uvSlots[1].set);
+        impl_->tally("primitives without the " + sets + " their maps need: the factors times the maps' means",
                      gltfMaterial);
     }
     return uint32_t(r.untextured);

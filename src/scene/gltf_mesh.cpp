@@ -119,30 +119,63 @@ void appendPrimitive(const tinygltf::Model& model, const MeshInstance& instance,
         }
     }
 
-    int set = materials.texcoordSet(primitive.material);
-    std::vector<glm::vec2> uv;
-    auto texcoord =
-        set >= 0 ? primitive.attributes.find("TEXCOORD_" + std::to_string(set)) : primitive.attributes.end();
-    if (texcoord != primitive.attributes.end()) {
-        AccessorData data(model, texcoord->second, "TEXCOORD_" + std::to_string(set) + " of " + where, name);
+    // Each uv slot of the material (at most two: Texture::uvSlot): its TEXCOORD set through its
+    // KHR_texture_transform.
+    const std::vector<MaterialTable::UvSlot>& slots = materials.uvSlots(primitive.material);
+    std::vector<glm::vec2> uv[2];
+    bool hasTexcoords = true;
+    for (size_t k = 0; k < slots.size(); ++k) {
+        std::string set = "TEXCOORD_" + std::to_string(slots[k].set);
+        auto texcoord = primitive.attributes.find(set);
+        if (texcoord == primitive.attributes.end()) {
+            hasTexcoords = false;
+            continue;
+        }
+        AccessorData data(model, texcoord->second, set + " of " + where, name);
         data.requireQuantized(TINYGLTF_TYPE_VEC2, kQuantizedTypes, kQuantizedTypes,
                               "VEC2 of FLOAT, BYTE, UNSIGNED_BYTE, SHORT or UNSIGNED_SHORT");
         sameCount(data);
-        uv.resize(vertexCount);
-        const glm::mat3 transform = materials.uvTransform(primitive.material);  // KHR_texture_transform
+        uv[k].resize(vertexCount);
         for (size_t i = 0; i < vertexCount; ++i) {
             float u = data.real(i, 0), v = data.real(i, 1);
             if (!std::isfinite(u) || !std::isfinite(v))
                 throw Error(name + ": " + data.label() + " holds a non-finite value (element " +
                             std::to_string(i) + ")");
-            glm::vec3 t = transform * glm::vec3(u, v, 1.0f);
+            glm::vec3 t = slots[k].transform * glm::vec3(u, v, 1.0f);
             if (!std::isfinite(t.x) || !std::isfinite(t.y))
                 throw Error(name + ": " + data.label() + " element " + std::to_string(i) +
                             " leaves the float range through its material's KHR_texture_transform");
-            uv[i] = glm::vec2(t.x, 1.0f - t.y);  // glTF's v = 0 is the top row of the image, ours the bottom
+            // glTF's v = 0 is the top row of the image, ours the bottom.
+            uv[k][i] = glm::vec2(t.x, 1.0f - t.y);
         }
     }
-    uint32_t material = materials.use(primitive.material, !uv.empty());
+    if (!hasTexcoords) {  // the material's copy without maps (MaterialTable::use) needs none
+        uv[0].clear();
+        uv[1].clear();
+    }
+    uint32_t material = materials.use(primitive.material, hasTexcoords);
+
+    // COLOR_0 multiplies the base colour and alpha (glTF 2.0, 3.7.2.1): RGB (alpha 1) or RGBA, of float or
+    // normalized unsigned byte or short.
+    std::vector<glm::vec4> colors;
+    auto color = primitive.attributes.find("COLOR_0");
+    if (color != primitive.attributes.end()) {
+        AccessorData data(model, color->second, "COLOR_0 of " + where, name);
+        data.require(data.components() == 4 ? TINYGLTF_TYPE_VEC4 : TINYGLTF_TYPE_VEC3,
+                     {TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE,
+                      TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT},
+                     true, "VEC3 or VEC4 of FLOAT, or of normalized UNSIGNED_BYTE or UNSIGNED_SHORT");
+        sameCount(data);
+        colors.resize(vertexCount);
+        const bool rgba = data.components() == 4;  // VEC3: alpha 1
+        for (size_t i = 0; i < vertexCount; ++i) {
+            glm::vec4 c(data.real(i, 0), data.real(i, 1), data.real(i, 2), rgba ? data.real(i, 3) : 1.0);
+            if (!std::isfinite(c.x) || !std::isfinite(c.y) || !std::isfinite(c.z) || !std::isfinite(c.w))
+                throw Error(name + ": " + data.label() + " holds a non-finite value (element " +
+                            std::to_string(i) + ")");
+            colors[i] = glm::clamp(c, glm::vec4(0.0f), glm::vec4(1.0f));
+        }
+    }
 
     // TANGENT (xyz the direction of increasing u, w the bitangent's sign), for a normal map: in world
     // space by the linear part, w turned with a mirroring transform (cross(M n, M t) = det(M) M cross(n,
@@ -223,7 +256,7 @@ void appendPrimitive(const tinygltf::Model& model, const MeshInstance& instance,
                 else
                     tri.n[k] = normals[corner[k]];
             }
-            if (!uv.empty()) tri.uv[k] = uv[corner[k]];
+            if (!uv[0].empty()) tri.uv[k] = uv[0][corner[k]];
         }
         tri.material = material;
         if (!tangents.empty()) {
@@ -233,6 +266,17 @@ void appendPrimitive(const tinygltf::Model& model, const MeshInstance& instance,
         } else if (!scene->tangents.empty()) {
             scene->tangents.emplace_back();
         }
+        // The optional per-triangle arrays: earlier triangles get the neutral value (scene.h).
+        auto extra = [&](auto& perTriangle, const auto& perVertex, auto neutral) {
+            if (perVertex.empty() && perTriangle.empty()) return;
+            perTriangle.resize(scene->triangles.size(), {neutral, neutral, neutral});
+            if (perVertex.empty())
+                perTriangle.push_back({neutral, neutral, neutral});
+            else
+                perTriangle.push_back({perVertex[corner[0]], perVertex[corner[1]], perVertex[corner[2]]});
+        };
+        extra(scene->texcoords1, uv[1], glm::vec2(0.0f));
+        extra(scene->colors, colors, glm::vec4(1.0f));
         scene->triangles.push_back(tri);
     }
 }

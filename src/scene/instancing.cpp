@@ -37,6 +37,24 @@ Scene flattenInstances(Scene scene) {
     bool tangents = !scene.tangents.empty();
     for (const InstancedMesh& mesh : scene.meshes) tangents = tangents || !mesh.tangents.empty();
     if (tangents) scene.tangents.resize(scene.triangles.size());  // w = 0: computed when packing
+    // The second uv slot and colours are copied as they are (neutral where a mesh has none: scene.h).
+    // (Before the loop below, which appends the instances' triangles in the same order.)
+    auto copyExtras = [&scene](auto& placed, auto meshMember, auto neutral) {
+        bool any = !placed.empty();
+        for (const InstancedMesh& mesh : scene.meshes) any = any || !(mesh.*meshMember).empty();
+        if (!any) return;
+        placed.resize(scene.triangles.size(), {neutral, neutral, neutral});
+        for (const Instance& instance : scene.instances) {
+            const auto& own = scene.meshes[instance.mesh].*meshMember;
+            if (own.empty())
+                placed.resize(placed.size() + scene.meshes[instance.mesh].triangles.size(),
+                              {neutral, neutral, neutral});
+            else
+                placed.insert(placed.end(), own.begin(), own.end());
+        }
+    };
+    copyExtras(scene.texcoords1, &InstancedMesh::texcoords1, glm::vec2(0.0f));
+    copyExtras(scene.colors, &InstancedMesh::colors, glm::vec4(1.0f));
     for (const Instance& instance : scene.instances) {
         const InstancedMesh& mesh = scene.meshes[instance.mesh];
         const glm::mat3 linear(instance.objectToWorld);

@@ -9,20 +9,39 @@ std::array<int32_t*, 6> textureSlots(Material& m) {
             &m.alphaTexture,   &m.specularTexture};
 }
 
+void scaleByMapMean(Material* m, MapKind kind, const Rgba8Image& image) {
+    switch (kind) {
+        case MapKind::Diffuse:
+            m->diffuse *= meanLinearColor(image);
+            break;
+        case MapKind::Emission:
+            m->emission *= meanLinearColor(image);
+            break;
+        case MapKind::Specular:
+            m->specular *= meanLinearColor(image);
+            break;
+        case MapKind::MetallicRoughness: {
+            glm::vec4 mean = meanCodes(image);
+            m->roughness *= mean.g;
+            m->metallic *= mean.b;
+            break;
+        }
+        case MapKind::Alpha:
+            m->alpha *= meanCodes(image).a;
+            break;
+        case MapKind::Normal:
+            break;  // a flat surface is the mean look of a normal map
+    }
+}
+
 Material withoutMaps(const Material& m, const std::vector<Texture>& textures) {
     Material copy = m;
-    auto image = [&textures](int32_t t) -> const Rgba8Image& {
-        return textures[static_cast<size_t>(t)].image;
-    };
-    if (m.diffuseTexture >= 0) copy.diffuse *= meanLinearColor(image(m.diffuseTexture));
-    if (m.emissionTexture >= 0) copy.emission *= meanLinearColor(image(m.emissionTexture));
-    if (m.specularTexture >= 0) copy.specular *= meanLinearColor(image(m.specularTexture));
-    if (m.metallicRoughnessTexture >= 0) {
-        glm::vec4 mean = meanCodes(image(m.metallicRoughnessTexture));
-        copy.roughness *= mean.g;
-        copy.metallic *= mean.b;
-    }
-    if (m.alphaTexture >= 0) copy.alpha *= meanCodes(image(m.alphaTexture)).a;
+    const int32_t maps[] = {m.diffuseTexture, m.metallicRoughnessTexture, m.emissionTexture, m.normalTexture,
+                            m.alphaTexture,   m.specularTexture};
+    const MapKind kinds[] = {MapKind::Diffuse, MapKind::MetallicRoughness, MapKind::Emission, MapKind::Normal,
+                             MapKind::Alpha,   MapKind::Specular};
+    for (size_t k = 0; k < 6; ++k)
+        if (maps[k] >= 0) scaleByMapMean(&copy, kinds[k], textures[static_cast<size_t>(maps[k])].image);
     for (int32_t* slot : textureSlots(copy)) *slot = -1;
     return copy;
 }

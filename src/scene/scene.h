@@ -59,7 +59,7 @@ struct Material {
     bool doubleSided = true;
 
     // Texture maps: indices into Scene::textures, or -1. Each multiplies the factor it belongs to
-    // (glTF's rule, and the MTL spec's for map_Kd), bilinear, repeating, at the triangle's uv.
+    // (glTF's rule, and the MTL spec's for map_Kd), sampled as the Texture says (wrap, filter, uv slot).
     // Colour maps (diffuse, emission, specular) are sRGB-encoded; the others are linear.
     // diffuseTexture: MTL map_Kd, glTF baseColorTexture (rgb): multiplies `diffuse` wherever a model
     // uses it (Lambertian reflectance, the plastic's base, the metallic-roughness base colour).
@@ -215,9 +215,19 @@ struct PunctualLight {
 // (sRGB-encoded) with the exact sRGB curve before filtering, and reads the others (roughness, normals,
 // coverage) as code / 255, so nothing is lost to an early conversion and the GPU copy is a quarter of a
 // float one.
+// How a map reads its texture outside [0, 1] along one axis (glTF sampler.wrapS / wrapT).
+enum class TextureWrap : uint32_t { Repeat = 0, ClampToEdge = 1, MirroredRepeat = 2 };
+
 struct Texture {
     std::string name;  // the file it came from, for messages
     Rgba8Image image;
+    // How the maps that name this texture sample it (glTF's sampler; MTL maps use the defaults): the wrap
+    // modes, nearest (glTF magFilter NEAREST: the texel the point falls in) instead of bilinear, and
+    // which of a triangle's two texture coordinate slots they read: 0 is Triangle::uv, 1
+    // Scene::texcoords1. A glTF image that two samplers or slots read becomes two textures.
+    TextureWrap wrapS = TextureWrap::Repeat, wrapT = TextureWrap::Repeat;
+    bool nearest = false;
+    int uvSlot = 0;  // 0 or 1
 };
 
 // A mesh drawn in several places (a glTF mesh under several nodes), stored once in its own space and
@@ -225,8 +235,10 @@ struct Texture {
 // world triangles, which light sampling picks from.
 struct InstancedMesh {
     std::string name;
-    std::vector<Triangle> triangles;                 // in the mesh's own space; never empty
-    std::vector<std::array<glm::vec4, 3>> tangents;  // as Scene::tangents, for these triangles
+    std::vector<Triangle> triangles;                     // in the mesh's own space; never empty
+    std::vector<std::array<glm::vec4, 3>> tangents;      // as Scene::tangents, for these triangles
+    std::vector<std::array<glm::vec2, 3>> texcoords1{};  // as Scene::texcoords1
+    std::vector<std::array<glm::vec4, 3>> colors{};      // as Scene::colors
 };
 
 struct Instance {
@@ -243,6 +255,12 @@ struct Scene {
     // direction of increasing u), w = +-1 the bitangent's sign, bitangent = w cross(n, tangent), as
     // glTF's TANGENT attribute.
     std::vector<std::array<glm::vec4, 3>> tangents;
+    // Optional, one entry per triangle, empty when no triangle needs them: the second texture
+    // coordinate slot (Texture::uvSlot 1; glTF maps on a second TEXCOORD set or transform), and per-vertex
+    // colours (glTF COLOR_0, linear rgba; 1 for triangles without), which multiply the base colour
+    // (Material::diffuse) and alpha.
+    std::vector<std::array<glm::vec2, 3>> texcoords1;
+    std::vector<std::array<glm::vec4, 3>> colors;
     std::optional<Camera> camera;  // from a scene file; absent for a bare OBJ
     RenderDefaults defaults;
     Environment environment;

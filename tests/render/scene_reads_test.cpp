@@ -82,16 +82,16 @@ TEST(SceneReads, ImageLoadAndTexelFetchRenderTheSameEnvironmentMap) {
 }
 
 // Every texture read as an image needs its image unit, whether or not the scene has it, so a context
-// with room for the five scene buffers but not the optional five reads everything with texelFetch.
+// with room for the five scene buffers but not the optional six reads everything with texelFetch.
 TEST(SceneReads, ImagesNeedUnitsForEveryTextureReadAsAnImage) {
     // llvmpipe (Mesa 22.3)
     EXPECT_EQ(imageUnitShortfall({192, 32, 280, 8}), "");
-    // Just enough: image units 0 to 10, ten images and eight draw buffers.
-    EXPECT_EQ(imageUnitShortfall({11, 10, 18, 8}), "");
-    // One short of each: no unit 10 (the environment CDFs), nine images, or too small a shared budget.
-    EXPECT_NE(imageUnitShortfall({10, 32, 280, 8}), "");
-    EXPECT_NE(imageUnitShortfall({192, 9, 280, 8}), "");
-    EXPECT_NE(imageUnitShortfall({192, 32, 17, 8}), "");
+    // Just enough: image units 0 to 11, eleven images and eight draw buffers.
+    EXPECT_EQ(imageUnitShortfall({12, 11, 19, 8}), "");
+    // One short of each: no unit 11 (the vertex colours), ten images, or too small a shared budget.
+    EXPECT_NE(imageUnitShortfall({11, 32, 280, 8}), "");
+    EXPECT_NE(imageUnitShortfall({192, 10, 280, 8}), "");
+    EXPECT_NE(imageUnitShortfall({192, 32, 18, 8}), "");
     // The minimums of GL 4.2.
     EXPECT_NE(imageUnitShortfall({8, 8, 8, 8}), "");
 }

@@ -105,6 +105,37 @@ TEST(Textures, AlbedoViewReproducesTheTexture) {
         }
 }
 
+// A sampler's wrap modes and nearest filtering (glTF's wrapS, wrapT, magFilter; Texture's fields): the
+// quad's uvs stretched over [-1, 2]^2, clamped along u, mirrored along v, nearest. Each pixel centre
+// (half a texel across, never on a texel's edge) must show exactly the texel that the OpenGL rules pick,
+// written independently of the GLSL.
+TEST(Textures, SamplersClampMirrorAndPickTheNearestTexel) {
+    ensureGlContext();
+    std::vector<uint8_t> rgba = gradientTexels();
+    Scene scene = texturedQuad(rgba, true);
+    for (Triangle& t : scene.triangles)
+        for (glm::vec2& uv : t.uv) uv = 3.0f * uv - 1.0f;
+    scene.textures[0].wrapS = TextureWrap::ClampToEdge;
+    scene.textures[0].wrapT = TextureWrap::MirroredRepeat;
+    scene.textures[0].nearest = true;
+    Renderer renderer(scene, testShaders());
+    const int size = 6 * kTexSize;
+    Image image = albedoView(renderer, size);
+    auto mirrored = [](int i) {
+        int m = ((i % (2 * kTexSize)) + 2 * kTexSize) % (2 * kTexSize);
+        return m < kTexSize ? m : 2 * kTexSize - 1 - m;
+    };
+    for (int y = 0; y < size; ++y)
+        for (int x = 0; x < size; ++x) {
+            glm::vec2 uv = 3.0f * glm::vec2((x + 0.5f) / size, 1.0f - (y + 0.5f) / size) - 1.0f;
+            int tx = std::clamp(int(std::floor(uv.x * kTexSize)), 0, kTexSize - 1);
+            int ty = mirrored(int(std::floor((1.0f - uv.y) * kTexSize)));
+            glm::vec3 expected = decodedTexel(rgba, tx, ty);
+            for (int c = 0; c < 3; ++c)
+                EXPECT_NEAR(image.at(x, y)[c], expected[c], 1e-4f) << x << "," << y << " channel " << c;
+        }
+}
+
 TEST(Textures, KdMultipliesTheTextureAndPlasticBasesAreTextured) {
     ensureGlContext();
     std::vector<uint8_t> rgba = gradientTexels();
@@ -149,6 +180,18 @@ TEST(Textures, EveryIntegratorSeesTheTexturedAlbedoUnderAUniformSky) {
         }
 }
 
+// Expects bdpt and nee to agree (block z-scores) on `scene` seen from insideCamera() after 3 bounces;
+// returns nee's mean.
+glm::vec3 neeAgreesWithBdptInTheBox(const Scene& scene) {
+    Renderer renderer(scene, testShaders());
+    Accumulation nee = renderScene(renderer, insideCamera(), Integrator::Nee, 16, 64, 3);
+    Accumulation bdpt = renderScene(renderer, insideCamera(), Integrator::Bdpt, 16, 64, 3);
+    std::vector<float> z = blockZScores(bdpt, nee, 2);
+    EXPECT_GT(z.size(), 100u);
+    expectZScoresOfNoise(z);
+    return estimate(nee).mean;
+}
+
 // Bidirectional joins evaluate the BSDF at stored vertices, away from where the Surface was built: the
 // textured Kd must travel with them. In a closed emissive box with textured walls bdpt and nee must agree.
 TEST(Textures, BdptJoinsSeeTheSameTexturedKdAsNee) {
@@ -163,15 +206,23 @@ TEST(Textures, BdptJoinsSeeTheSameTexturedKdAsNee) {
     }
     scene.textures.push_back({"gradient", Rgba8Image{kTexSize, kTexSize, gradientTexels()}});
     scene.materials[0].diffuseTexture = 0;
-    Renderer renderer(scene, testShaders());
-    Accumulation nee = renderScene(renderer, insideCamera(), Integrator::Nee, 16, 64, 3);
-    Accumulation bdpt = renderScene(renderer, insideCamera(), Integrator::Bdpt, 16, 64, 3);
-    std::vector<float> z = blockZScores(bdpt, nee, 2);
-    ASSERT_GT(z.size(), 100u);
-    expectZScoresOfNoise(z);
     // With Kd 1 the box would hold radiance 1 + 1 + 1 + 1 after 3 bounces; the texture's albedo is
     // below 0.6, so the image must be well below that.
-    EXPECT_LT(estimate(nee).mean.g, 2.5f);
+    EXPECT_LT(neeAgreesWithBdptInTheBox(scene).g, 2.5f);
+}
+
+// Vertex colours (Scene::colors, glTF COLOR_0) multiply Kd in a scene without textures too
+// (VERTEX_COLORS alone), and bdpt's joins keep the coloured Kd of their stored vertices as they keep a
+// textured one: in the closed emissive box of orange walls bdpt and nee agree, and the light is orange.
+TEST(Textures, VertexColoursMultiplyKdForNeeAndBdptAlike) {
+    ensureGlContext();
+    Scene scene = furnaceBox(1.0f, 1.0f);
+    const glm::vec4 orange(0.9f, 0.5f, 0.2f, 1.0f);
+    scene.colors.assign(scene.triangles.size(), {orange, orange, orange});
+    // Emission 1 plus Kd times it, bounce after bounce: 1 + k + k^2 + k^3 per channel with k = Kd times
+    // the colour, so red well above blue.
+    glm::vec3 mean = neeAgreesWithBdptInTheBox(scene);
+    EXPECT_GT(mean.r, 1.4f * mean.b);
 }
 
 // Documented fallback: faces without vt show Kd times the texture's mean colour, with one warning, and

@@ -276,11 +276,11 @@ TEST(GltfMaterial, TangentsOfNormalMappedPrimitivesInWorldSpace) {
         for (const glm::vec4& tangent : scene.tangents[t]) EXPECT_EQ(tangent.w, 0.0f) << "triangle " << t;
 }
 
-// KHR_texture_transform is baked into the triangles' texture coordinates, by the specification's
-// uv' = T R S (u, v, 1) in glTF's uv, then v flipped: scale (2, 3), a quarter turn counter-clockwise
-// ((x, y) -> (-y, x)) and offset (0.5, 0) take (u, v) to (0.5 - 3 v, 2 u), so ours are
-// (0.5 - 3 v, 1 - 2 u). Its texCoord overrides the map's. A second map with another transform is drawn
-// with the first's, with a warning.
+// KHR_texture_transform is baked into the triangles' texture coordinates, uv' = T R S (u, v, 1) in
+// glTF's uv, then v flipped: scale (2, 3), a quarter turn counter-clockwise as seen on the image (v
+// down: (x, y) -> (y, -x), the turn of the sample model TextureTransformTest, not the specification's
+// GLSL listing) and offset (0.5, 0) take (u, v) to (0.5 + 3 v, -2 u), so ours are (0.5 + 3 v, 1 + 2 u).
+// Its texCoord overrides the map's. A second map with another transform reads the second uv slot.
 TEST(GltfMaterial, TextureTransformIsBakedIntoTheTexcoords) {
     GltfBuilder b;
     int checker = addTexture(b, test::checkerTexels(2, 2, {255, 0, 0}, {0, 0, 255}), 2, 2);
@@ -294,16 +294,21 @@ TEST(GltfMaterial, TextureTransformIsBakedIntoTheTexcoords) {
                                      {"pbrMetallicRoughness", pbr(0, 1, {{"baseColorTexture", base}})},
                                      {"emissiveTexture", other}}});
     const Triangle& t = scene.triangles[0];  // corners with glTF uv (0, 1), (1, 1), (1, 0)
-    const glm::vec2 expected[3] = {{-2.5f, 1.0f}, {-2.5f, -1.0f}, {0.5f, -1.0f}};
+    const glm::vec2 expected[3] = {{3.5f, 1.0f}, {3.5f, 3.0f}, {0.5f, 3.0f}};
+    const glm::vec2 second[3] = {{0.25f, 0.0f}, {1.25f, 0.0f}, {1.25f, 1.0f}};
+    ASSERT_EQ(scene.texcoords1.size(), scene.triangles.size());
     for (int k = 0; k < 3; ++k) {
         EXPECT_NEAR(t.uv[size_t(k)].x, expected[k].x, 1e-5f) << "corner " << k;
         EXPECT_NEAR(t.uv[size_t(k)].y, expected[k].y, 1e-5f) << "corner " << k;
+        EXPECT_NEAR(scene.texcoords1[0][size_t(k)].x, second[k].x, 1e-5f) << "corner " << k;
+        EXPECT_NEAR(scene.texcoords1[0][size_t(k)].y, second[k].y, 1e-5f) << "corner " << k;
     }
-    EXPECT_GE(materialOfQuad(scene, 0).diffuseTexture, 0);
-    EXPECT_TRUE(
-        capture.contains("maps with another KHR_texture_transform than the material's first map drawn "
-                         "with the first's (material 'transformed'"))
-        << test::joined(capture);
+    const Material& m = materialOfQuad(scene, 0);
+    ASSERT_GE(m.diffuseTexture, 0);
+    ASSERT_GE(m.emissionTexture, 0);
+    EXPECT_EQ(scene.textures[size_t(m.diffuseTexture)].uvSlot, 0);
+    EXPECT_EQ(scene.textures[size_t(m.emissionTexture)].uvSlot, 1);
+    EXPECT_TRUE(capture.messages().empty()) << test::joined(capture);
 
     // A texCoord that names no set, and a non-finite transform, are refused.
     for (json bad : {json{{"texCoord", -1}}, json{{"texCoord", 1e300}}, json{{"texCoord", 0.5}},
@@ -316,6 +321,99 @@ TEST(GltfMaterial, TextureTransformIsBakedIntoTheTexcoords) {
         });
         EXPECT_NE(message.find("KHR_texture_transform"), std::string::npos) << bad.dump() << ": " << message;
     }
+}
+
+// A material's maps read at most two (TEXCOORD set, KHR_texture_transform) pairs; a map needing a third
+// is replaced by its mean, with a warning: its factor keeps the map's average, not the full factor
+// (emission 1 would make the surface glow white). Samplers' wrap modes and NEAREST reach the textures;
+// one image under two samplers is two textures.
+TEST(GltfMaterial, AThirdUvPairIsTheMapsMeanAndSamplersReachTheTextures) {
+    GltfBuilder b;
+    int checker = addTexture(b, test::checkerTexels(2, 2, {255, 0, 0}, {0, 0, 255}), 2, 2);
+    int mr = addTexture(b, test::checkerTexels(2, 1, {0, 51, 0}, {0, 153, 102}), 2, 1);
+    int grey = addTexture(b, test::checkerTexels(1, 1, {128, 128, 128}, {128, 128, 128}), 1, 1);
+    b.push("samplers", {{"wrapS", 33071}, {"wrapT", 33648}, {"magFilter", 9728}});
+    int clamped = b.push("textures", {{"source", 0}, {"sampler", 0}});
+    auto offset = [](double u) { return json{{"KHR_texture_transform", {{"offset", {u, 0.0}}}}}; };
+    int three = b.material(
+        {{"name", "three"},
+         {"pbrMetallicRoughness", pbr(1, 1,
+                                      {{"baseColorTexture", {{"index", checker}}},
+                                       {"metallicRoughnessTexture", {{"index", mr}, {"texCoord", 1}}}})},
+         {"emissiveFactor", {1, 1, 1}},
+         {"emissiveTexture", {{"index", grey}, {"extensions", offset(0.5)}}}});
+    int clampedMaterial =
+        b.material({{"name", "clamped"},
+                    {"pbrMetallicRoughness", pbr(0, 1, {{"baseColorTexture", {{"index", clamped}}}})}});
+    json primitives = json::array();
+    for (int m : {three, clampedMaterial}) {
+        json p = quadPrimitive(b, m, true, "TEXCOORD_0");
+        p["attributes"]["TEXCOORD_1"] = p["attributes"]["TEXCOORD_0"];
+        primitives.push_back(p);
+    }
+    b.mesh(primitives);
+    b.node({{"mesh", 0}});
+    b.scene({0});
+    test::TempDir dir;
+    WarningCapture capture;
+    Scene scene = loadScene(dir.write("m.gltf", b.gltf()));
+    const Material& mapped = materialOfQuad(scene, 0);
+    EXPECT_GE(mapped.diffuseTexture, 0);
+    EXPECT_GE(mapped.metallicRoughnessTexture, 0);
+    EXPECT_EQ(scene.textures[size_t(mapped.metallicRoughnessTexture)].uvSlot, 1);
+    EXPECT_EQ(mapped.emissionTexture, -1);
+    EXPECT_NEAR(mapped.emission.r, srgbDecode(128.0f / 255.0f), 1e-6f);  // the mean, not 1
+    EXPECT_TRUE(
+        capture.contains("maps needing a third pair of TEXCOORD set and KHR_texture_transform in one "
+                         "material (two are drawn) replaced by their means (material 'three'"))
+        << test::joined(capture);
+    const Material& other = materialOfQuad(scene, 1);
+    ASSERT_GE(other.diffuseTexture, 0);
+    ASSERT_NE(other.diffuseTexture, mapped.diffuseTexture);
+    const Texture& t = scene.textures[size_t(other.diffuseTexture)];
+    EXPECT_EQ(t.wrapS, TextureWrap::ClampToEdge);
+    EXPECT_EQ(t.wrapT, TextureWrap::MirroredRepeat);
+    EXPECT_TRUE(t.nearest);
+    EXPECT_EQ(scene.textures[size_t(mapped.diffuseTexture)].wrapS, TextureWrap::Repeat);
+    EXPECT_FALSE(scene.textures[size_t(mapped.diffuseTexture)].nearest);
+}
+
+// COLOR_0 (glTF 2.0 3.7.2.1): VEC4 of normalized unsigned bytes and VEC3 of floats (alpha 1) per vertex in
+// Scene::colors, 1 for a primitive without; an unnormalized integer accessor is refused, naming it.
+TEST(GltfMaterial, VertexColoursReachTheScene) {
+    GltfBuilder b;
+    int m = b.material({{"pbrMetallicRoughness", pbr(0, 1)}});
+    json bytes = quadPrimitive(b, m, false);
+    std::vector<uint8_t> rgba = {255, 0, 0, 128, 0, 255, 0, 255, 0, 0, 255, 0, 51, 51, 51, 255};
+    bytes["attributes"]["COLOR_0"] =
+        b.accessor(GltfBuilder::raw(rgba), 5121, 4, "VEC4", {{"normalized", true}});
+    json floats = quadPrimitive(b, m, false);
+    floats["attributes"]["COLOR_0"] = b.vec3({{0.5f, 0.25f, 1.0f}, {0, 0, 0}, {1, 1, 1}, {0.2f, 0.2f, 0.2f}});
+    b.mesh(json::array({bytes, floats, quadPrimitive(b, m, false)}));
+    b.node({{"mesh", 0}});
+    b.scene({0});
+    test::TempDir dir;
+    Scene scene = loadScene(dir.write("c.gltf", b.gltf()));
+    ASSERT_EQ(scene.triangles.size(), 6u);
+    ASSERT_EQ(scene.colors.size(), 6u);
+    // The quad's triangles are corners (0, 1, 2) and (0, 2, 3).
+    EXPECT_EQ(scene.colors[0][0], glm::vec4(1.0f, 0.0f, 0.0f, 128.0f / 255.0f));
+    EXPECT_EQ(scene.colors[1][2], glm::vec4(0.2f, 0.2f, 0.2f, 1.0f));
+    EXPECT_EQ(scene.colors[2][0], glm::vec4(0.5f, 0.25f, 1.0f, 1.0f));
+    for (const glm::vec4& c : scene.colors[5]) EXPECT_EQ(c, glm::vec4(1.0f));
+
+    GltfBuilder c;
+    int n = c.material({{"pbrMetallicRoughness", pbr(0, 1)}});
+    json plain = quadPrimitive(c, n, false);
+    plain["attributes"]["COLOR_0"] = c.accessor(GltfBuilder::raw(rgba), 5121, 4, "VEC4");
+    c.mesh(json::array({plain}));
+    c.node({{"mesh", 0}});
+    c.scene({0});
+    std::string message = test::errorOf([&] { loadScene(dir.write("bad.gltf", c.gltf())); });
+    EXPECT_NE(
+        message.find("COLOR_0 of meshes[0].primitives[0]) must be VEC3 or VEC4 of FLOAT, or of normalized"),
+        std::string::npos)
+        << message;
 }
 
 TEST(GltfMaterial, TexturedMaterialWithoutItsTexcoordsGetsTheMeanColour) {
