@@ -11,7 +11,10 @@
 //   dielectric  glass: exact Fresnel reflection and refraction, smooth or GGX-rough (Walter et al. 2007)
 //   metallic-roughness  glTF 2.0's model (glTF 2.0 specification, Appendix B): the linear blend
 //               metallic * conductor(F0 = base colour) + (1 - metallic) * plastic(white coat of index
-//               ior over a Lambertian base colour), both lobes with the same GGX roughness
+//               ior over a Lambertian base colour), both lobes with the same GGX roughness; the
+//               coat's reflectance tinted by Ks, which holds glTF's KHR_materials_specular colour
+//   unlit       glTF's KHR_materials_unlit: no scattering; the base colour is radiance the surface
+//               shows (surface.glsl, emittedRadiance)
 // Roughness below kSmooth makes a lobe a perfect mirror or refractor: a "delta" lobe that only
 // sampling can find, so light sampling skips it and MIS gives its hits full weight.
 #define MATERIAL_DIFFUSE 0
@@ -19,12 +22,13 @@
 #define MATERIAL_PLASTIC 2
 #define MATERIAL_DIELECTRIC 3
 #define MATERIAL_METALLIC_ROUGHNESS 4
+#define MATERIAL_UNLIT 5
 const float kSmooth = 0.01;
 
 // MATERIAL_TYPES is a bit mask of the types present in the scene (bit = fp::MaterialType), injected by
 // the renderer, so that a scene of Lambertian surfaces compiles none of the other models' code.
 #ifndef MATERIAL_TYPES
-#define MATERIAL_TYPES 31
+#define MATERIAL_TYPES 63
 #endif
 #define HAS_TYPE(t) ((MATERIAL_TYPES & (1 << t)) != 0)
 
@@ -54,6 +58,9 @@ bool isDeltaOnly(MaterialData m) {
 #endif
 #if HAS_TYPE(MATERIAL_METALLIC_ROUGHNESS)
     if (m.type == MATERIAL_METALLIC_ROUGHNESS) return m.metallic >= 1.0 && m.roughness < kSmooth;
+#endif
+#if HAS_TYPE(MATERIAL_UNLIT)
+    if (m.type == MATERIAL_UNLIT) return true;  // no lobe at all: nothing for a light sample to find
 #endif
     return (m.type == MATERIAL_CONDUCTOR || m.type == MATERIAL_DIELECTRIC) && m.roughness < kSmooth;
 }
@@ -285,7 +292,8 @@ bool dielectricSample(MaterialData m, vec3 wo, vec3 u, float eta, out BsdfSample
 // ---- metallic-roughness: glTF 2.0's BRDF (specification, Appendix B) ----
 // f = metallic f_conductor + (1 - metallic) f_plastic, where f_conductor is the conductor above with
 // F0 = base colour (Schlick's Fresnel, as glTF's conductor_fresnel) and f_plastic the plastic above with
-// a white coat of index ior (1.5: glTF's dielectric F0 = 0.04) over a Lambertian base colour (glTF's
+// a coat of index ior (1.5: glTF's dielectric F0 = 0.04), its reflectance tinted by Ks (the specularColor
+// of KHR_materials_specular, white without it), over a Lambertian base colour (glTF's
 // fresnel_mix of the diffuse and specular lobes, with exact Fresnel and the base seen through the coat
 // on the way in and out, as in our plastic). Both lobes have GGX alpha = roughness^2. Sampling picks the
 // conductor with probability metallic and then samples it as the conductor does (else the plastic, with
@@ -293,41 +301,37 @@ bool dielectricSample(MaterialData m, vec3 wo, vec3 u, float eta, out BsdfSample
 // metallic pdf_conductor + (1 - metallic) pdf_plastic (the one-sample model of Veach 1997, section 9.2.4,
 // which keeps MIS correct); a delta direction (a smooth lobe) keeps the weight its model gave it, since
 // the lobe's share of f and its probability of being chosen are the same factor. metallic 0 and 1 are
-// exactly the plastic and the conductor (the same functions, no blend).
+// exactly the plastic and the conductor (the same functions, no blend). The plastic is m itself: its Ks
+// is the coat's tint (pack.cpp packs specularColor there).
 MaterialData metallicRoughnessConductor(MaterialData m) {
     m.specular = m.diffuse;
     return m;
 }
 
-MaterialData metallicRoughnessPlastic(MaterialData m) {
-    m.specular = vec3(1.0);
-    return m;
-}
-
 vec3 metallicRoughnessEval(MaterialData m, vec3 wo, vec3 wi) {
     if (m.metallic >= 1.0) return conductorEval(metallicRoughnessConductor(m), wo, wi);
-    if (m.metallic <= 0.0) return plasticEval(metallicRoughnessPlastic(m), wo, wi);
+    if (m.metallic <= 0.0) return plasticEval(m, wo, wi);
     return m.metallic * conductorEval(metallicRoughnessConductor(m), wo, wi) +
-           (1.0 - m.metallic) * plasticEval(metallicRoughnessPlastic(m), wo, wi);
+           (1.0 - m.metallic) * plasticEval(m, wo, wi);
 }
 
 float metallicRoughnessPdf(MaterialData m, vec3 wo, vec3 wi) {
     if (m.metallic >= 1.0) return conductorPdf(metallicRoughnessConductor(m), wo, wi);
-    if (m.metallic <= 0.0) return plasticPdf(metallicRoughnessPlastic(m), wo, wi);
+    if (m.metallic <= 0.0) return plasticPdf(m, wo, wi);
     return m.metallic * conductorPdf(metallicRoughnessConductor(m), wo, wi) +
-           (1.0 - m.metallic) * plasticPdf(metallicRoughnessPlastic(m), wo, wi);
+           (1.0 - m.metallic) * plasticPdf(m, wo, wi);
 }
 
 bool metallicRoughnessSample(MaterialData m, vec3 wo, vec3 u, out BsdfSample s) {
     if (m.metallic >= 1.0) return conductorSample(metallicRoughnessConductor(m), wo, u, s);
-    if (m.metallic <= 0.0) return plasticSample(metallicRoughnessPlastic(m), wo, u, s);
+    if (m.metallic <= 0.0) return plasticSample(m, wo, u, s);
     // u.z picks the lobe and, rescaled to the chosen share, is the plastic's own lobe choice.
     bool found;
     if (u.z < m.metallic) {
         found = conductorSample(metallicRoughnessConductor(m), wo, u, s);
     } else {
         float v = min((u.z - m.metallic) / (1.0 - m.metallic), 0.99999994);
-        found = plasticSample(metallicRoughnessPlastic(m), wo, vec3(u.xy, v), s);
+        found = plasticSample(m, wo, vec3(u.xy, v), s);
     }
     if (!found || s.delta) return found;
     s.pdf = metallicRoughnessPdf(m, wo, s.wi);
@@ -355,6 +359,9 @@ vec3 bsdfEval(MaterialData m, vec3 wo, vec3 wi, float eta) {
 #if HAS_TYPE(MATERIAL_METALLIC_ROUGHNESS)
     if (m.type == MATERIAL_METALLIC_ROUGHNESS) return metallicRoughnessEval(m, wo, wi);
 #endif
+#if HAS_TYPE(MATERIAL_UNLIT)
+    if (m.type == MATERIAL_UNLIT) return vec3(0.0);
+#endif
     return wi.z > 0.0 ? m.diffuse / PI * wi.z : vec3(0.0);
 }
 
@@ -371,6 +378,9 @@ float bsdfPdf(MaterialData m, vec3 wo, vec3 wi, float eta) {
 #endif
 #if HAS_TYPE(MATERIAL_METALLIC_ROUGHNESS)
     if (m.type == MATERIAL_METALLIC_ROUGHNESS) return metallicRoughnessPdf(m, wo, wi);
+#endif
+#if HAS_TYPE(MATERIAL_UNLIT)
+    if (m.type == MATERIAL_UNLIT) return 0.0;
 #endif
     return wi.z > 0.0 ? wi.z / PI : 0.0;
 }
@@ -389,6 +399,9 @@ bool bsdfSample(MaterialData m, vec3 wo, vec3 u, float eta, out BsdfSample s) {
 #endif
 #if HAS_TYPE(MATERIAL_METALLIC_ROUGHNESS)
     if (m.type == MATERIAL_METALLIC_ROUGHNESS) return metallicRoughnessSample(m, wo, u, s);
+#endif
+#if HAS_TYPE(MATERIAL_UNLIT)
+    if (m.type == MATERIAL_UNLIT) return false;  // the path ends on it
 #endif
     vec3 wi = sampleCosineLocal(u.xy);
     s = BsdfSample(wi, m.diffuse, wi.z / PI, false);

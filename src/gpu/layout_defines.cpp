@@ -27,6 +27,7 @@ ShaderDefines layoutDefines(bool images) {
                              {"MATERIAL_MAPS_TEXEL", s(kMaterialMapsTexel)},
                              {"MATERIAL_ALPHA_TEXEL", s(kMaterialAlphaTexel)},
                              {"MATERIAL_EXTRA_TEXEL", s(kMaterialExtraTexel)},
+                             {"MATERIAL_VOLUME_TEXEL", s(kMaterialVolumeTexel)},
                              {"TANGENT_TEXELS", s(kTangentTexels)},
                              {"DIFFUSE_MAP_BIT", s(kDiffuseMapBit)},
                              {"ROUGHNESS_MAP_BIT", s(kRoughnessMapBit)},

@@ -51,7 +51,7 @@ bool isCaster(const Material& m, const std::vector<Texture>& textures) {
 }  // namespace
 
 bool hasDeltaLobe(const Material& m, const std::vector<Texture>& textures) {
-    if (m.type == MaterialType::Diffuse) return false;
+    if (m.type == MaterialType::Diffuse || m.type == MaterialType::Unlit) return false;
     // Twice the threshold: the GPU's filtered value may round below the smallest texel, and a delta lobe
     // missed here would lose its caustics (the camera pass leaves them to the light pass).
     return smallestRoughness(m, textures) < 2.0f * kSmoothRoughness;

@@ -90,7 +90,11 @@ Renderer::Renderer(const Scene& scene, ShaderLibrary shaders, const BvhBuildOpti
         if (environment.totalWeight > 0.0)
             environmentTextures_ = std::make_unique<EnvironmentTextures>(environment);
     }
-    for (const Material& m : scene.materials) materialTypes_ |= 1u << uint32_t(shaderMaterial(m).type);
+    for (const Material& m : scene.materials) {
+        materialTypes_ |= 1u << uint32_t(shaderMaterial(m).type);
+        absorbingGlass_ =
+            absorbingGlass_ || (m.type == MaterialType::Dielectric && m.absorption != glm::vec3(0.0f));
+    }
     glGenVertexArrays(1, &vertexArray_);
 }
 
@@ -124,6 +128,8 @@ std::unique_ptr<Program> Renderer::compile(Integrator integrator, const char* fr
     defines.emplace_back("GLOSSY_CASTER_ROUGHNESS", std::to_string(kGlossyCasterRoughness));
     defines.emplace_back("GUIDES", settings_.guides ? "1" : "0");
     defines.emplace_back("MATERIAL_TYPES", std::to_string(materialTypes_));
+    // Only scenes with an absorbing glass (KHR_materials_volume) attenuate paths inside (surface.glsl).
+    defines.emplace_back("MATERIAL_VOLUME", absorbingGlass_ ? "1" : "0");
     defines.emplace_back("ENVIRONMENT_MAP", environmentTextures_ ? "1" : "0");
     if (environmentTextures_) {
         glm::ivec2 size = environmentTextures_->size();

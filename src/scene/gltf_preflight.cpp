@@ -555,6 +555,14 @@ class Schema {
             textureInfo(*e, p, "specularTexture");
             textureInfo(*e, p, "specularColorTexture");
         }
+        if (const json* e = object(*extensions, ep, "KHR_materials_volume")) {
+            std::string p = join(ep, "KHR_materials_volume");
+            number(*e, p, "thicknessFactor", 0.0, inf);
+            number(*e, p, "attenuationDistance", 0.0, inf, false, true);
+            numbers(*e, p, "attenuationColor", 3, 0.0, 1.0);
+            textureInfo(*e, p, "thicknessTexture");
+        }
+        object(*extensions, ep, "KHR_materials_unlit");  // an object, of no properties
     }
 
     void camera(const json& o, const std::string& path) const {
@@ -587,6 +595,7 @@ class Schema {
 bool isImplementedExtension(const std::string& extension) {
     return extension == "KHR_materials_emissive_strength" || extension == "KHR_materials_transmission" ||
            extension == "KHR_materials_ior" || extension == "KHR_materials_specular" ||
+           extension == "KHR_materials_unlit" || extension == "KHR_materials_volume" ||
            extension == "KHR_lights_punctual" || extension == "KHR_texture_transform";
 }
 

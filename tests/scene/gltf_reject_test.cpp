@@ -123,6 +123,18 @@ TEST(GltfReject, SchemaErrorsNameTheProperty) {
         "materials[0].pbrMetallicRoughness.baseColorFactor[2]: must be in [0.0, 1.0], got 2");
     EXPECT_CONTAINS_ALL(
         rejectedEdit([](json& d) {
+            d["materials"] = {{{"extensions", {{"KHR_materials_volume", {{"attenuationDistance", 0}}}}}}};
+        }),
+        "materials[0].extensions.KHR_materials_volume.attenuationDistance: must be in (0.0, "
+        "infinity), got 0");
+    EXPECT_CONTAINS_ALL(
+        rejectedEdit([](json& d) {
+            d["materials"] = {
+                {{"extensions", {{"KHR_materials_volume", {{"attenuationColor", {1, -1, 1}}}}}}}};
+        }),
+        "materials[0].extensions.KHR_materials_volume.attenuationColor[1]: must be in [0.0, 1.0]");
+    EXPECT_CONTAINS_ALL(
+        rejectedEdit([](json& d) {
             d["cameras"] = {{{"type", "perspective"}, {"perspective", {{"yfov", 0}, {"znear", 1}}}}};
         }),
         "cameras[0].perspective.yfov: must be in (0.0, infinity), got 0");
