@@ -12,7 +12,8 @@
 //   metallic-roughness  glTF 2.0's model (glTF 2.0 specification, Appendix B): the linear blend
 //               metallic * conductor(F0 = base colour) + (1 - metallic) * plastic(white coat of index
 //               ior over a Lambertian base colour), both lobes with the same GGX roughness; the
-//               coat's reflectance tinted by Ks, which holds glTF's KHR_materials_specular colour
+//               coat's reflectance tinted by Ks, which holds glTF's KHR_materials_specular colour;
+//               optionally under a clearcoat (KHR_materials_clearcoat): a second GGX lobe on top
 //   unlit       glTF's KHR_materials_unlit: no scattering; the base colour is radiance the surface
 //               shows (surface.glsl, emittedRadiance)
 // Roughness below kSmooth makes a lobe a perfect mirror or refractor: a "delta" lobe that only
@@ -31,6 +32,12 @@ const float kSmooth = 0.01;
 #define MATERIAL_TYPES 63
 #endif
 #define HAS_TYPE(t) ((MATERIAL_TYPES & (1 << t)) != 0)
+// MATERIAL_CLEARCOAT: 1 when some metallic-roughness material has a clearcoat (the renderer's choice);
+// the tests' probe, which leaves it out, compiles it.
+#ifndef MATERIAL_CLEARCOAT
+#define MATERIAL_CLEARCOAT 1
+#endif
+#define HAS_CLEARCOAT (MATERIAL_CLEARCOAT != 0 && HAS_TYPE(MATERIAL_METALLIC_ROUGHNESS))
 
 struct MaterialData {
     int type;
@@ -38,6 +45,7 @@ struct MaterialData {
     float roughness, ior;
     float cauchyB;  // nm^2; > 0 for a dispersive glass, whose ior is the index at 587.6 nm
     float metallic;  // metallic-roughness only (0 for the other types)
+    float clearcoat, clearcoatRoughness;  // metallic-roughness only, with HAS_CLEARCOAT (else 0)
 };
 
 MaterialData fetchMaterial(int m) {
@@ -49,7 +57,11 @@ MaterialData fetchMaterial(int m) {
 #if HAS_TYPE(MATERIAL_METALLIC_ROUGHNESS)
     metallic = materialTexel(m * MATERIAL_TEXELS + MATERIAL_EXTRA_TEXEL).x;
 #endif
-    return MaterialData(int(a.w), a.rgb, b.rgb, c.rgb, d.rgb, b.w, c.w, d.w, metallic);
+    vec2 clearcoat = vec2(0.0);
+#if HAS_CLEARCOAT
+    if (int(a.w) == MATERIAL_METALLIC_ROUGHNESS) clearcoat = materialTexel(m * MATERIAL_TEXELS + MATERIAL_CLEARCOAT_TEXEL).xy;
+#endif
+    return MaterialData(int(a.w), a.rgb, b.rgb, c.rgb, d.rgb, b.w, c.w, d.w, metallic, clearcoat.x, clearcoat.y);
 }
 
 bool isDeltaOnly(MaterialData m) {
@@ -57,7 +69,8 @@ bool isDeltaOnly(MaterialData m) {
     return false;
 #endif
 #if HAS_TYPE(MATERIAL_METALLIC_ROUGHNESS)
-    if (m.type == MATERIAL_METALLIC_ROUGHNESS) return m.metallic >= 1.0 && m.roughness < kSmooth;
+    if (m.type == MATERIAL_METALLIC_ROUGHNESS)
+        return m.metallic >= 1.0 && m.roughness < kSmooth && (m.clearcoat <= 0.0 || m.clearcoatRoughness < kSmooth);
 #endif
 #if HAS_TYPE(MATERIAL_UNLIT)
     if (m.type == MATERIAL_UNLIT) return true;  // no lobe at all: nothing for a light sample to find
@@ -339,6 +352,78 @@ bool metallicRoughnessSample(MaterialData m, vec3 wo, vec3 u, out BsdfSample s) 
     return s.pdf > 0.0;
 }
 
+// ---- clearcoat: KHR_materials_clearcoat over the metallic-roughness model ----
+// A clear dielectric coat of index 1.5 (the extension's fixed F0 = 0.04) and its own GGX roughness on
+// top, weighted by the clearcoat factor c and layered as our plastic layers its coat over its base (and
+// as the extension's specification layers it, with the Fresnel term taken at the macro-surface normal):
+//   f = c f_coat(wo, wi) + (1 - c F(cos_o)) (1 - c F(cos_i)) f_base(wo, wi),
+// f_coat = D G F(wo.h) / (4 cos_o cos_i). What the coat reflects at wo is taken from what reaches the base,
+// on the way in and out, so f is reciprocal and its albedo at most 1 (tests/render/
+// gltf_material_extensions_test.cpp). Sampling picks the coat with probability cF / (cF + (1 - cF) b),
+// b the base colour's luminance (what the base roughly reflects), clamped to [0.05, 0.95]; a non-delta
+// direction gets the mixture's density, a delta one (a smooth coat, or a smooth lobe of the base) its
+// lobe's weight over the probability of choosing it.
+const float kClearcoatIor = 1.5;
+
+float clearcoatFresnel(MaterialData m, float cosTheta) { return m.clearcoat * fresnelDielectric(abs(cosTheta), kClearcoatIor); }
+
+float clearcoatProbability(MaterialData m, vec3 wo) {
+    float coat = clearcoatFresnel(m, wo.z);
+    float base = (1.0 - coat) * max(luminance(m.diffuse), 0.04);
+    return clamp(coat / (coat + base), 0.05, 0.95);
+}
+
+// What the coat lets through to the base and back: (1 - c F(cos_o)) (1 - c F(cos_i)).
+float clearcoatTransmittance(MaterialData m, vec3 wo, vec3 wi) {
+    return (1.0 - clearcoatFresnel(m, wo.z)) * (1.0 - clearcoatFresnel(m, wi.z));
+}
+
+vec3 clearcoatedEval(MaterialData m, vec3 wo, vec3 wi) {
+    vec3 f = clearcoatTransmittance(m, wo, wi) * metallicRoughnessEval(m, wo, wi);
+    if (wi.z > 0.0 && m.clearcoatRoughness >= kSmooth) {
+        float alpha = ggxAlpha(m.clearcoatRoughness);
+        vec3 wm = normalize(wo + wi);
+        f += vec3(m.clearcoat * ggxD(wm, alpha) * ggxG(wo, wi, alpha) * fresnelDielectric(dot(wo, wm), kClearcoatIor) / (4.0 * wo.z));
+    }
+    return f;
+}
+
+float clearcoatedPdf(MaterialData m, vec3 wo, vec3 wi) {
+    float p = clearcoatProbability(m, wo);
+    float pdf = (1.0 - p) * metallicRoughnessPdf(m, wo, wi);
+    if (wi.z > 0.0 && m.clearcoatRoughness >= kSmooth) {
+        vec3 wm = normalize(wo + wi);
+        pdf += p * ggxVisiblePdf(wo, wm, ggxAlpha(m.clearcoatRoughness)) / (4.0 * dot(wo, wm));
+    }
+    return pdf;
+}
+
+bool clearcoatedSample(MaterialData m, vec3 wo, vec3 u, out BsdfSample s) {
+    float p = clearcoatProbability(m, wo);
+    vec3 wi;
+    if (u.z < p) {
+        if (m.clearcoatRoughness < kSmooth) {
+            s = BsdfSample(vec3(-wo.x, -wo.y, wo.z), vec3(clearcoatFresnel(m, wo.z) / p), 0.0, true);
+            return true;
+        }
+        s = BsdfSample(vec3(0.0, 0.0, 1.0), vec3(0.0), 0.0, false);
+        wi = reflectLocal(wo, ggxSampleVisibleNormal(wo, ggxAlpha(m.clearcoatRoughness), u.xy));
+    } else {
+        // u.z, rescaled to the base's share, is the base's own lobe choice.
+        float v = min((u.z - p) / (1.0 - p), 0.99999994);
+        if (!metallicRoughnessSample(m, wo, vec3(u.xy, v), s)) return false;
+        if (s.delta) {
+            s.weight *= clearcoatTransmittance(m, wo, s.wi) / (1.0 - p);
+            return true;
+        }
+        wi = s.wi;
+    }
+    if (wi.z <= 0.0) return false;
+    float pdf = clearcoatedPdf(m, wo, wi);
+    s = BsdfSample(wi, pdf > 0.0 ? clearcoatedEval(m, wo, wi) / pdf : vec3(0.0), pdf, false);
+    return pdf > 0.0;
+}
+
 // ---- dispatch ----
 
 // wo below the shading frame's horizon (a view direction under an interpolated normal) has f = 0 and
@@ -357,7 +442,12 @@ vec3 bsdfEval(MaterialData m, vec3 wo, vec3 wi, float eta) {
     if (m.type == MATERIAL_DIELECTRIC) return dielectricEval(m, wo, wi, eta);
 #endif
 #if HAS_TYPE(MATERIAL_METALLIC_ROUGHNESS)
-    if (m.type == MATERIAL_METALLIC_ROUGHNESS) return metallicRoughnessEval(m, wo, wi);
+    if (m.type == MATERIAL_METALLIC_ROUGHNESS) {
+#if HAS_CLEARCOAT
+        if (m.clearcoat > 0.0) return clearcoatedEval(m, wo, wi);
+#endif
+        return metallicRoughnessEval(m, wo, wi);
+    }
 #endif
 #if HAS_TYPE(MATERIAL_UNLIT)
     if (m.type == MATERIAL_UNLIT) return vec3(0.0);
@@ -377,7 +467,12 @@ float bsdfPdf(MaterialData m, vec3 wo, vec3 wi, float eta) {
     if (m.type == MATERIAL_DIELECTRIC) return dielectricPdf(m, wo, wi, eta);
 #endif
 #if HAS_TYPE(MATERIAL_METALLIC_ROUGHNESS)
-    if (m.type == MATERIAL_METALLIC_ROUGHNESS) return metallicRoughnessPdf(m, wo, wi);
+    if (m.type == MATERIAL_METALLIC_ROUGHNESS) {
+#if HAS_CLEARCOAT
+        if (m.clearcoat > 0.0) return clearcoatedPdf(m, wo, wi);
+#endif
+        return metallicRoughnessPdf(m, wo, wi);
+    }
 #endif
 #if HAS_TYPE(MATERIAL_UNLIT)
     if (m.type == MATERIAL_UNLIT) return 0.0;
@@ -398,7 +493,12 @@ bool bsdfSample(MaterialData m, vec3 wo, vec3 u, float eta, out BsdfSample s) {
     if (m.type == MATERIAL_DIELECTRIC) return dielectricSample(m, wo, u, eta, s);
 #endif
 #if HAS_TYPE(MATERIAL_METALLIC_ROUGHNESS)
-    if (m.type == MATERIAL_METALLIC_ROUGHNESS) return metallicRoughnessSample(m, wo, u, s);
+    if (m.type == MATERIAL_METALLIC_ROUGHNESS) {
+#if HAS_CLEARCOAT
+        if (m.clearcoat > 0.0) return clearcoatedSample(m, wo, u, s);
+#endif
+        return metallicRoughnessSample(m, wo, u, s);
+    }
 #endif
 #if HAS_TYPE(MATERIAL_UNLIT)
     if (m.type == MATERIAL_UNLIT) return false;  // the path ends on it

@@ -28,6 +28,7 @@ ShaderDefines layoutDefines(bool images) {
                              {"MATERIAL_ALPHA_TEXEL", s(kMaterialAlphaTexel)},
                              {"MATERIAL_EXTRA_TEXEL", s(kMaterialExtraTexel)},
                              {"MATERIAL_VOLUME_TEXEL", s(kMaterialVolumeTexel)},
+                             {"MATERIAL_CLEARCOAT_TEXEL", s(kMaterialClearcoatTexel)},
                              {"TANGENT_TEXELS", s(kTangentTexels)},
                              {"DIFFUSE_MAP_BIT", s(kDiffuseMapBit)},
                              {"ROUGHNESS_MAP_BIT", s(kRoughnessMapBit)},

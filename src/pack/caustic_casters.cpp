@@ -52,6 +52,10 @@ bool isCaster(const Material& m, const std::vector<Texture>& textures) {
 
 bool hasDeltaLobe(const Material& m, const std::vector<Texture>& textures) {
     if (m.type == MaterialType::Diffuse || m.type == MaterialType::Unlit) return false;
+    // A smooth clearcoat is a mirror whatever lies below it.
+    if (m.type == MaterialType::MetallicRoughness && m.clearcoat > 0.0f &&
+        m.clearcoatRoughness < 2.0f * kSmoothRoughness)
+        return true;
     // Twice the threshold: the GPU's filtered value may round below the smallest texel, and a delta lobe
     // missed here would lose its caustics (the camera pass leaves them to the light pass).
     return smallestRoughness(m, textures) < 2.0f * kSmoothRoughness;

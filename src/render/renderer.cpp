@@ -94,6 +94,7 @@ Renderer::Renderer(const Scene& scene, ShaderLibrary shaders, const BvhBuildOpti
         materialTypes_ |= 1u << uint32_t(shaderMaterial(m).type);
         absorbingGlass_ =
             absorbingGlass_ || (m.type == MaterialType::Dielectric && m.absorption != glm::vec3(0.0f));
+        clearcoat_ = clearcoat_ || shaderMaterial(m).clearcoat > 0.0f;
     }
     glGenVertexArrays(1, &vertexArray_);
 }
@@ -130,6 +131,8 @@ std::unique_ptr<Program> Renderer::compile(Integrator integrator, const char* fr
     defines.emplace_back("MATERIAL_TYPES", std::to_string(materialTypes_));
     // Only scenes with an absorbing glass (KHR_materials_volume) attenuate paths inside (surface.glsl).
     defines.emplace_back("MATERIAL_VOLUME", absorbingGlass_ ? "1" : "0");
+    // Only scenes with a clearcoat (KHR_materials_clearcoat) compile its lobe (bsdf.glsl).
+    defines.emplace_back("MATERIAL_CLEARCOAT", clearcoat_ ? "1" : "0");
     defines.emplace_back("ENVIRONMENT_MAP", environmentTextures_ ? "1" : "0");
     if (environmentTextures_) {
         glm::ivec2 size = environmentTextures_->size();

@@ -185,6 +185,8 @@ struct PbrFactors {
     // KHR_materials_volume: -ln(attenuationColor) / attenuationDistance (0: no absorption).
     glm::vec3 absorption{0.0f};
     bool unlit = false;  // KHR_materials_unlit
+    // KHR_materials_clearcoat: clearcoatFactor, clearcoatRoughnessFactor (times their textures' means).
+    float clearcoat = 0.0f, clearcoatRoughness = 0.0f;
     AlphaMode alphaMode = AlphaMode::Opaque;
     float alphaCutoff = 0.5f;
     bool doubleSided = false;  // glTF's default

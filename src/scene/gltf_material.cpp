@@ -105,6 +105,8 @@ Material materialFromPbr(const PbrFactors& f, const std::string& name) {
     m.ior = f.ior && *f.ior > 1.0f ? ior : 1.5f;
     // A tint above 1 would reflect more than arrives at grazing angles, where the Fresnel factor is 1.
     m.specularColor = clamp01(f.specularColor);
+    m.clearcoat = std::clamp(f.clearcoat, 0.0f, 1.0f);
+    m.clearcoatRoughness = std::clamp(f.clearcoatRoughness, 0.0f, 1.0f);
     return m;
 }
 
@@ -131,6 +133,9 @@ PbrFactors factorsOf(const tinygltf::Material& g) {
                       extensionColor(g.extensions, kSpecular, "specularColorFactor", glm::vec3(1.0f));
     f.absorption = absorptionOf(g.extensions);
     f.unlit = g.extensions.count("KHR_materials_unlit") > 0;
+    const char* kClearcoat = "KHR_materials_clearcoat";
+    f.clearcoat = float(extensionNumber(g.extensions, kClearcoat, "clearcoatFactor", 0.0));
+    f.clearcoatRoughness = float(extensionNumber(g.extensions, kClearcoat, "clearcoatRoughnessFactor", 0.0));
     f.alphaMode = g.alphaMode == "MASK"    ? AlphaMode::Mask
                   : g.alphaMode == "BLEND" ? AlphaMode::Blend
                                            : AlphaMode::Opaque;
@@ -374,21 +379,42 @@ struct MaterialTable::Impl {
 
     // KHR_materials_specular's textures (A: the factor, RGB: the colour) as their means, which multiply
     // the factors; a tint above 1 is clamped (materialFromPbr), and glass takes none of it.
+    // The image of the texture an extension of glTF material g names under `key`, if it has one that
+    // loaded (a broken one is warned about and ignored).
+    const Loaded* extensionImage(const tinygltf::Material& g, int material, const char* extension,
+                                 const char* key) {
+        int texture = extensionTexture(g.extensions, extension, key);
+        const Loaded* map = texture >= 0 ? image(texture, material, key, kIgnoreMap) : nullptr;
+        return map && map->problem.empty() ? map : nullptr;
+    }
+
     void specularTextures(const tinygltf::Material& g, int material, PbrFactors* f) {
         const char* kSpecular = "KHR_materials_specular";
         if (!g.extensions.count(kSpecular)) return;
-        int factor = extensionTexture(g.extensions, kSpecular, "specularTexture");
-        int colour = extensionTexture(g.extensions, kSpecular, "specularColorTexture");
-        const Loaded* a = factor >= 0 ? image(factor, material, "specularTexture", kIgnoreMap) : nullptr;
-        const Loaded* rgb =
-            colour >= 0 ? image(colour, material, "specularColorTexture", kIgnoreMap) : nullptr;
-        if (a && a->problem.empty()) f->specularColor *= meanCodes(a->image).a;
-        if (rgb && rgb->problem.empty()) f->specularColor *= meanLinearColor(rgb->image);
-        if (factor >= 0 || colour >= 0)
+        const Loaded* a = extensionImage(g, material, kSpecular, "specularTexture");
+        const Loaded* rgb = extensionImage(g, material, kSpecular, "specularColorTexture");
+        if (a) f->specularColor *= meanCodes(a->image).a;
+        if (rgb) f->specularColor *= meanLinearColor(rgb->image);
+        if (a || rgb)
             tally("KHR_materials_specular textures: the factors are multiplied by their means", material);
         if (glm::any(glm::greaterThan(f->specularColor, glm::vec3(1.0f))))
             tally("KHR_materials_specular: specularFactor * specularColorFactor above 1 clamped to 1",
                   material);
+    }
+
+    // KHR_materials_clearcoat's textures (R: the factor, G: the roughness) as their means, which
+    // multiply the factors; its normal map is not used (the coat takes the surface's shading normal).
+    void clearcoatTextures(const tinygltf::Material& g, int material, PbrFactors* f) {
+        const char* kClearcoat = "KHR_materials_clearcoat";
+        if (!g.extensions.count(kClearcoat)) return;
+        const Loaded* factor = extensionImage(g, material, kClearcoat, "clearcoatTexture");
+        const Loaded* roughness = extensionImage(g, material, kClearcoat, "clearcoatRoughnessTexture");
+        if (factor) f->clearcoat *= meanCodes(factor->image).r;
+        if (roughness) f->clearcoatRoughness *= meanCodes(roughness->image).g;
+        if (factor || roughness)
+            tally("KHR_materials_clearcoat textures: the factors are multiplied by their means", material);
+        if (extensionTexture(g.extensions, kClearcoat, "clearcoatNormalTexture") >= 0)
+            tally("clearcoatNormalTexture ignored (the coat takes the surface's normal)", material);
     }
 
     Resolved& resolve(int material) {
@@ -402,6 +428,7 @@ struct MaterialTable::Impl {
         if (g && g->extensions.count("KHR_materials_ior") && (*f.ior == 0.0f || *f.ior > 4.0f))
             tally("KHR_materials_ior outside [1, 4] clamped into it", material);
         if (g) specularTextures(*g, material, &f);
+        if (g) clearcoatTextures(*g, material, &f);
         // The transmission map decides the model, so only its mean can count.
         int transmissionTexture =
             g ? extensionTexture(g->extensions, "KHR_materials_transmission", "transmissionTexture") : -1;
@@ -414,6 +441,8 @@ struct MaterialTable::Impl {
         }
         Material m = materialFromPbr(f, g ? (g->name.empty() ? label(material) : g->name) : "glTF default");
         if (g) addMaps(*g, material, &m, &r);
+        if (m.type == MaterialType::Dielectric && f.clearcoat > 0.0f)
+            tally("KHR_materials_clearcoat on glass ignored", material);
         if (m.type == MaterialType::Dielectric && f.specularColor != glm::vec3(1.0f))
             tally("KHR_materials_specular on glass ignored (its reflectance is the exact Fresnel of its ior)",
                   material);

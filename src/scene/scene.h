@@ -59,6 +59,11 @@ struct Material {
     // medium inside the mesh, -ln(attenuationColor) / attenuationDistance; a path inside loses
     // exp(-sigma_a d) over the distance d (Beer-Lambert). 0: clear glass.
     glm::vec3 absorption{0.0f};
+    // MetallicRoughness, glTF KHR_materials_clearcoat: a second GGX lobe on top, a clear dielectric coat
+    // of index 1.5 with its own roughness (perceptual, as `roughness`), weighted by `clearcoat` in [0, 1]
+    // and by its Fresnel reflectance; what it lets through reaches the model below (bsdf.glsl).
+    float clearcoat = 0.0f;
+    float clearcoatRoughness = 0.0f;
 
     // Coverage, for every type (glTF baseColorFactor.a and alphaMode/alphaCutoff; MTL d and map_d).
     float alpha = 1.0f;  // in [0, 1]

@@ -234,6 +234,45 @@ TEST(GltfMaterial, SpecularFactorsTintTheCoat) {
         "'mapped'");
 }
 
+// KHR_materials_clearcoat: the factor and the coat's roughness (times their textures' means: R of
+// clearcoatTexture, G of clearcoatRoughnessTexture), on the metallic-roughness model; its normal map is
+// warned about, and so is a clearcoat on glass, which has none.
+TEST(GltfMaterial, ClearcoatFactorsAndTheirTexturesMeans) {
+    GltfBuilder b;
+    int map = addTexture(b, {255, 255, 0, 255, 51, 0, 0, 255}, 2, 1);  // R mean 0.6, G mean 0.5
+    WarningCapture capture;
+    Scene scene = withMaterials(
+        b, {{{"pbrMetallicRoughness", pbr(0, 0.5)},
+             {"extensions",
+              {{"KHR_materials_clearcoat", {{"clearcoatFactor", 0.8}, {"clearcoatRoughnessFactor", 0.1}}}}}},
+            {{"name", "mapped"},
+             {"pbrMetallicRoughness", pbr(1, 0.5)},
+             {"extensions",
+              {{"KHR_materials_clearcoat",
+                {{"clearcoatFactor", 1.0},
+                 {"clearcoatRoughnessFactor", 0.4},
+                 {"clearcoatTexture", {{"index", map}}},
+                 {"clearcoatRoughnessTexture", {{"index", map}}},
+                 {"clearcoatNormalTexture", {{"index", map}}}}}}}},
+            {{"name", "glass"},
+             {"pbrMetallicRoughness", pbr(0, 0)},
+             {"extensions",
+              {{"KHR_materials_transmission", {{"transmissionFactor", 1.0}}},
+               {"KHR_materials_clearcoat", {{"clearcoatFactor", 1.0}}}}}},
+            {{"pbrMetallicRoughness", pbr(0, 0.5)}}});
+    EXPECT_FLOAT_EQ(materialOfQuad(scene, 0).clearcoat, 0.8f);
+    EXPECT_FLOAT_EQ(materialOfQuad(scene, 0).clearcoatRoughness, 0.1f);
+    EXPECT_NEAR(materialOfQuad(scene, 1).clearcoat, 0.6f, 1e-3f);
+    EXPECT_NEAR(materialOfQuad(scene, 1).clearcoatRoughness, 0.2f, 1e-3f);
+    EXPECT_EQ(materialOfQuad(scene, 2).clearcoat, 0.0f);
+    EXPECT_EQ(materialOfQuad(scene, 3).clearcoat, 0.0f);
+    EXPECT_CONTAINS_ALL(
+        test::joined(capture),
+        "KHR_materials_clearcoat textures: the factors are multiplied by their means (material "
+        "'mapped'",
+        "clearcoatNormalTexture ignored", "KHR_materials_clearcoat on glass ignored (material 'glass'");
+}
+
 // KHR_materials_volume on glass: sigma_a = -ln(attenuationColor) / attenuationDistance per unit length;
 // none for a thin-walled material (thicknessFactor 0, the default), an infinite distance (the default),
 // or a material that is not glass.

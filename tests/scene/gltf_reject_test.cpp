@@ -72,8 +72,8 @@ TEST(GltfReject, RequiredExtensionsWeDoNotImplement) {
                         "bad.gltf: buffers compressed with EXT_meshopt_compression are not supported");
     EXPECT_CONTAINS_ALL(requiring("KHR_mesh_quantization"),
                         "bad.gltf: quantized vertex data (KHR_mesh_quantization) is not supported");
-    EXPECT_CONTAINS_ALL(requiring("KHR_materials_clearcoat"),
-                        "bad.gltf: the file requires the extension KHR_materials_clearcoat, which fragpath "
+    EXPECT_CONTAINS_ALL(requiring("KHR_materials_iridescence"),
+                        "bad.gltf: the file requires the extension KHR_materials_iridescence, which fragpath "
                         "does not implement");
     // A Draco primitive the file does not declare as required still cannot be drawn.
     std::string message = rejectedEdit([](json& d) {
