@@ -305,21 +305,10 @@ TEST(GltfMaterialExtensions, SmoothClearcoatMirrorsWithItsFresnelReflectance) {
 TEST(GltfMaterialExtensions, ClearcoatRendersTheSameWithEveryIntegrator) {
     ensureGlContext();
     for (float coatRoughness : {0.2f, 0.0f}) {
-        Scene scene;
-        scene.source = "clearcoated sphere";
-        scene.materials = {clearcoated(0.0f, 0.5f, 1.0f, coatRoughness), diffuseMaterial(0.5f),
-                           lampMaterial(glm::vec3(20.0f))};
-        scene.materials[0].diffuse = glm::vec3(0.6f, 0.1f, 0.1f);
-        appendSphere(scene, glm::vec3(0.0f, 1.0f, 0.0f), 1.0f, 16, 32, 0, true);
-        appendQuad(scene, glm::vec3(-4.0f, 0.0f, -4.0f), glm::vec3(-4.0f, 0.0f, 4.0f),
-                   glm::vec3(4.0f, 0.0f, 4.0f), glm::vec3(4.0f, 0.0f, -4.0f), 1);
-        appendQuad(scene, glm::vec3(-0.5f, 4.0f, -0.5f), glm::vec3(0.5f, 4.0f, -0.5f),
-                   glm::vec3(0.5f, 4.0f, 0.5f), glm::vec3(-0.5f, 4.0f, 0.5f), 2);
-        scene.environment.color = glm::vec3(0.3f, 0.4f, 0.5f);
-        Camera camera;
-        camera.eye = glm::vec3(0.5f, 2.5f, -5.0f);
-        camera.target = glm::vec3(0.0f, 0.8f, 0.0f);
-        camera.fovY = 40.0f;
+        Material coated = clearcoated(0.0f, 0.5f, 1.0f, coatRoughness);
+        coated.diffuse = glm::vec3(0.6f, 0.1f, 0.1f);
+        Scene scene = sphereOnAFloor(coated);
+        const Camera camera = sphereCamera();
         Renderer renderer(scene, testShaders());
         const std::string what = "coat roughness " + std::to_string(coatRoughness);
         Accumulation nee = renderScene(renderer, camera, Integrator::Nee, 32, 256, 4, 11);

@@ -99,30 +99,6 @@ TEST(MetallicRoughness, EndpointsAreTheConductorAndThePlasticBitForBit) {
             }
 }
 
-// A glossy sphere on a diffuse floor, under a constant sky and a small lamp: every integrator's
-// estimator meets the material (light samples, BSDF samples, bdpt's joins and its delta test).
-Scene sphereOnAFloor(const Material& material) {
-    Scene scene;
-    scene.source = "sphere on a floor";
-    scene.materials = {material, diffuseMaterial(0.5f), lampMaterial(glm::vec3(30.0f))};
-    appendSphere(scene, glm::vec3(0.0f, 1.0f, 0.0f), 1.0f, 16, 32, 0, true);
-    appendQuad(scene, glm::vec3(-4.0f, 0.0f, -4.0f), glm::vec3(-4.0f, 0.0f, 4.0f),
-               glm::vec3(4.0f, 0.0f, 4.0f), glm::vec3(4.0f, 0.0f, -4.0f), 1);
-    // The lamp faces down (its front face, counter-clockwise from below).
-    appendQuad(scene, glm::vec3(-0.5f, 4.0f, -0.5f), glm::vec3(0.5f, 4.0f, -0.5f),
-               glm::vec3(0.5f, 4.0f, 0.5f), glm::vec3(-0.5f, 4.0f, 0.5f), 2);
-    scene.environment.color = glm::vec3(0.3f, 0.4f, 0.5f);
-    return scene;
-}
-
-Camera sphereCamera() {
-    Camera c;
-    c.eye = glm::vec3(0.5f, 2.5f, -5.0f);
-    c.target = glm::vec3(0.0f, 0.8f, 0.0f);
-    c.fovY = 40.0f;
-    return c;
-}
-
 // Whole renders: a metallic-roughness material at metallic 1 (0) renders the same image, bit for bit,
 // as the conductor (plastic) it equals, with every integrator. Plain, the packer packs it as that model
 // (shaderMaterial: fewer shader lines); with a metallic-roughness map of white texels (factors times 1)
