@@ -29,6 +29,7 @@ ShaderDefines layoutDefines(bool images) {
                              {"MATERIAL_EXTRA_TEXEL", s(kMaterialExtraTexel)},
                              {"MATERIAL_VOLUME_TEXEL", s(kMaterialVolumeTexel)},
                              {"MATERIAL_CLEARCOAT_TEXEL", s(kMaterialClearcoatTexel)},
+                             {"MATERIAL_SHEEN_TEXEL", s(kMaterialSheenTexel)},
                              {"TANGENT_TEXELS", s(kTangentTexels)},
                              {"DIFFUSE_MAP_BIT", s(kDiffuseMapBit)},
                              {"ROUGHNESS_MAP_BIT", s(kRoughnessMapBit)},

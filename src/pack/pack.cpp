@@ -35,11 +35,13 @@ std::array<glm::vec4, layout::kMaterialTexels> packMaterial(const Material& m) {
                       index(m.normalTexture)),
             glm::vec4(index(m.alphaTexture), m.alpha, m.alphaCutoff, float(m.alphaMode)),
             glm::vec4(m.metallic, m.normalScale, index(m.specularTexture), 0.0f),
-            glm::vec4(m.absorption, 0.0f), glm::vec4(m.clearcoat, m.clearcoatRoughness, 0.0f, 0.0f)};
+            glm::vec4(m.absorption, 0.0f), glm::vec4(m.clearcoat, m.clearcoatRoughness, 0.0f, 0.0f),
+            glm::vec4(m.sheenColor, m.sheenRoughness)};
 }
 
 Material shaderMaterial(const Material& m) {
-    if (m.type != MaterialType::MetallicRoughness || m.metallicRoughnessTexture >= 0 || m.clearcoat > 0.0f)
+    if (m.type != MaterialType::MetallicRoughness || m.metallicRoughnessTexture >= 0 || m.clearcoat > 0.0f ||
+        m.sheenColor != glm::vec3(0.0f))
         return m;
     Material out = m;
     if (m.metallic >= 1.0f && m.diffuseTexture < 0) {

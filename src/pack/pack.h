@@ -51,7 +51,7 @@ std::array<glm::vec4, layout::kMaterialTexels> packMaterial(const Material& m);
 // metallic-roughness or base colour map is exactly the conductor with F0 = its base colour, and at
 // metallic 0 without a metallic-roughness map exactly the plastic with a white coat (bsdf.glsl runs the
 // same functions; tests/render/metallic_roughness_test.cpp), which compile less shader code (not with a
-// clearcoat, which only the blend's code has): such
+// clearcoat or a sheen, which only the blend's code has): such
 // materials are packed as those, so that a scene of plain metals (MTL Pm 1, glTF metallicFactor 1)
 // renders as fast as with the Conductor type. Every other material is returned as it is. The renderer
 // takes MATERIAL_TYPES from these types.

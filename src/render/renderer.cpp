@@ -95,6 +95,7 @@ Renderer::Renderer(const Scene& scene, ShaderLibrary shaders, const BvhBuildOpti
         absorbingGlass_ =
             absorbingGlass_ || (m.type == MaterialType::Dielectric && m.absorption != glm::vec3(0.0f));
         clearcoat_ = clearcoat_ || shaderMaterial(m).clearcoat > 0.0f;
+        sheen_ = sheen_ || shaderMaterial(m).sheenColor != glm::vec3(0.0f);
     }
     glGenVertexArrays(1, &vertexArray_);
 }
@@ -133,6 +134,7 @@ std::unique_ptr<Program> Renderer::compile(Integrator integrator, const char* fr
     defines.emplace_back("MATERIAL_VOLUME", absorbingGlass_ ? "1" : "0");
     // Only scenes with a clearcoat (KHR_materials_clearcoat) compile its lobe (bsdf.glsl).
     defines.emplace_back("MATERIAL_CLEARCOAT", clearcoat_ ? "1" : "0");
+    defines.emplace_back("MATERIAL_SHEEN", sheen_ ? "1" : "0");  // and a sheen (KHR_materials_sheen)
     defines.emplace_back("ENVIRONMENT_MAP", environmentTextures_ ? "1" : "0");
     if (environmentTextures_) {
         glm::ivec2 size = environmentTextures_->size();

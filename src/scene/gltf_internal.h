@@ -187,6 +187,9 @@ struct PbrFactors {
     bool unlit = false;  // KHR_materials_unlit
     // KHR_materials_clearcoat: clearcoatFactor, clearcoatRoughnessFactor (times their textures' means).
     float clearcoat = 0.0f, clearcoatRoughness = 0.0f;
+    // KHR_materials_sheen: sheenColorFactor, sheenRoughnessFactor (times their textures' means).
+    glm::vec3 sheenColor{0.0f};
+    float sheenRoughness = 0.0f;
     AlphaMode alphaMode = AlphaMode::Opaque;
     float alphaCutoff = 0.5f;
     bool doubleSided = false;  // glTF's default

@@ -107,6 +107,8 @@ Material materialFromPbr(const PbrFactors& f, const std::string& name) {
     m.specularColor = clamp01(f.specularColor);
     m.clearcoat = std::clamp(f.clearcoat, 0.0f, 1.0f);
     m.clearcoatRoughness = std::clamp(f.clearcoatRoughness, 0.0f, 1.0f);
+    m.sheenColor = clamp01(f.sheenColor);
+    m.sheenRoughness = std::clamp(f.sheenRoughness, 0.0f, 1.0f);
     return m;
 }
 
@@ -136,6 +138,9 @@ PbrFactors factorsOf(const tinygltf::Material& g) {
     const char* kClearcoat = "KHR_materials_clearcoat";
     f.clearcoat = float(extensionNumber(g.extensions, kClearcoat, "clearcoatFactor", 0.0));
     f.clearcoatRoughness = float(extensionNumber(g.extensions, kClearcoat, "clearcoatRoughnessFactor", 0.0));
+    const char* kSheen = "KHR_materials_sheen";
+    f.sheenColor = extensionColor(g.extensions, kSheen, "sheenColorFactor", glm::vec3(0.0f));
+    f.sheenRoughness = float(extensionNumber(g.extensions, kSheen, "sheenRoughnessFactor", 0.0));
     f.alphaMode = g.alphaMode == "MASK"    ? AlphaMode::Mask
                   : g.alphaMode == "BLEND" ? AlphaMode::Blend
                                            : AlphaMode::Opaque;
@@ -417,6 +422,19 @@ struct MaterialTable::Impl {
             tally("clearcoatNormalTexture ignored (the coat takes the surface's normal)", material);
     }
 
+    // KHR_materials_sheen's textures (RGB, sRGB: the colour; A: the roughness) as their means, which
+    // multiply the factors.
+    void sheenTextures(const tinygltf::Material& g, int material, PbrFactors* f) {
+        const char* kSheen = "KHR_materials_sheen";
+        if (!g.extensions.count(kSheen)) return;
+        const Loaded* colour = extensionImage(g, material, kSheen, "sheenColorTexture");
+        const Loaded* roughness = extensionImage(g, material, kSheen, "sheenRoughnessTexture");
+        if (colour) f->sheenColor *= meanLinearColor(colour->image);
+        if (roughness) f->sheenRoughness *= meanCodes(roughness->image).a;
+        if (colour || roughness)
+            tally("KHR_materials_sheen textures: the factors are multiplied by their means", material);
+    }
+
     Resolved& resolve(int material) {
         if (material >= int(model.materials.size()))
             throw Error(name + ": materials[" + std::to_string(material) + "] does not exist");
@@ -429,6 +447,7 @@ struct MaterialTable::Impl {
             tally("KHR_materials_ior outside [1, 4] clamped into it", material);
         if (g) specularTextures(*g, material, &f);
         if (g) clearcoatTextures(*g, material, &f);
+        if (g) sheenTextures(*g, material, &f);
         // The transmission map decides the model, so only its mean can count.
         int transmissionTexture =
             g ? extensionTexture(g->extensions, "KHR_materials_transmission", "transmissionTexture") : -1;
@@ -443,6 +462,8 @@ struct MaterialTable::Impl {
         if (g) addMaps(*g, material, &m, &r);
         if (m.type == MaterialType::Dielectric && f.clearcoat > 0.0f)
             tally("KHR_materials_clearcoat on glass ignored", material);
+        if (m.type == MaterialType::Dielectric && f.sheenColor != glm::vec3(0.0f))
+            tally("KHR_materials_sheen on glass ignored", material);
         if (m.type == MaterialType::Dielectric && f.specularColor != glm::vec3(1.0f))
             tally("KHR_materials_specular on glass ignored (its reflectance is the exact Fresnel of its ior)",
                   material);

@@ -563,6 +563,13 @@ class Schema {
             textureInfo(*e, p, "thicknessTexture");
         }
         object(*extensions, ep, "KHR_materials_unlit");  // an object, of no properties
+        if (const json* e = object(*extensions, ep, "KHR_materials_sheen")) {
+            std::string p = join(ep, "KHR_materials_sheen");
+            numbers(*e, p, "sheenColorFactor", 3, 0.0, 1.0);
+            number(*e, p, "sheenRoughnessFactor", 0.0, 1.0);
+            textureInfo(*e, p, "sheenColorTexture");
+            textureInfo(*e, p, "sheenRoughnessTexture");
+        }
         if (const json* e = object(*extensions, ep, "KHR_materials_clearcoat")) {
             std::string p = join(ep, "KHR_materials_clearcoat");
             number(*e, p, "clearcoatFactor", 0.0, 1.0);
@@ -604,8 +611,8 @@ bool isImplementedExtension(const std::string& extension) {
     return extension == "KHR_materials_emissive_strength" || extension == "KHR_materials_transmission" ||
            extension == "KHR_materials_ior" || extension == "KHR_materials_specular" ||
            extension == "KHR_materials_unlit" || extension == "KHR_materials_volume" ||
-           extension == "KHR_materials_clearcoat" || extension == "KHR_lights_punctual" ||
-           extension == "KHR_texture_transform";
+           extension == "KHR_materials_clearcoat" || extension == "KHR_materials_sheen" ||
+           extension == "KHR_lights_punctual" || extension == "KHR_texture_transform";
 }
 
 std::string percentDecoded(const std::string& uri) {

@@ -64,6 +64,10 @@ struct Material {
     // and by its Fresnel reflectance; what it lets through reaches the model below (bsdf.glsl).
     float clearcoat = 0.0f;
     float clearcoatRoughness = 0.0f;
+    // MetallicRoughness, glTF KHR_materials_sheen: a sheen lobe (the Charlie distribution of Estevez &
+    // Kulla 2017) of this colour (0: none) and roughness over the base, which it dims by what it reflects.
+    glm::vec3 sheenColor{0.0f};
+    float sheenRoughness = 0.0f;
 
     // Coverage, for every type (glTF baseColorFactor.a and alphaMode/alphaCutoff; MTL d and map_d).
     float alpha = 1.0f;  // in [0, 1]

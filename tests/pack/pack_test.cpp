@@ -277,6 +277,8 @@ TEST(PackScene, MaterialTexelsFollowTheLayout) {
     m.absorption = glm::vec3(0.1f, 0.2f, 0.3f);     // KHR_materials_volume (read for glass only)
     m.clearcoat = 0.6f;                             // KHR_materials_clearcoat
     m.clearcoatRoughness = 0.2f;
+    m.sheenColor = glm::vec3(0.25f, 0.5f, 0.75f);  // KHR_materials_sheen
+    m.sheenRoughness = 0.4f;
     m.transmission = glm::vec3(0.4f);
     m.roughness = 0.25f;
     m.ior = 1.4f;
@@ -304,6 +306,7 @@ TEST(PackScene, MaterialTexelsFollowTheLayout) {
     EXPECT_EQ(t[layout::kMaterialExtraTexel], glm::vec4(0.75f, 0.6f, 1.0f, 0.0f));
     EXPECT_EQ(t[layout::kMaterialVolumeTexel], glm::vec4(0.1f, 0.2f, 0.3f, 0.0f));
     EXPECT_EQ(t[layout::kMaterialClearcoatTexel], glm::vec4(0.6f, 0.2f, 0.0f, 0.0f));
+    EXPECT_EQ(t[layout::kMaterialSheenTexel], glm::vec4(0.25f, 0.5f, 0.75f, 0.4f));
     EXPECT_EQ(p.surfaceMaps, layout::kDiffuseMapBit | layout::kRoughnessMapBit | layout::kEmissionMapBit |
                                  layout::kNormalMapBit | layout::kAlphaMapBit | layout::kSpecularMapBit);
     EXPECT_TRUE(p.opacity);
@@ -329,6 +332,7 @@ TEST(PackScene, MaterialTexelsFollowTheLayout) {
     EXPECT_EQ(t[layout::kMaterialExtraTexel], glm::vec4(0.0f, 1.0f, -1.0f, 0.0f));
     EXPECT_EQ(t[layout::kMaterialVolumeTexel], glm::vec4(0.0f));
     EXPECT_EQ(t[layout::kMaterialClearcoatTexel], glm::vec4(0.0f));
+    EXPECT_EQ(t[layout::kMaterialSheenTexel], glm::vec4(0.0f));
     for (size_t i = 0; i < s.triangles.size(); ++i)
         EXPECT_EQ(p.triangles[i * layout::kTriangleTexels + 2].w, 0.0f);
 }
@@ -362,9 +366,10 @@ TEST(PackScene, MetallicRoughnessAtItsEndsIsPackedAsTheConductorOrThePlastic) {
     between.metallic = 0.5f;
     mapped.metallicRoughnessTexture = 2;
     texturedMetal.diffuseTexture = 1;
-    Material coated = metal;  // a clearcoat is only the blend's
+    Material coated = metal, sheened = metal;  // a clearcoat and a sheen are only the blend's
     coated.clearcoat = 0.5f;
-    for (const Material& other : {between, mapped, texturedMetal, coated})
+    sheened.sheenColor = glm::vec3(0.5f);
+    for (const Material& other : {between, mapped, texturedMetal, coated, sheened})
         EXPECT_EQ(shaderMaterial(other).type, MaterialType::MetallicRoughness);
     // And in the packed scene.
     Scene s = randomScene(10, 3);

@@ -4,10 +4,10 @@
 // - KHR_materials_volume: an absorbing glass cube of index 1 in a white furnace shows exactly the
 //   attenuation colour where the path inside is attenuationDistance long (Beer-Lambert).
 // - KHR_materials_specular: the blend with a tinted coat samples as its density says (chi-square).
-// - KHR_materials_clearcoat: the second GGX lobe on top, tested as every lobe is (bsdf_*_test.cpp):
-//   chi-square of its sampling, the sampled density is bsdfPdf, reciprocity, energy (a white furnace of
-//   directions: the albedo never exceeds 1), the smooth coat's mirror weight, and whole renders in
-//   which nee, bsdf and bdpt agree.
+// - KHR_materials_clearcoat and KHR_materials_sheen: the second GGX lobe and the Charlie sheen lobe on
+//   top, tested as every lobe is (bsdf_*_test.cpp): chi-square of their sampling, the sampled density
+//   is bsdfPdf, reciprocity, energy (a white furnace of directions: the albedo never exceeds 1), the
+//   smooth coat's mirror weight, and whole renders in which nee, bsdf and bdpt agree.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -182,8 +182,19 @@ Material clearcoated(float metallic, float roughness, float clearcoat, float cle
     return m;
 }
 
-std::vector<BsdfCase> clearcoatCases() {
-    return {{"coat 1 r=0.1 over m=0.5 r=0.4", clearcoated(0.5f, 0.4f, 1.0f, 0.1f), 1.5f},
+Material sheened(Material m, glm::vec3 colour, float roughness) {
+    m.sheenColor = colour;
+    m.sheenRoughness = roughness;
+    return m;
+}
+
+// The layered cases: clearcoats, sheens, and both.
+std::vector<BsdfCase> layeredCases() {
+    const glm::vec3 velvet(1.0f, 0.8f, 0.6f);
+    return {{"sheen r=0.5 over m=0 r=0.6", sheened(makeMetallicRoughness(0.0f, 0.6f), velvet, 0.5f), 1.5f},
+            {"sheen r=0.1 over smooth m=1", sheened(makeMetallicRoughness(1.0f, 0.0f), velvet, 0.1f), 1.5f},
+            {"sheen r=1 under coat r=0.2", sheened(clearcoated(0.5f, 0.5f, 1.0f, 0.2f), velvet, 1.0f), 1.5f},
+            {"coat 1 r=0.1 over m=0.5 r=0.4", clearcoated(0.5f, 0.4f, 1.0f, 0.1f), 1.5f},
             {"coat 0.7 r=0.3 over m=0 r=0.7", clearcoated(0.0f, 0.7f, 0.7f, 0.3f), 1.5f},
             {"smooth coat 1 over m=1 r=0.3", clearcoated(1.0f, 0.3f, 1.0f, 0.0f), 1.5f},
             {"coat 1 r=0.2 over smooth m=0", clearcoated(0.0f, 0.0f, 1.0f, 0.2f), 1.5f}};
@@ -191,10 +202,11 @@ std::vector<BsdfCase> clearcoatCases() {
 
 // Chi-square of the sampled directions against bsdfPdf (Bonferroni over the cases and angles), the
 // density's mass against the fraction of non-delta samples, and each sample's reported density against
-// bsdfPdf at its direction. The break-check: clearcoatedPdf without the coat's probability p fails it.
-TEST(GltfMaterialExtensions, ClearcoatSamplesAsItsDensitySays) {
+// bsdfPdf at its direction. The break-checks: clearcoatedPdf without the coat's probability p, or
+// sheenedPdf without the sheen's, fails it.
+TEST(GltfMaterialExtensions, LayersSampleAsTheirDensitySays) {
     BsdfProbe& probe = bsdfProbe();
-    const std::vector<BsdfCase> cases = clearcoatCases();
+    const std::vector<BsdfCase> cases = layeredCases();
     const double significance = 0.01 / double(cases.size() * incidentAngles().size());
     for (size_t c = 0; c < cases.size(); ++c) {
         probe.setMaterial(cases[c].material);
@@ -226,10 +238,10 @@ TEST(GltfMaterialExtensions, ClearcoatSamplesAsItsDensitySays) {
 // Helmholtz reciprocity, f(wo, wi) = f(wi, wo) (eval / cos(theta_i) both ways), on an even lattice of
 // pairs away from the horizon; and the albedo of a white base under a white coat, the mean sample
 // weight, is at most 1 (five standard errors) at every angle, grazing included.
-TEST(GltfMaterialExtensions, ClearcoatIsReciprocalAndConservesEnergy) {
+TEST(GltfMaterialExtensions, LayersAreReciprocalAndConserveEnergy) {
     BsdfProbe& probe = bsdfProbe();
     const std::vector<glm::vec3> lattice = sphereLattice(1024);
-    for (BsdfCase c : clearcoatCases()) {
+    for (BsdfCase c : layeredCases()) {
         probe.setMaterial(c.material);
         std::vector<EvalQuery> forward, backward;
         for (size_t k = 0; k < lattice.size(); ++k) {
@@ -252,6 +264,7 @@ TEST(GltfMaterialExtensions, ClearcoatIsReciprocalAndConservesEnergy) {
         EXPECT_GT(nonZero, int(f.size() / 4)) << c.name;
 
         c.material.diffuse = glm::vec3(1.0f);  // the worst case: white everywhere
+        if (c.material.sheenColor != glm::vec3(0.0f)) c.material.sheenColor = glm::vec3(1.0f);
         probe.setMaterial(c.material);
         std::vector<float> angles = incidentAngles();
         angles.push_back(89.0f);
@@ -298,19 +311,23 @@ TEST(GltfMaterialExtensions, SmoothClearcoatMirrorsWithItsFresnelReflectance) {
     }
 }
 
-// A clearcoated sphere on a floor under a lamp and a sky: nee (light and BSDF samples weighed by MIS),
-// bsdf (BSDF samples alone) and bdpt (every join) agree block by block, for a rough and a smooth coat.
-// What this catches beyond the probe: an integrator that treats the coat differently (a delta test that
-// misses the smooth coat, a bdpt vertex that loses the clearcoat), and whole-image MIS bias.
-TEST(GltfMaterialExtensions, ClearcoatRendersTheSameWithEveryIntegrator) {
+// A clearcoated or sheened sphere on a floor under a lamp and a sky: nee (light and BSDF samples weighed
+// by MIS), bsdf (BSDF samples alone) and bdpt (every join) agree block by block, for a rough and a smooth
+// coat and a sheen. What this catches beyond the probe: an integrator that treats a layer differently (a
+// delta test that misses the smooth coat, a bdpt vertex that loses the layer), and whole-image MIS bias.
+TEST(GltfMaterialExtensions, LayersRenderTheSameWithEveryIntegrator) {
     ensureGlContext();
-    for (float coatRoughness : {0.2f, 0.0f}) {
-        Material coated = clearcoated(0.0f, 0.5f, 1.0f, coatRoughness);
+    const std::pair<const char*, Material> materials[] = {
+        {"coat roughness 0.2", clearcoated(0.0f, 0.5f, 1.0f, 0.2f)},
+        {"smooth coat", clearcoated(0.0f, 0.5f, 1.0f, 0.0f)},
+        {"sheen", sheened(makeMetallicRoughness(0.0f, 0.5f), glm::vec3(0.2f, 0.3f, 0.9f), 0.4f)}};
+    for (const auto& [name, material] : materials) {
+        Material coated = material;
         coated.diffuse = glm::vec3(0.6f, 0.1f, 0.1f);
         Scene scene = sphereOnAFloor(coated);
         const Camera camera = sphereCamera();
         Renderer renderer(scene, testShaders());
-        const std::string what = "coat roughness " + std::to_string(coatRoughness);
+        const std::string what = name;
         Accumulation nee = renderScene(renderer, camera, Integrator::Nee, 32, 256, 4, 11);
         Accumulation bsdf = renderScene(renderer, camera, Integrator::Bsdf, 32, 256, 4, 12);
         Accumulation bdpt = renderScene(renderer, camera, Integrator::Bdpt, 32, 256, 4, 13);

@@ -273,6 +273,36 @@ TEST(GltfMaterial, ClearcoatFactorsAndTheirTexturesMeans) {
         "clearcoatNormalTexture ignored", "KHR_materials_clearcoat on glass ignored (material 'glass'");
 }
 
+// KHR_materials_sheen: the colour and roughness factors (times their textures' means: the linear RGB of
+// sheenColorTexture, A of sheenRoughnessTexture) on the metallic-roughness model.
+TEST(GltfMaterial, SheenFactorsAndTheirTexturesMeans) {
+    GltfBuilder b;
+    int map = addTexture(b, {255, 255, 255, 255, 0, 0, 0, 51}, 2, 1);  // RGB mean 0.5 (linear), A mean 0.6
+    WarningCapture capture;
+    Scene scene =
+        withMaterials(b, {{{"pbrMetallicRoughness", pbr(0, 0.5)},
+                           {"extensions",
+                            {{"KHR_materials_sheen",
+                              {{"sheenColorFactor", {1.0, 0.5, 0.25}}, {"sheenRoughnessFactor", 0.3}}}}}},
+                          {{"name", "mapped"},
+                           {"pbrMetallicRoughness", pbr(0, 0.5)},
+                           {"extensions",
+                            {{"KHR_materials_sheen",
+                              {{"sheenColorFactor", {1.0, 1.0, 1.0}},
+                               {"sheenRoughnessFactor", 1.0},
+                               {"sheenColorTexture", {{"index", map}}},
+                               {"sheenRoughnessTexture", {{"index", map}}}}}}}},
+                          {{"pbrMetallicRoughness", pbr(0, 0.5)}}});
+    EXPECT_EQ(materialOfQuad(scene, 0).sheenColor, glm::vec3(1.0f, 0.5f, 0.25f));
+    EXPECT_FLOAT_EQ(materialOfQuad(scene, 0).sheenRoughness, 0.3f);
+    for (int c = 0; c < 3; ++c) EXPECT_NEAR(materialOfQuad(scene, 1).sheenColor[c], 0.5f, 1e-3f) << c;
+    EXPECT_NEAR(materialOfQuad(scene, 1).sheenRoughness, 0.6f, 1e-3f);
+    EXPECT_EQ(materialOfQuad(scene, 2).sheenColor, glm::vec3(0.0f));
+    EXPECT_CONTAINS_ALL(
+        test::joined(capture),
+        "KHR_materials_sheen textures: the factors are multiplied by their means (material 'mapped'");
+}
+
 // KHR_materials_volume on glass: sigma_a = -ln(attenuationColor) / attenuationDistance per unit length;
 // none for a thin-walled material (thicknessFactor 0, the default), an infinite distance (the default),
 // or a material that is not glass.
