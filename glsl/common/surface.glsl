@@ -144,10 +144,34 @@ void applyDispersion(inout Surface s, inout vec3 beta) {
     s.eta = s.frontFace ? ior : 1.0 / ior;
 }
 
+// KHR_materials_volume: Beer-Lambert absorption inside a closed glass mesh. A ray that reaches the back
+// face of a Dielectric (front faces face out of a closed glass object, as for eta above) has travelled
+// `distance` inside it, so what the path carries over that segment is attenuated by exp(-sigma_a
+// distance) (scene.h, Material::absorption; the light subpaths of bdpt and the light pass alike). A
+// segment inside that ends on another surface (an object in the glass) is not attenuated. Only scenes
+// with an absorbing glass compile it (MATERIAL_VOLUME, set by the renderer).
+#ifndef MATERIAL_VOLUME
+#define MATERIAL_VOLUME 0
+#endif
+void absorbInside(Surface s, float distance, inout vec3 beta) {
+#if MATERIAL_VOLUME
+    if (s.frontFace || s.material.type != MATERIAL_DIELECTRIC) return;
+    vec3 sigma = materialTexel(s.materialIndex * MATERIAL_TEXELS + MATERIAL_VOLUME_TEXEL).rgb;
+    beta *= exp(-sigma * distance);
+#endif
+}
+
 vec3 toLocal(Surface s, vec3 v) { return vec3(dot(v, s.tangent), dot(v, s.bitangent), dot(v, s.shadingNormal)); }
 vec3 toWorld(Surface s, vec3 v) { return v.x * s.tangent + v.y * s.bitangent + v.z * s.shadingNormal; }
 
-vec3 emittedRadiance(Surface s) { return s.frontFace ? s.material.emission : vec3(0.0); }
+// What the surface sends back along the ray that hit it: an emitter's Ke from its front face, or an
+// unlit surface's base colour from either face (KHR_materials_unlit: not a light, only seen).
+vec3 emittedRadiance(Surface s) {
+#if HAS_TYPE(MATERIAL_UNLIT)
+    if (s.material.type == MATERIAL_UNLIT) return s.material.diffuse;
+#endif
+    return s.frontFace ? s.material.emission : vec3(0.0);
+}
 
 // Shading normals can put a direction on one side of the shading frame and the other side of the true
 // surface; such a direction cannot be followed (it would leak light through the surface).

@@ -179,6 +179,7 @@ vec3 radiance(Ray ray) {
         }
         Surface s = surfaceAt(ray, hit);
         dispersive = meetDispersion(s) || dispersive;
+        absorbInside(s, hit.t, beta);
         PathVertex z = PathVertex(s.position, s.geometricNormal, storedNormal(s), -ray.dir, beta, s.materialIndex,
                                   s.eta, 1.0, 0.0, false, dispersive, s.offset);
         // z_1's density is the camera's (its direction spread over the film), for strategy t = 1.

@@ -453,6 +453,7 @@ int traceLightSubpath(int maxDepth) {
         if (!traceClosest(ray, hit)) break;
         Surface s = surfaceAt(ray, hit);
         dispersive = meetDispersion(s) || dispersive;
+        absorbInside(s, hit.t, beta);
         PathVertex y = PathVertex(s.position, s.geometricNormal, storedNormal(s), -ray.dir, beta,
                                   s.materialIndex, s.eta, 0.0, 0.0, false, dispersive, s.offset);
         y.pdfFwd = toArea(pdfDir, gLight[count - 1].p, y);

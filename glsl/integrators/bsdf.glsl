@@ -14,6 +14,7 @@ vec3 radiance(Ray ray) {
         }
         Surface s = surfaceAt(ray, hit);
         applyDispersion(s, beta);
+        absorbInside(s, hit.t, beta);
         addLight(L, beta * emittedRadiance(s), depth);
         if (depth == uMaxDepth) break;
         BsdfSample bs;

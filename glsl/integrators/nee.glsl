@@ -60,11 +60,13 @@ bool extendPath(inout CameraPath p) {
     }
     Surface s = surfaceAt(ray, hit);
     applyDispersion(s, p.beta);
+    absorbInside(s, hit.t, p.beta);
     vec3 Le = emittedRadiance(s);
     // Whether the light pass sums this path, should it end on an emitter here.
     bool lightPassPath = p.causticCast && lightPassSums(p.causticSmooth, depth);
 #if CAUSTICS_LIGHT_TRACED
-    if (lightPassPath) Le = vec3(0.0);  // the light pass's
+    // the light pass's; an unlit surface is no light, which the light pass cannot start from
+    if (lightPassPath && s.material.type != MATERIAL_UNLIT) Le = vec3(0.0);
 #endif
 #ifdef NEE_ONLY_LIGHT_PASS_PATHS
     // Test only (tests/render/caustics_test.cpp): nothing but the paths the light pass sums, with at

@@ -52,7 +52,12 @@ float smallestRoughness(const Material& m, size_t textureCount, uint8_t mapSmall
 bool deltaLobeBelow(const Material& m, float smallest) {
     // Twice the threshold: the GPU's filtered value may round below the smallest texel, and a delta lobe
     // missed here would lose its caustics (the camera pass leaves them to the light pass).
-    return m.type != MaterialType::Diffuse && smallest < 2.0f * kSmoothRoughness;
+    if (m.type == MaterialType::Diffuse || m.type == MaterialType::Unlit) return false;
+    // A smooth clearcoat is a mirror whatever lies below it.
+    if (m.type == MaterialType::MetallicRoughness && m.clearcoat > 0.0f &&
+        m.clearcoatRoughness < 2.0f * kSmoothRoughness)
+        return true;
+    return smallest < 2.0f * kSmoothRoughness;
 }
 
 bool glossyCasterBelow(const Material& m, float smallest) {

@@ -62,10 +62,19 @@
 //                                            the rows of object-to-world and (0, 0, 0, 0). Triangles are
 //                                            stored once, in object space: the world's, then each
 //                                            mesh's, in leaf order. Rays enter an instance in its space.
-//  materials     RGBA32F    7 per material   (Kd.rgb, type) (Ke.rgb, roughness) (Ks.rgb, ior) (Tf.rgb, B)
+//  materials     RGBA32F   10 per material   (Kd.rgb, type) (Ke.rgb, roughness) (Ks.rgb, ior) (Tf.rgb, B)
 //                                            (diffuse map, metallic-roughness map, emission map, normal map)
 //                                            (alpha map, alpha, alpha cutoff, alpha mode)
 //                                            (metallic, normal scale, specular map, 0)
+//                                            (sigma_a.rgb, 0) (clearcoat, clearcoat roughness, 0, 0)
+//                                            (sheen colour.rgb, sheen roughness)
+//                                            Ks of a MetallicRoughness is its specularColor (the tint of
+//                                            its dielectric coat: KHR_materials_specular); sigma_a a
+//                                            Dielectric's absorption per unit length (KHR_materials_
+//                                            volume), read only when MATERIAL_VOLUME is 1; the
+//                                            clearcoat texel (KHR_materials_clearcoat) only when
+//                                            MATERIAL_CLEARCOAT is 1, the sheen texel
+//                                            (KHR_materials_sheen) only when MATERIAL_SHEEN is 1
 //                                            B: Cauchy coefficient in nm^2 of a dispersive glass, else 0
 //                                            (ior is then the index at 587.6 nm; scene/spectrum.h)
 //                                            type: fp::MaterialType as an exact float, alpha mode
@@ -157,11 +166,14 @@ struct ChildLink {
 // Throws fp::Error when the leaf cannot be encoded (first > kMaxLeafFirst, count > kMaxLeafCount).
 uint32_t encodeChild(const ChildLink& child);
 ChildLink decodeChild(uint32_t link);
-constexpr int kMaterialTexels = 7;
+constexpr int kMaterialTexels = 10;
 // The material texels the shaders address by name (the others are read together in fetchMaterial).
 constexpr int kMaterialMapsTexel = 4;
 constexpr int kMaterialAlphaTexel = 5;
 constexpr int kMaterialExtraTexel = 6;
+constexpr int kMaterialVolumeTexel = 7;
+constexpr int kMaterialClearcoatTexel = 8;
+constexpr int kMaterialSheenTexel = 9;
 // SURFACE_MAPS: one bit per kind of texture map some material has, so that a scene compiles only the
 // lookups it needs (glsl/common/textures.glsl).
 enum MapBit : int {

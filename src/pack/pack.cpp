@@ -27,14 +27,16 @@ size_t PackedScene::textureBytes() const {
 
 std::array<glm::vec4, layout::kMaterialTexels> packMaterial(const Material& m) {
     auto index = [](int32_t t) { return float(std::max(t, -1)); };
-    return {glm::vec4(m.diffuse, float(m.type)),
-            glm::vec4(m.emission, m.roughness),
-            glm::vec4(m.specular, m.ior),
+    return {glm::vec4(m.diffuse, float(m.type)), glm::vec4(m.emission, m.roughness),
+            // A metallic-roughness material has no Ks of its own: the slot holds its coat's tint.
+            glm::vec4(m.type == MaterialType::MetallicRoughness ? m.specularColor : m.specular, m.ior),
             glm::vec4(m.transmission, spectrum::cauchyFromAbbe(m.ior, m.abbeNumber).y),
             glm::vec4(index(m.diffuseTexture), index(m.metallicRoughnessTexture), index(m.emissionTexture),
                       index(m.normalTexture)),
             glm::vec4(index(m.alphaTexture), m.alpha, m.alphaCutoff, float(m.alphaMode)),
-            glm::vec4(m.metallic, m.normalScale, index(m.specularTexture), 0.0f)};
+            glm::vec4(m.metallic, m.normalScale, index(m.specularTexture), 0.0f),
+            glm::vec4(m.absorption, 0.0f), glm::vec4(m.clearcoat, m.clearcoatRoughness, 0.0f, 0.0f),
+            glm::vec4(m.sheenColor, m.sheenRoughness)};
 }
 
 bool hasVertexColors(const Scene& scene) {
@@ -44,7 +46,9 @@ bool hasVertexColors(const Scene& scene) {
 }
 
 Material shaderMaterial(const Material& m, bool vertexColors) {
-    if (m.type != MaterialType::MetallicRoughness || m.metallicRoughnessTexture >= 0) return m;
+    if (m.type != MaterialType::MetallicRoughness || m.metallicRoughnessTexture >= 0 || m.clearcoat > 0.0f ||
+        m.sheenColor != glm::vec3(0.0f))
+        return m;
     Material out = m;
     if (m.metallic >= 1.0f && m.diffuseTexture < 0 && !vertexColors) {
         out.type = MaterialType::Conductor;
@@ -52,7 +56,7 @@ Material shaderMaterial(const Material& m, bool vertexColors) {
         out.metallic = 0.0f;
     } else if (m.metallic <= 0.0f) {
         out.type = MaterialType::Plastic;
-        out.specular = glm::vec3(1.0f);
+        out.specular = m.specularColor;
         out.metallic = 0.0f;
     }
     return out;

@@ -53,7 +53,8 @@ std::array<glm::vec4, layout::kMaterialTexels> packMaterial(const Material& m);
 // The material as packScene packs it: a metallic-roughness material at metallic 1 without a
 // metallic-roughness or base colour map is exactly the conductor with F0 = its base colour, and at
 // metallic 0 without a metallic-roughness map exactly the plastic with a white coat (bsdf.glsl runs the
-// same functions; tests/render/metallic_roughness_test.cpp), which compile less shader code: such
+// same functions; tests/render/metallic_roughness_test.cpp), which compile less shader code (not with a
+// clearcoat or a sheen, which only the blend's code has): such
 // materials are packed as those, so that a scene of plain metals (MTL Pm 1, glTF metallicFactor 1)
 // renders as fast as with the Conductor type. Every other material is returned as it is, and so are
 // metals in a scene with vertex colours (`vertexColors`), which multiply the base colour, not the

@@ -102,8 +102,14 @@ Renderer::Renderer(const Scene& scene, ShaderLibrary shaders, const BvhBuildOpti
             environmentTextures_ = std::make_unique<EnvironmentTextures>(environment);
     }
     const bool vertexColors = hasVertexColors(scene);
-    for (const Material& m : scene.materials)
-        materialTypes_ |= 1u << uint32_t(shaderMaterial(m, vertexColors).type);
+    for (const Material& m : scene.materials) {
+        const Material shaded = shaderMaterial(m, vertexColors);
+        materialTypes_ |= 1u << uint32_t(shaded.type);
+        absorbingGlass_ =
+            absorbingGlass_ || (m.type == MaterialType::Dielectric && m.absorption != glm::vec3(0.0f));
+        clearcoat_ = clearcoat_ || shaded.clearcoat > 0.0f;
+        sheen_ = sheen_ || shaded.sheenColor != glm::vec3(0.0f);
+    }
     glGenVertexArrays(1, &vertexArray_);
 }
 
@@ -137,6 +143,11 @@ std::unique_ptr<Program> Renderer::compile(Integrator integrator, const char* fr
     defines.emplace_back("GLOSSY_CASTER_ROUGHNESS", std::to_string(kGlossyCasterRoughness));
     defines.emplace_back("GUIDES", settings_.guides ? "1" : "0");
     defines.emplace_back("MATERIAL_TYPES", std::to_string(materialTypes_));
+    // Only scenes with an absorbing glass (KHR_materials_volume) attenuate paths inside (surface.glsl).
+    defines.emplace_back("MATERIAL_VOLUME", absorbingGlass_ ? "1" : "0");
+    // Only scenes with a clearcoat (KHR_materials_clearcoat) compile its lobe (bsdf.glsl).
+    defines.emplace_back("MATERIAL_CLEARCOAT", clearcoat_ ? "1" : "0");
+    defines.emplace_back("MATERIAL_SHEEN", sheen_ ? "1" : "0");  // and a sheen (KHR_materials_sheen)
     defines.emplace_back("ENVIRONMENT_MAP", environmentTextures_ ? "1" : "0");
     if (environmentTextures_) {
         glm::ivec2 size = environmentTextures_->size();

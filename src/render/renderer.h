@@ -107,8 +107,11 @@ class Renderer {
     SceneStats stats_;
     glm::vec3 environmentColor_{0.0f};
     float environmentRotation_ = 0.0f;
-    uint32_t materialTypes_ = 0;                        // bit mask of the MaterialTypes in the scene
-    uint32_t lightCount_ = 0;                           // entries of the light-selection cdf (pack/layout.h)
+    uint32_t materialTypes_ = 0;   // bit mask of the MaterialTypes in the scene
+    bool absorbingGlass_ = false;  // some Dielectric absorbs (Material::absorption): MATERIAL_VOLUME
+    bool clearcoat_ = false;       // some metallic-roughness material has a clearcoat: MATERIAL_CLEARCOAT
+    bool sheen_ = false;           // some metallic-roughness material has a sheen: MATERIAL_SHEEN
+    uint32_t lightCount_ = 0;      // entries of the light-selection cdf (pack/layout.h)
     uint32_t lightTreeFirst_ = 0, lightTreeDepth_ = 0;  // the light tree (pack/light_tree.h); 0: none
     uint32_t punctualCount_ = 0;      // of them punctual lights: compile them in (PUNCTUAL_LIGHTS)
     uint32_t instanceNodeStart_ = 0;  // two-level BVH (INSTANCE_NODES_START); 0: one level

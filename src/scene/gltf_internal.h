@@ -244,13 +244,23 @@ struct PbrFactors {
     glm::vec3 emission{0.0f};   // emissiveFactor times KHR_materials_emissive_strength
     float transmission = 0.0f;  // KHR_materials_transmission, times its texture's mean
     std::optional<float> ior;   // KHR_materials_ior
+    // KHR_materials_specular: specularFactor * specularColorFactor (times their textures' means).
+    glm::vec3 specularColor{1.0f};
+    // KHR_materials_volume: -ln(attenuationColor) / attenuationDistance (0: no absorption).
+    glm::vec3 absorption{0.0f};
+    bool unlit = false;  // KHR_materials_unlit
+    // KHR_materials_clearcoat: clearcoatFactor, clearcoatRoughnessFactor (times their textures' means).
+    float clearcoat = 0.0f, clearcoatRoughness = 0.0f;
+    // KHR_materials_sheen: sheenColorFactor, sheenRoughnessFactor (times their textures' means).
+    glm::vec3 sheenColor{0.0f};
+    float sheenRoughness = 0.0f;
     AlphaMode alphaMode = AlphaMode::Opaque;
     float alphaCutoff = 0.5f;
     bool doubleSided = false;  // glTF's default
 };
 
-// The mapping rules of the README's glTF table: glass (Dielectric) where transmission is above 1/2,
-// else the metallic-roughness model; maps are added by MaterialTable.
+// The mapping rules of the README's glTF table: Unlit with KHR_materials_unlit, glass (Dielectric) where
+// transmission is above 1/2, else the metallic-roughness model; maps are added by MaterialTable.
 Material materialFromPbr(const PbrFactors& factors, const std::string& name);
 
 // Turns glTF materials into fragpath's, on demand: the first time a primitive uses a material, its

@@ -37,6 +37,40 @@ int extensionTexture(const tinygltf::ExtensionMap& extensions, const char* exten
     return info.Get("index").GetNumberAsInt();
 }
 
+// An RGB array an extension object holds, or `fallback` (also for an array that is not three numbers).
+glm::vec3 extensionColor(const tinygltf::ExtensionMap& extensions, const char* extension, const char* key,
+                         glm::vec3 fallback) {
+    auto it = extensions.find(extension);
+    if (it == extensions.end() || !it->second.IsObject() || !it->second.Has(key)) return fallback;
+    const tinygltf::Value& v = it->second.Get(key);
+    if (!v.IsArray() || v.ArrayLen() != 3) return fallback;
+    glm::vec3 c;
+    for (int i = 0; i < 3; ++i) {
+        if (!v.Get(i).IsNumber()) return fallback;
+        c[i] = float(v.Get(i).GetNumberAsDouble());
+    }
+    return c;
+}
+
+// KHR_materials_volume's absorption coefficient, sigma_a = -ln(attenuationColor) / attenuationDistance
+// per unit length (the extension's definition of Beer-Lambert attenuation), 0 without the extension,
+// with the default infinite distance, or for a thin-walled material (thicknessFactor 0, the default:
+// the extension's rule; any other thickness is a rasterizer's hint, which a path tracer that measures
+// the path inside has no use for). A channel of colour 0 absorbs everything: a large finite coefficient
+// (1e4 per unit) stands for it.
+glm::vec3 absorptionOf(const tinygltf::ExtensionMap& extensions) {
+    const char* kVolume = "KHR_materials_volume";
+    double distance = extensionNumber(extensions, kVolume, "attenuationDistance", HUGE_VAL);
+    double thickness = extensionNumber(extensions, kVolume, "thicknessFactor", 0.0);
+    if (!extensions.count(kVolume) || !(thickness > 0.0) || !(distance > 0.0) || !std::isfinite(distance))
+        return glm::vec3(0.0f);
+    glm::vec3 colour = clamp01(extensionColor(extensions, kVolume, "attenuationColor", glm::vec3(1.0f)));
+    glm::vec3 sigma;
+    for (int c = 0; c < 3; ++c)
+        sigma[c] = colour[c] > 0.0f ? float(-std::log(double(colour[c])) / distance) : 1e4f;
+    return sigma;
+}
+
 }  // namespace
 
 Material materialFromPbr(const PbrFactors& f, const std::string& name) {
@@ -49,6 +83,12 @@ Material materialFromPbr(const PbrFactors& f, const std::string& name) {
     m.alphaMode = f.alphaMode;
     m.alphaCutoff = f.alphaCutoff;
     m.doubleSided = f.doubleSided;
+    if (f.unlit) {
+        // KHR_materials_unlit: the base colour as seen, nothing else (not a light, so no emission).
+        m.type = MaterialType::Unlit;
+        m.emission = glm::vec3(0.0f);
+        return m;
+    }
     float ior = f.ior ? std::clamp(*f.ior, 1.0f, 4.0f) : 1.5f;
     if (f.transmission * (1.0f - std::clamp(f.metallic, 0.0f, 1.0f)) > 0.5f) {
         // KHR_materials_transmission with KHR_materials_ior: glass (refraction into the mesh's volume,
@@ -57,12 +97,19 @@ Material materialFromPbr(const PbrFactors& f, const std::string& name) {
         m.type = MaterialType::Dielectric;
         m.ior = ior;
         m.transmission = m.diffuse;
+        m.absorption = f.absorption;
         return m;
     }
     m.type = MaterialType::MetallicRoughness;
     m.metallic = std::clamp(f.metallic, 0.0f, 1.0f);
     // A coat of index 1 would reflect nothing: like MTL's Ni, only an index above 1 counts.
     m.ior = f.ior && *f.ior > 1.0f ? ior : 1.5f;
+    // A tint above 1 would reflect more than arrives at grazing angles, where the Fresnel factor is 1.
+    m.specularColor = clamp01(f.specularColor);
+    m.clearcoat = std::clamp(f.clearcoat, 0.0f, 1.0f);
+    m.clearcoatRoughness = std::clamp(f.clearcoatRoughness, 0.0f, 1.0f);
+    m.sheenColor = clamp01(f.sheenColor);
+    m.sheenRoughness = std::clamp(f.sheenRoughness, 0.0f, 1.0f);
     return m;
 }
 
@@ -84,6 +131,17 @@ PbrFactors factorsOf(const tinygltf::Material& g) {
         float(extensionNumber(g.extensions, "KHR_materials_transmission", "transmissionFactor", 0.0));
     if (g.extensions.count("KHR_materials_ior"))
         f.ior = float(extensionNumber(g.extensions, "KHR_materials_ior", "ior", 1.5));
+    const char* kSpecular = "KHR_materials_specular";
+    f.specularColor = float(extensionNumber(g.extensions, kSpecular, "specularFactor", 1.0)) *
+                      extensionColor(g.extensions, kSpecular, "specularColorFactor", glm::vec3(1.0f));
+    f.absorption = absorptionOf(g.extensions);
+    f.unlit = g.extensions.count("KHR_materials_unlit") > 0;
+    const char* kClearcoat = "KHR_materials_clearcoat";
+    f.clearcoat = float(extensionNumber(g.extensions, kClearcoat, "clearcoatFactor", 0.0));
+    f.clearcoatRoughness = float(extensionNumber(g.extensions, kClearcoat, "clearcoatRoughnessFactor", 0.0));
+    const char* kSheen = "KHR_materials_sheen";
+    f.sheenColor = extensionColor(g.extensions, kSheen, "sheenColorFactor", glm::vec3(0.0f));
+    f.sheenRoughness = float(extensionNumber(g.extensions, kSheen, "sheenRoughnessFactor", 0.0));
     f.alphaMode = g.alphaMode == "MASK"    ? AlphaMode::Mask
                   : g.alphaMode == "BLEND" ? AlphaMode::Blend
                                            : AlphaMode::Opaque;
@@ -348,6 +406,59 @@ struct MaterialTable::Impl {
         if (m->alphaMode != AlphaMode::Opaque && !broken) m->alphaTexture = base;
     }
 
+    // KHR_materials_specular's textures (A: the factor, RGB: the colour) as their means, which multiply
+    // the factors; a tint above 1 is clamped (materialFromPbr), and glass takes none of it.
+    // The image of the texture an extension of glTF material g names under `key`, if it has one that
+    // loaded (a broken one is warned about and ignored).
+    const Loaded* extensionImage(const tinygltf::Material& g, int material, const char* extension,
+                                 const char* key) {
+        int texture = extensionTexture(g.extensions, extension, key);
+        const Loaded* map = texture >= 0 ? image(texture, material, key, kIgnoreMap) : nullptr;
+        return map && map->problem.empty() ? map : nullptr;
+    }
+
+    void specularTextures(const tinygltf::Material& g, int material, PbrFactors* f) {
+        const char* kSpecular = "KHR_materials_specular";
+        if (!g.extensions.count(kSpecular)) return;
+        const Loaded* a = extensionImage(g, material, kSpecular, "specularTexture");
+        const Loaded* rgb = extensionImage(g, material, kSpecular, "specularColorTexture");
+        if (a) f->specularColor *= meanCodes(a->image).a;
+        if (rgb) f->specularColor *= meanLinearColor(rgb->image);
+        if (a || rgb)
+            tally("KHR_materials_specular textures: the factors are multiplied by their means", material);
+        if (glm::any(glm::greaterThan(f->specularColor, glm::vec3(1.0f))))
+            tally("KHR_materials_specular: specularFactor * specularColorFactor above 1 clamped to 1",
+                  material);
+    }
+
+    // KHR_materials_clearcoat's textures (R: the factor, G: the roughness) as their means, which
+    // multiply the factors; its normal map is not used (the coat takes the surface's shading normal).
+    void clearcoatTextures(const tinygltf::Material& g, int material, PbrFactors* f) {
+        const char* kClearcoat = "KHR_materials_clearcoat";
+        if (!g.extensions.count(kClearcoat)) return;
+        const Loaded* factor = extensionImage(g, material, kClearcoat, "clearcoatTexture");
+        const Loaded* roughness = extensionImage(g, material, kClearcoat, "clearcoatRoughnessTexture");
+        if (factor) f->clearcoat *= meanCodes(factor->image).r;
+        if (roughness) f->clearcoatRoughness *= meanCodes(roughness->image).g;
+        if (factor || roughness)
+            tally("KHR_materials_clearcoat textures: the factors are multiplied by their means", material);
+        if (extensionTexture(g.extensions, kClearcoat, "clearcoatNormalTexture") >= 0)
+            tally("clearcoatNormalTexture ignored (the coat takes the surface's normal)", material);
+    }
+
+    // KHR_materials_sheen's textures (RGB, sRGB: the colour; A: the roughness) as their means, which
+    // multiply the factors.
+    void sheenTextures(const tinygltf::Material& g, int material, PbrFactors* f) {
+        const char* kSheen = "KHR_materials_sheen";
+        if (!g.extensions.count(kSheen)) return;
+        const Loaded* colour = extensionImage(g, material, kSheen, "sheenColorTexture");
+        const Loaded* roughness = extensionImage(g, material, kSheen, "sheenRoughnessTexture");
+        if (colour) f->sheenColor *= meanLinearColor(colour->image);
+        if (roughness) f->sheenRoughness *= meanCodes(roughness->image).a;
+        if (colour || roughness)
+            tally("KHR_materials_sheen textures: the factors are multiplied by their means", material);
+    }
+
     Resolved& resolve(int material) {
         if (material >= int(model.materials.size()))
             throw Error(name + ": materials[" + std::to_string(material) + "] does not exist");
@@ -358,8 +469,9 @@ struct MaterialTable::Impl {
         PbrFactors f = g ? factorsOf(*g) : PbrFactors{};
         if (g && g->extensions.count("KHR_materials_ior") && (*f.ior == 0.0f || *f.ior > 4.0f))
             tally("KHR_materials_ior outside [1, 4] clamped into it", material);
-        if (g && g->extensions.count("KHR_materials_specular"))
-            tally("KHR_materials_specular not supported, ignored (the dielectric's F0 is 0.04)", material);
+        if (g) specularTextures(*g, material, &f);
+        if (g) clearcoatTextures(*g, material, &f);
+        if (g) sheenTextures(*g, material, &f);
         // The transmission map decides the model, so only its mean can count.
         int transmissionTexture =
             g ? extensionTexture(g->extensions, "KHR_materials_transmission", "transmissionTexture") : -1;
@@ -372,6 +484,16 @@ struct MaterialTable::Impl {
         }
         Material m = materialFromPbr(f, g ? (g->name.empty() ? label(material) : g->name) : "glTF default");
         if (g) addMaps(*g, material, &m, &r);
+        if (m.type == MaterialType::Dielectric && f.clearcoat > 0.0f)
+            tally("KHR_materials_clearcoat on glass ignored", material);
+        if (m.type == MaterialType::Dielectric && f.sheenColor != glm::vec3(0.0f))
+            tally("KHR_materials_sheen on glass ignored", material);
+        if (m.type == MaterialType::Dielectric && f.specularColor != glm::vec3(1.0f))
+            tally("KHR_materials_specular on glass ignored (its reflectance is the exact Fresnel of its ior)",
+                  material);
+        if (m.type == MaterialType::Unlit) {  // it shows its base colour (and alpha) and nothing else
+            m.metallicRoughnessTexture = m.emissionTexture = m.normalTexture = -1;
+        }
         if (material >= 0) {
             r.index = uint32_t(material);
             scene->materials[size_t(material)] = m;

@@ -561,6 +561,29 @@ class Schema {
             textureInfo(*e, p, "specularTexture");
             textureInfo(*e, p, "specularColorTexture");
         }
+        if (const json* e = object(*extensions, ep, "KHR_materials_volume")) {
+            std::string p = join(ep, "KHR_materials_volume");
+            number(*e, p, "thicknessFactor", 0.0, inf);
+            number(*e, p, "attenuationDistance", 0.0, inf, false, true);
+            numbers(*e, p, "attenuationColor", 3, 0.0, 1.0);
+            textureInfo(*e, p, "thicknessTexture");
+        }
+        object(*extensions, ep, "KHR_materials_unlit");  // an object, of no properties
+        if (const json* e = object(*extensions, ep, "KHR_materials_sheen")) {
+            std::string p = join(ep, "KHR_materials_sheen");
+            numbers(*e, p, "sheenColorFactor", 3, 0.0, 1.0);
+            number(*e, p, "sheenRoughnessFactor", 0.0, 1.0);
+            textureInfo(*e, p, "sheenColorTexture");
+            textureInfo(*e, p, "sheenRoughnessTexture");
+        }
+        if (const json* e = object(*extensions, ep, "KHR_materials_clearcoat")) {
+            std::string p = join(ep, "KHR_materials_clearcoat");
+            number(*e, p, "clearcoatFactor", 0.0, 1.0);
+            number(*e, p, "clearcoatRoughnessFactor", 0.0, 1.0);
+            for (const char* map :
+                 {"clearcoatTexture", "clearcoatRoughnessTexture", "clearcoatNormalTexture"})
+                textureInfo(*e, p, map);
+        }
     }
 
     void camera(const json& o, const std::string& path) const {
@@ -598,6 +621,8 @@ std::string shown(const json& value) {
 bool isImplementedExtension(const std::string& extension) {
     return extension == "KHR_materials_emissive_strength" || extension == "KHR_materials_transmission" ||
            extension == "KHR_materials_ior" || extension == "KHR_materials_specular" ||
+           extension == "KHR_materials_unlit" || extension == "KHR_materials_volume" ||
+           extension == "KHR_materials_clearcoat" || extension == "KHR_materials_sheen" ||
            extension == "KHR_lights_punctual" || extension == "KHR_texture_transform" ||
            extension == "KHR_mesh_quantization" || extension == "KHR_draco_mesh_compression" ||
            extension == "EXT_meshopt_compression";

@@ -25,8 +25,12 @@ enum class MaterialType : uint32_t {
     // glTF 2.0's metallic-roughness model (MTL Pm): metallic * Conductor(F0 = base colour) +
     // (1 - metallic) * Plastic(white coat of index ior over a Lambertian base colour), one roughness.
     MetallicRoughness = 4,
+    // glTF KHR_materials_unlit: the surface shows its base colour `diffuse` (times its map) as radiance
+    // leaving both faces and scatters nothing; not a light (nothing samples it), it is seen only by the
+    // rays that hit it, as Blender's importer makes it (emission = base colour, no scattering).
+    Unlit = 5,
 };
-constexpr uint32_t kMaterialTypeCount = 5;
+constexpr uint32_t kMaterialTypeCount = 6;
 
 // How a material's alpha (coverage) is used, as glTF 2.0's material.alphaMode: OPAQUE ignores it, MASK
 // shows the surface where alpha >= alphaCutoff and nothing elsewhere, BLEND shows it with probability
@@ -48,6 +52,22 @@ struct Material {
     // MetallicRoughness: glTF metallicFactor, MTL Pm, in [0, 1]. `diffuse` is the base colour
     // (glTF baseColorFactor.rgb), `roughness` glTF's roughnessFactor and `ior` the coat's index (1.5).
     float metallic = 0.0f;
+    // MetallicRoughness, glTF KHR_materials_specular: specularFactor * specularColorFactor, the tint of
+    // the dielectric coat's reflectance (its exact Fresnel at `ior` times this; 1: the plain model).
+    glm::vec3 specularColor{1.0f};
+    // Dielectric, glTF KHR_materials_volume: the absorption coefficient sigma_a per unit length of the
+    // medium inside the mesh, -ln(attenuationColor) / attenuationDistance; a path inside loses
+    // exp(-sigma_a d) over the distance d (Beer-Lambert). 0: clear glass.
+    glm::vec3 absorption{0.0f};
+    // MetallicRoughness, glTF KHR_materials_clearcoat: a second GGX lobe on top, a clear dielectric coat
+    // of index 1.5 with its own roughness (perceptual, as `roughness`), weighted by `clearcoat` in [0, 1]
+    // and by its Fresnel reflectance; what it lets through reaches the model below (bsdf.glsl).
+    float clearcoat = 0.0f;
+    float clearcoatRoughness = 0.0f;
+    // MetallicRoughness, glTF KHR_materials_sheen: a sheen lobe (the Charlie distribution of Estevez &
+    // Kulla 2017) of this colour (0: none) and roughness over the base, which it dims by what it reflects.
+    glm::vec3 sheenColor{0.0f};
+    float sheenRoughness = 0.0f;
 
     // Coverage, for every type (glTF baseColorFactor.a and alphaMode/alphaCutoff; MTL d and map_d).
     float alpha = 1.0f;  // in [0, 1]

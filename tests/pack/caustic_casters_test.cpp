@@ -41,6 +41,13 @@ TEST(CausticCasters, DeltaLobesAreSmoothSpecularLobesOrMappedOnesThatReachSmooth
     EXPECT_TRUE(hasDeltaLobe(material(MaterialType::Conductor, 0.005f), none));
     EXPECT_TRUE(hasDeltaLobe(material(MaterialType::Plastic, 0.0f), none));
     EXPECT_FALSE(hasDeltaLobe(material(MaterialType::MetallicRoughness, 0.5f), none));
+    EXPECT_FALSE(hasDeltaLobe(material(MaterialType::Unlit, 0.0f), none)) << "it scatters nothing";
+    // A smooth clearcoat (KHR_materials_clearcoat) is a mirror over any base; a rough one is not.
+    Material coated = material(MaterialType::MetallicRoughness, 0.5f);
+    coated.clearcoat = 0.5f;
+    EXPECT_TRUE(hasDeltaLobe(coated, none));
+    coated.clearcoatRoughness = 0.3f;
+    EXPECT_FALSE(hasDeltaLobe(coated, none));
     // A roughness map scales the factor by its G channel: by 128/255 everywhere it stays rough; one
     // texel of G 1 takes it to 0.004, smooth.
     Material mapped = material(MaterialType::MetallicRoughness, 1.0f);

@@ -272,7 +272,13 @@ TEST(PackScene, MaterialTexelsFollowTheLayout) {
     m.type = MaterialType::MetallicRoughness;
     m.diffuse = glm::vec3(0.1f, 0.2f, 0.3f);
     m.emission = glm::vec3(4.0f, 5.0f, 6.0f);
-    m.specular = glm::vec3(0.7f, 0.8f, 0.9f);
+    m.specular = glm::vec3(0.5f);  // not a metallic-roughness's: its slot holds specularColor
+    m.specularColor = glm::vec3(0.7f, 0.8f, 0.9f);  // KHR_materials_specular
+    m.absorption = glm::vec3(0.1f, 0.2f, 0.3f);     // KHR_materials_volume (read for glass only)
+    m.clearcoat = 0.6f;                             // KHR_materials_clearcoat
+    m.clearcoatRoughness = 0.2f;
+    m.sheenColor = glm::vec3(0.25f, 0.5f, 0.75f);  // KHR_materials_sheen
+    m.sheenRoughness = 0.4f;
     m.transmission = glm::vec3(0.4f);
     m.roughness = 0.25f;
     m.ior = 1.4f;
@@ -298,6 +304,9 @@ TEST(PackScene, MaterialTexelsFollowTheLayout) {
     EXPECT_EQ(t[layout::kMaterialMapsTexel], glm::vec4(-1.0f, 1.0f, 0.0f, 1.0f));
     EXPECT_EQ(t[layout::kMaterialAlphaTexel], glm::vec4(0.0f, 0.5f, 0.3f, 1.0f));  // mode 1: Mask
     EXPECT_EQ(t[layout::kMaterialExtraTexel], glm::vec4(0.75f, 0.6f, 1.0f, 0.0f));
+    EXPECT_EQ(t[layout::kMaterialVolumeTexel], glm::vec4(0.1f, 0.2f, 0.3f, 0.0f));
+    EXPECT_EQ(t[layout::kMaterialClearcoatTexel], glm::vec4(0.6f, 0.2f, 0.0f, 0.0f));
+    EXPECT_EQ(t[layout::kMaterialSheenTexel], glm::vec4(0.25f, 0.5f, 0.75f, 0.4f));
     EXPECT_EQ(p.surfaceMaps, layout::kDiffuseMapBit | layout::kRoughnessMapBit | layout::kEmissionMapBit |
                                  layout::kNormalMapBit | layout::kAlphaMapBit | layout::kSpecularMapBit);
     EXPECT_TRUE(p.opacity);
@@ -321,6 +330,9 @@ TEST(PackScene, MaterialTexelsFollowTheLayout) {
     EXPECT_EQ(t[layout::kMaterialMapsTexel], glm::vec4(-1.0f));
     EXPECT_EQ(t[layout::kMaterialAlphaTexel], glm::vec4(-1.0f, 1.0f, 0.5f, 0.0f));
     EXPECT_EQ(t[layout::kMaterialExtraTexel], glm::vec4(0.0f, 1.0f, -1.0f, 0.0f));
+    EXPECT_EQ(t[layout::kMaterialVolumeTexel], glm::vec4(0.0f));
+    EXPECT_EQ(t[layout::kMaterialClearcoatTexel], glm::vec4(0.0f));
+    EXPECT_EQ(t[layout::kMaterialSheenTexel], glm::vec4(0.0f));
     for (size_t i = 0; i < s.triangles.size(); ++i)
         EXPECT_EQ(p.triangles[i * layout::kTriangleTexels + 2].w, 0.0f);
 }
@@ -345,6 +357,8 @@ TEST(PackScene, MetallicRoughnessAtItsEndsIsPackedAsTheConductorOrThePlastic) {
     m = shaderMaterial(dielectric);
     EXPECT_EQ(m.type, MaterialType::Plastic);
     EXPECT_EQ(m.specular, glm::vec3(1.0f)) << "a white coat";
+    dielectric.specularColor = glm::vec3(0.5f, 0.25f, 1.0f);  // KHR_materials_specular
+    EXPECT_EQ(shaderMaterial(dielectric).specular, dielectric.specularColor) << "the coat tinted";
     EXPECT_EQ(m.diffuse, metal.diffuse);
     EXPECT_EQ(m.diffuseTexture, 1) << "the base colour map multiplies the plastic's Kd as it did the base";
     // Stays the blend: in between, a metallic-roughness map, a metal's base colour map.
@@ -352,7 +366,10 @@ TEST(PackScene, MetallicRoughnessAtItsEndsIsPackedAsTheConductorOrThePlastic) {
     between.metallic = 0.5f;
     mapped.metallicRoughnessTexture = 2;
     texturedMetal.diffuseTexture = 1;
-    for (const Material& other : {between, mapped, texturedMetal})
+    Material coated = metal, sheened = metal;  // a clearcoat and a sheen are only the blend's
+    coated.clearcoat = 0.5f;
+    sheened.sheenColor = glm::vec3(0.5f);
+    for (const Material& other : {between, mapped, texturedMetal, coated, sheened})
         EXPECT_EQ(shaderMaterial(other).type, MaterialType::MetallicRoughness);
     // And in the packed scene.
     Scene s = randomScene(10, 3);

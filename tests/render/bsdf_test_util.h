@@ -294,6 +294,9 @@ inline Material makeMaterial(MaterialType type, float roughness) {
             m.diffuse = glm::vec3(0.9f, 0.6f, 0.3f);  // the base colour: the metal's F0, the base's albedo
             m.metallic = 0.5f;
             break;
+        case MaterialType::Unlit:
+            m.diffuse = glm::vec3(0.9f, 0.6f, 0.3f);  // what it shows; it scatters nothing
+            break;
     }
     return m;
 }

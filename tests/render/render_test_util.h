@@ -371,6 +371,30 @@ inline ShaderLibrary shadersWithDefine(const std::string& file, const std::strin
     return ShaderLibrary(dir.string());
 }
 
+// A glossy sphere on a diffuse floor, under a constant sky and a small lamp: every integrator's
+// estimator meets the material (light samples, BSDF samples, bdpt's joins and its delta test).
+inline Scene sphereOnAFloor(const Material& material) {
+    Scene scene;
+    scene.source = "sphere on a floor";
+    scene.materials = {material, diffuseMaterial(0.5f), lampMaterial(glm::vec3(30.0f))};
+    appendSphere(scene, glm::vec3(0.0f, 1.0f, 0.0f), 1.0f, 16, 32, 0, true);
+    appendQuad(scene, glm::vec3(-4.0f, 0.0f, -4.0f), glm::vec3(-4.0f, 0.0f, 4.0f),
+               glm::vec3(4.0f, 0.0f, 4.0f), glm::vec3(4.0f, 0.0f, -4.0f), 1);
+    // The lamp faces down (its front face, counter-clockwise from below).
+    appendQuad(scene, glm::vec3(-0.5f, 4.0f, -0.5f), glm::vec3(0.5f, 4.0f, -0.5f),
+               glm::vec3(0.5f, 4.0f, 0.5f), glm::vec3(-0.5f, 4.0f, 0.5f), 2);
+    scene.environment.color = glm::vec3(0.3f, 0.4f, 0.5f);
+    return scene;
+}
+
+inline Camera sphereCamera() {
+    Camera c;
+    c.eye = glm::vec3(0.5f, 2.5f, -5.0f);
+    c.target = glm::vec3(0.0f, 0.8f, 0.0f);
+    c.fovY = 40.0f;
+    return c;
+}
+
 // A test suite sharing one renderer of the built-in Cornell box (BVH build and shader compile once).
 class CornellBoxSuite : public ::testing::Test {
   protected:

@@ -80,10 +80,8 @@ TEST(GltfMaterial, TheTablesRulesInOrder) {
              {"alphaMode", "BLEND"}},
         },
         true);
-    // KHR_materials_specular is the one thing here the model cannot hold.
-    ASSERT_EQ(capture.messages().size(), 1u) << test::joined(capture);
-    EXPECT_CONTAINS_ALL(capture.messages()[0], "KHR_materials_specular not supported, ignored",
-                        "(material materials[3])");
+    // The model holds all of it.
+    EXPECT_TRUE(capture.messages().empty()) << test::joined(capture);
 
     // No properties: glTF's defaults, metallic 1 and roughness 1, a white rough metal, single-sided.
     const Material& defaults = materialOfQuad(scene, 0);
@@ -105,6 +103,8 @@ TEST(GltfMaterial, TheTablesRulesInOrder) {
     EXPECT_EQ(dielectric.ior, 1.5f);
     EXPECT_EQ(materialOfQuad(scene, 1).roughness, 1.0f);
     EXPECT_EQ(materialOfQuad(scene, 3).type, MaterialType::MetallicRoughness);
+    EXPECT_EQ(materialOfQuad(scene, 3).specularColor, glm::vec3(0.0f));  // KHR_materials_specular
+    EXPECT_EQ(dielectric.specularColor, glm::vec3(1.0f));                // without it: the plain coat
     EXPECT_FLOAT_EQ(materialOfQuad(scene, 4).ior, 1.33f);
     const Material& metal = materialOfQuad(scene, 5);
     EXPECT_EQ(metal.type, MaterialType::MetallicRoughness);
@@ -179,6 +179,160 @@ TEST(GltfMaterial, IorOutsideTheModelsRangeIsClampedWithAWarning) {
 int addTexture(GltfBuilder& b, const std::vector<uint8_t>& rgba, int width, int height) {
     b.push("images", {{"uri", "data:image/png;base64," + test::base64(test::pngBytes(width, height, rgba))}});
     return b.push("textures", {{"source", int(b.doc["images"].size()) - 1}});
+}
+
+// KHR_materials_unlit: the base colour shown as it is, not a light (no emission, whatever the file says),
+// its alpha kept; the maps of lighting (metallic-roughness, emission, normals) dropped.
+TEST(GltfMaterial, UnlitShowsItsBaseColourAndIsNoLight) {
+    GltfBuilder b;
+    b.doc["extensionsUsed"] = {"KHR_materials_unlit"};  // implemented: no "ignoring extensions" warning
+    WarningCapture capture;
+    Scene scene =
+        withMaterials(b, {{{"pbrMetallicRoughness", pbr(1, 0.2, {{"baseColorFactor", {1, 0.5, 0, 0.5}}})},
+                           {"emissiveFactor", {1.0, 1.0, 1.0}},
+                           {"alphaMode", "BLEND"},
+                           {"extensions", {{"KHR_materials_unlit", json::object()}}}}});
+    const Material& unlit = materialOfQuad(scene, 0);
+    EXPECT_EQ(unlit.type, MaterialType::Unlit);
+    EXPECT_EQ(unlit.diffuse, glm::vec3(1.0f, 0.5f, 0.0f));
+    EXPECT_FALSE(unlit.isEmissive());
+    EXPECT_EQ(unlit.alpha, 0.5f);
+    EXPECT_EQ(unlit.alphaMode, AlphaMode::Blend);
+    EXPECT_TRUE(capture.messages().empty()) << test::joined(capture);
+}
+
+// KHR_materials_specular: specularFactor * specularColorFactor tints the coat, clamped to 1 with a
+// warning; its textures' means multiply the factors (A of specularTexture, the linear RGB of
+// specularColorTexture), with a warning that says so.
+TEST(GltfMaterial, SpecularFactorsTintTheCoat) {
+    GltfBuilder b;
+    int alpha = addTexture(b, {0, 0, 0, 255, 0, 0, 0, 51}, 2, 1);          // A: mean (1 + 0.2) / 2 = 0.6
+    int colour = addTexture(b, {255, 255, 255, 255, 0, 0, 0, 255}, 2, 1);  // RGB: mean 0.5 (linear)
+    WarningCapture capture;
+    Scene scene = withMaterials(
+        b,
+        {{{"pbrMetallicRoughness", pbr(0, 0.5)},
+          {"extensions",
+           {{"KHR_materials_specular",
+             {{"specularFactor", 0.5}, {"specularColorFactor", {1.0, 0.5, 0.25}}}}}}},
+         {{"name", "bright"},
+          {"pbrMetallicRoughness", pbr(0, 0.5)},
+          {"extensions", {{"KHR_materials_specular", {{"specularColorFactor", {2.0, 0.5, 0.5}}}}}}},
+         {{"name", "mapped"},
+          {"pbrMetallicRoughness", pbr(0, 0.5)},
+          {"extensions",
+           {{"KHR_materials_specular",
+             {{"specularTexture", {{"index", alpha}}}, {"specularColorTexture", {{"index", colour}}}}}}}}});
+    EXPECT_EQ(materialOfQuad(scene, 0).specularColor, glm::vec3(0.5f, 0.25f, 0.125f));
+    EXPECT_EQ(materialOfQuad(scene, 1).specularColor, glm::vec3(1.0f, 0.5f, 0.5f));
+    glm::vec3 mapped = materialOfQuad(scene, 2).specularColor;
+    for (int c = 0; c < 3; ++c) EXPECT_NEAR(mapped[c], 0.6f * 0.5f, 1e-3f) << c;
+    std::string all = test::joined(capture);
+    EXPECT_CONTAINS_ALL(
+        all, "specularFactor * specularColorFactor above 1 clamped to 1 (material 'bright'",
+        "KHR_materials_specular textures: the factors are multiplied by their means (material "
+        "'mapped'");
+}
+
+// KHR_materials_clearcoat: the factor and the coat's roughness (times their textures' means: R of
+// clearcoatTexture, G of clearcoatRoughnessTexture), on the metallic-roughness model; its normal map is
+// warned about, and so is a clearcoat on glass, which has none.
+TEST(GltfMaterial, ClearcoatFactorsAndTheirTexturesMeans) {
+    GltfBuilder b;
+    int map = addTexture(b, {255, 255, 0, 255, 51, 0, 0, 255}, 2, 1);  // R mean 0.6, G mean 0.5
+    WarningCapture capture;
+    Scene scene = withMaterials(
+        b, {{{"pbrMetallicRoughness", pbr(0, 0.5)},
+             {"extensions",
+              {{"KHR_materials_clearcoat", {{"clearcoatFactor", 0.8}, {"clearcoatRoughnessFactor", 0.1}}}}}},
+            {{"name", "mapped"},
+             {"pbrMetallicRoughness", pbr(1, 0.5)},
+             {"extensions",
+              {{"KHR_materials_clearcoat",
+                {{"clearcoatFactor", 1.0},
+                 {"clearcoatRoughnessFactor", 0.4},
+                 {"clearcoatTexture", {{"index", map}}},
+                 {"clearcoatRoughnessTexture", {{"index", map}}},
+                 {"clearcoatNormalTexture", {{"index", map}}}}}}}},
+            {{"name", "glass"},
+             {"pbrMetallicRoughness", pbr(0, 0)},
+             {"extensions",
+              {{"KHR_materials_transmission", {{"transmissionFactor", 1.0}}},
+               {"KHR_materials_clearcoat", {{"clearcoatFactor", 1.0}}}}}},
+            {{"pbrMetallicRoughness", pbr(0, 0.5)}}});
+    EXPECT_FLOAT_EQ(materialOfQuad(scene, 0).clearcoat, 0.8f);
+    EXPECT_FLOAT_EQ(materialOfQuad(scene, 0).clearcoatRoughness, 0.1f);
+    EXPECT_NEAR(materialOfQuad(scene, 1).clearcoat, 0.6f, 1e-3f);
+    EXPECT_NEAR(materialOfQuad(scene, 1).clearcoatRoughness, 0.2f, 1e-3f);
+    EXPECT_EQ(materialOfQuad(scene, 2).clearcoat, 0.0f);
+    EXPECT_EQ(materialOfQuad(scene, 3).clearcoat, 0.0f);
+    EXPECT_CONTAINS_ALL(
+        test::joined(capture),
+        "KHR_materials_clearcoat textures: the factors are multiplied by their means (material "
+        "'mapped'",
+        "clearcoatNormalTexture ignored", "KHR_materials_clearcoat on glass ignored (material 'glass'");
+}
+
+// KHR_materials_sheen: the colour and roughness factors (times their textures' means: the linear RGB of
+// sheenColorTexture, A of sheenRoughnessTexture) on the metallic-roughness model.
+TEST(GltfMaterial, SheenFactorsAndTheirTexturesMeans) {
+    GltfBuilder b;
+    int map = addTexture(b, {255, 255, 255, 255, 0, 0, 0, 51}, 2, 1);  // RGB mean 0.5 (linear), A mean 0.6
+    WarningCapture capture;
+    Scene scene =
+        withMaterials(b, {{{"pbrMetallicRoughness", pbr(0, 0.5)},
+                           {"extensions",
+                            {{"KHR_materials_sheen",
+                              {{"sheenColorFactor", {1.0, 0.5, 0.25}}, {"sheenRoughnessFactor", 0.3}}}}}},
+                          {{"name", "mapped"},
+                           {"pbrMetallicRoughness", pbr(0, 0.5)},
+                           {"extensions",
+                            {{"KHR_materials_sheen",
+                              {{"sheenColorFactor", {1.0, 1.0, 1.0}},
+                               {"sheenRoughnessFactor", 1.0},
+                               {"sheenColorTexture", {{"index", map}}},
+                               {"sheenRoughnessTexture", {{"index", map}}}}}}}},
+                          {{"pbrMetallicRoughness", pbr(0, 0.5)}}});
+    EXPECT_EQ(materialOfQuad(scene, 0).sheenColor, glm::vec3(1.0f, 0.5f, 0.25f));
+    EXPECT_FLOAT_EQ(materialOfQuad(scene, 0).sheenRoughness, 0.3f);
+    for (int c = 0; c < 3; ++c) EXPECT_NEAR(materialOfQuad(scene, 1).sheenColor[c], 0.5f, 1e-3f) << c;
+    EXPECT_NEAR(materialOfQuad(scene, 1).sheenRoughness, 0.6f, 1e-3f);
+    EXPECT_EQ(materialOfQuad(scene, 2).sheenColor, glm::vec3(0.0f));
+    EXPECT_CONTAINS_ALL(
+        test::joined(capture),
+        "KHR_materials_sheen textures: the factors are multiplied by their means (material 'mapped'");
+}
+
+// KHR_materials_volume on glass: sigma_a = -ln(attenuationColor) / attenuationDistance per unit length;
+// none for a thin-walled material (thicknessFactor 0, the default), an infinite distance (the default),
+// or a material that is not glass.
+TEST(GltfMaterial, VolumeAttenuationIsTheAbsorptionCoefficient) {
+    GltfBuilder b;
+    auto glass = [](json volume) {
+        return json{{"pbrMetallicRoughness", pbr(0, 0)},
+                    {"extensions",
+                     {{"KHR_materials_transmission", {{"transmissionFactor", 1.0}}},
+                      {"KHR_materials_volume", volume}}}};
+    };
+    json tinted = {
+        {"thicknessFactor", 1.0}, {"attenuationColor", {0.5, 0.25, 1.0}}, {"attenuationDistance", 2.0}};
+    json opaque = {{"pbrMetallicRoughness", pbr(0, 0.5)}, {"extensions", {{"KHR_materials_volume", tinted}}}};
+    Scene scene = withMaterials(
+        b,
+        {glass(tinted), glass({{"attenuationColor", {0.5, 0.5, 0.5}}, {"attenuationDistance", 2.0}}),
+         glass({{"thicknessFactor", 1.0}, {"attenuationColor", {0.5, 0.5, 0.5}}}),
+         glass(
+             {{"thicknessFactor", 1.0}, {"attenuationColor", {0.0, 1.0, 1.0}}, {"attenuationDistance", 1.0}}),
+         opaque});
+    const Material& absorbing = materialOfQuad(scene, 0);
+    EXPECT_EQ(absorbing.type, MaterialType::Dielectric);
+    EXPECT_FLOAT_EQ(absorbing.absorption.r, std::log(2.0f) / 2.0f);
+    EXPECT_FLOAT_EQ(absorbing.absorption.g, std::log(4.0f) / 2.0f);
+    EXPECT_EQ(absorbing.absorption.b, 0.0f);
+    EXPECT_EQ(materialOfQuad(scene, 1).absorption, glm::vec3(0.0f));  // thin-walled
+    EXPECT_EQ(materialOfQuad(scene, 2).absorption, glm::vec3(0.0f));  // attenuationDistance infinite
+    EXPECT_EQ(materialOfQuad(scene, 3).absorption, glm::vec3(1e4f, 0.0f, 0.0f));  // black: absorbs all
+    EXPECT_EQ(materialOfQuad(scene, 4).absorption, glm::vec3(0.0f));              // not glass
 }
 
 // Every map becomes the model's texture of that kind; the base colour texture's alpha is the coverage

@@ -69,8 +69,8 @@ TEST(GltfReject, RequiredExtensionsWeDoNotImplement) {
     EXPECT_CONTAINS_ALL(requiring("KHR_meshopt_compression"),
                         "bad.gltf: buffers compressed with KHR_meshopt_compression are not supported (only "
                         "EXT_meshopt_compression is");
-    EXPECT_CONTAINS_ALL(requiring("KHR_materials_clearcoat"),
-                        "bad.gltf: the file requires the extension KHR_materials_clearcoat, which fragpath "
+    EXPECT_CONTAINS_ALL(requiring("KHR_materials_iridescence"),
+                        "bad.gltf: the file requires the extension KHR_materials_iridescence, which fragpath "
                         "does not implement");
     // A Draco primitive is decoded whether or not the file declares the extension (its data is checked:
     // tests/scene/gltf_compressed_test.cpp).
@@ -120,6 +120,18 @@ TEST(GltfReject, SchemaErrorsNameTheProperty) {
             d["materials"] = {{{"pbrMetallicRoughness", {{"baseColorFactor", {1, 1, 2, 1}}}}}};
         }),
         "materials[0].pbrMetallicRoughness.baseColorFactor[2]: must be in [0.0, 1.0], got 2");
+    EXPECT_CONTAINS_ALL(
+        rejectedEdit([](json& d) {
+            d["materials"] = {{{"extensions", {{"KHR_materials_volume", {{"attenuationDistance", 0}}}}}}};
+        }),
+        "materials[0].extensions.KHR_materials_volume.attenuationDistance: must be in (0.0, "
+        "infinity), got 0");
+    EXPECT_CONTAINS_ALL(
+        rejectedEdit([](json& d) {
+            d["materials"] = {
+                {{"extensions", {{"KHR_materials_volume", {{"attenuationColor", {1, -1, 1}}}}}}}};
+        }),
+        "materials[0].extensions.KHR_materials_volume.attenuationColor[1]: must be in [0.0, 1.0]");
     EXPECT_CONTAINS_ALL(
         rejectedEdit([](json& d) {
             d["cameras"] = {{{"type", "perspective"}, {"perspective", {{"yfov", 0}, {"znear", 1}}}}};
