@@ -366,6 +366,8 @@ TEST(GltfMeshopt, BadStreamsAreErrorsNamingTheView) {
     EXPECT_CONTAINS_ALL(edited([&](json& d) { ext(d, 0)["buffer"] = 1; }),
                         "bufferViews[0].extensions.EXT_meshopt_compression.buffer: buffers[1] has no uri, so "
                         "holds no compressed data");
+    EXPECT_CONTAINS_ALL(edited([&](json& d) { ext(d, 0).erase("mode"); }),
+                        "bufferViews[0].extensions.EXT_meshopt_compression: missing \"mode\"");
     EXPECT_CONTAINS_ALL(edited([&](json& d) { ext(d, 0).erase("count"); }),
                         "bufferViews[0].extensions.EXT_meshopt_compression: missing \"count\"");
     EXPECT_CONTAINS_ALL(edited([&](json& d) { ext(d, 0)["byteLength"] = 2; }),
