@@ -69,27 +69,6 @@ const char* typeName(int type) {
     }
 }
 
-int componentCount(int type) {
-    switch (type) {
-        case TINYGLTF_TYPE_SCALAR:
-            return 1;
-        case TINYGLTF_TYPE_VEC2:
-            return 2;
-        case TINYGLTF_TYPE_VEC3:
-            return 3;
-        case TINYGLTF_TYPE_VEC4:
-            return 4;
-        case TINYGLTF_TYPE_MAT2:
-            return 4;
-        case TINYGLTF_TYPE_MAT3:
-            return 9;
-        case TINYGLTF_TYPE_MAT4:
-            return 16;
-        default:
-            return 0;
-    }
-}
-
 // A BYTE, UNSIGNED_BYTE, SHORT, UNSIGNED_SHORT or UNSIGNED_INT component's value.
 int64_t integer(const unsigned char* p, int componentType) {
     switch (componentType) {
@@ -137,6 +116,27 @@ const tinygltf::BufferView& checkedView(const tinygltf::Model& model, int view, 
 }
 
 }  // namespace
+
+int componentCount(int type) {
+    switch (type) {
+        case TINYGLTF_TYPE_SCALAR:
+            return 1;
+        case TINYGLTF_TYPE_VEC2:
+            return 2;
+        case TINYGLTF_TYPE_VEC3:
+            return 3;
+        case TINYGLTF_TYPE_VEC4:
+            return 4;
+        case TINYGLTF_TYPE_MAT2:
+            return 4;
+        case TINYGLTF_TYPE_MAT3:
+            return 9;
+        case TINYGLTF_TYPE_MAT4:
+            return 16;
+        default:
+            return 0;
+    }
+}
 
 AccessorData::AccessorData(const tinygltf::Model& model, int accessor, const std::string& role,
                            const std::string& name) {

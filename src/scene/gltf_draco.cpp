@@ -13,21 +13,6 @@ namespace {
 
 constexpr const char* kExtension = "KHR_draco_mesh_compression";
 
-int componentCount(int type) {
-    switch (type) {
-        case TINYGLTF_TYPE_SCALAR:
-            return 1;
-        case TINYGLTF_TYPE_VEC2:
-            return 2;
-        case TINYGLTF_TYPE_VEC3:
-            return 3;
-        case TINYGLTF_TYPE_VEC4:
-            return 4;
-        default:
-            return 0;  // matrices are not vertex attributes
-    }
-}
-
 // The new buffer the decoded arrays go to, with a view and an accessor each.
 class DecodedArrays {
   public:

@@ -127,6 +127,9 @@ void decodeDracoPrimitives(tinygltf::Model* model, const std::map<std::pair<size
 
 // ---- gltf_accessor.cpp
 
+// The number of components of an accessor type (TINYGLTF_TYPE_*): 1 to 4, 4, 9 or 16; 0 if unknown.
+int componentCount(int type);
+
 // An accessor's elements, after checking that all of them lie inside its buffer view and buffer.
 class AccessorData {
   public:

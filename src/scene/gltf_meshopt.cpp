@@ -37,10 +37,14 @@ uint64_t integer(const json& extension, const char* key, uint64_t lo, const std:
     return it->get<uint64_t>();
 }
 
+// A string property; required when there is no fallback.
 std::string word(const json& extension, const char* key, const char* fallback, const std::string& path,
                  const std::string& name) {
     auto it = extension.find(key);
-    if (it == extension.end()) return fallback;
+    if (it == extension.end()) {
+        if (!fallback) throw Error(name + ": " + path + ": missing \"" + key + "\"");
+        return fallback;
+    }
     if (!it->is_string())
         throw Error(name + ": " + path + "." + key + ": must be a string, got " + shown(*it));
     return it->get<std::string>();
@@ -92,7 +96,7 @@ std::vector<MeshoptView> meshoptViews(const json& root, const Container& contain
         m.byteLength = integer(*extension, "byteLength", 1, path, true, 0, name);
         m.byteStride = integer(*extension, "byteStride", 1, path, true, 0, name);
         m.count = integer(*extension, "count", 1, path, true, 0, name);
-        m.mode = word(*extension, "mode", "", path, name).substr(0, 40);  // quoted in messages
+        m.mode = word(*extension, "mode", nullptr, path, name).substr(0, 40);  // quoted in messages
         m.filter = word(*extension, "filter", "NONE", path, name).substr(0, 40);
         uint64_t bufferLength = buffers[buffer].at("byteLength").get<uint64_t>();
         if (m.byteOffset > bufferLength || m.byteLength > bufferLength - m.byteOffset)

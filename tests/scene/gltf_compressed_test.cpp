@@ -148,6 +148,12 @@ std::string rejected(const std::string& file, const std::string& bytes) {
     return test::errorOf([&] { loadScene(path); });
 }
 
+// Lists the extensions as used and required, as files using compression must.
+void requireExtensions(test::GltfBuilder& b, const std::vector<std::string>& extensions) {
+    b.doc["extensionsUsed"] = extensions;
+    b.doc["extensionsRequired"] = extensions;
+}
+
 // The grid as a plain glTF: float attributes, UNSIGNED_SHORT indices.
 test::GltfBuilder plainGrid(const Grid& g) {
     test::GltfBuilder b;
@@ -193,8 +199,7 @@ test::GltfBuilder quantizedGrid(const Grid& g) {
     b.mesh(json::array({{{"attributes", attributes}, {"indices", b.indices16(indices)}}}));
     b.node({{"mesh", 0}, {"scale", {0.001, 0.001, 0.001}}, {"translation", {-1, -1, -1}}});
     b.scene({0});
-    b.doc["extensionsUsed"] = {"KHR_mesh_quantization"};
-    b.doc["extensionsRequired"] = {"KHR_mesh_quantization"};
+    requireExtensions(b, {"KHR_mesh_quantization"});
     return b;
 }
 
@@ -243,8 +248,7 @@ struct MeshoptFile {
 
     // `glb`: buffers[0] is the BIN chunk; else a data URI.
     std::string bytes(bool glb) {
-        b.doc["extensionsUsed"] = {"EXT_meshopt_compression", "KHR_mesh_quantization"};
-        b.doc["extensionsRequired"] = b.doc["extensionsUsed"];
+        requireExtensions(b, {"EXT_meshopt_compression", "KHR_mesh_quantization"});
         json data = {{"byteLength", b.bin.size()}};
         if (!glb) data["uri"] = "data:application/octet-stream;base64," + test::base64(b.bin);
         json fallback = {{"byteLength", fallbackSize},
@@ -362,6 +366,8 @@ TEST(GltfMeshopt, BadStreamsAreErrorsNamingTheView) {
     EXPECT_CONTAINS_ALL(edited([&](json& d) { ext(d, 0)["buffer"] = 1; }),
                         "bufferViews[0].extensions.EXT_meshopt_compression.buffer: buffers[1] has no uri, so "
                         "holds no compressed data");
+    EXPECT_CONTAINS_ALL(edited([&](json& d) { ext(d, 0).erase("mode"); }),
+                        "bufferViews[0].extensions.EXT_meshopt_compression: missing \"mode\"");
     EXPECT_CONTAINS_ALL(edited([&](json& d) { ext(d, 0).erase("count"); }),
                         "bufferViews[0].extensions.EXT_meshopt_compression: missing \"count\"");
     EXPECT_CONTAINS_ALL(edited([&](json& d) { ext(d, 0)["byteLength"] = 2; }),
@@ -436,8 +442,7 @@ test::GltfBuilder dracoFile(const std::string& stream) {
                          {"extensions", {{"KHR_draco_mesh_compression", extension}}}}}));
     b.node({{"mesh", 0}});
     b.scene({0});
-    b.doc["extensionsUsed"] = {"KHR_draco_mesh_compression"};
-    b.doc["extensionsRequired"] = {"KHR_draco_mesh_compression"};
+    requireExtensions(b, {"KHR_draco_mesh_compression"});
     return b;
 }
 
