@@ -199,6 +199,14 @@ SceneGraph walkScene(const tinygltf::Model& model, const std::string& name);
 
 // The node's own transform: its matrix, or translation * rotation * scale.
 glm::dmat4 localTransform(const tinygltf::Node& node);
+// The matrix of a translation, a unit quaternion (x, y, z, w; normalized if it is not) and a scale,
+// applied scale first, as glTF composes a node's TRS.
+glm::dmat4 trsTransform(const glm::dvec3& translation, glm::dvec4 rotation, const glm::dvec3& scale);
+// EXT_mesh_gpu_instancing: the transform of each instance of node `node`'s mesh, in the node's space
+// (T * R * S from its TRANSLATION, ROTATION and SCALE accessors); empty without the extension. Throws
+// fp::Error for attributes of other types, different counts or non-finite values.
+std::vector<glm::dmat4> gpuInstanceTransforms(const tinygltf::Model& model, int node,
+                                              const std::string& name);
 
 // The camera a perspective glTF camera on a node with world transform `world` gives: at the node's
 // origin, looking along its -z with +y up, yfov in degrees; the target is on the view axis at the depth

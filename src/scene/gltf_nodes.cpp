@@ -1,6 +1,7 @@
 // The glTF node forest: checks, world transforms, the camera (gltf_internal.h).
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 #include <glm/gtc/type_ptr.hpp>
 
@@ -71,24 +72,82 @@ std::vector<int> parents(const tinygltf::Model& model, const std::string& name) 
 
 }  // namespace
 
+glm::dmat4 trsTransform(const glm::dvec3& translation, glm::dvec4 rotation, const glm::dvec3& scale) {
+    glm::dmat4 t(1.0), r(1.0);
+    t[3] = glm::dvec4(translation, 1.0);
+    // The unit quaternion (x, y, z, w) as a rotation matrix (m[column][row]).
+    double length = glm::length(rotation);
+    if (length != 1.0) rotation /= length;
+    double x = rotation.x, y = rotation.y, z = rotation.z, w = rotation.w;
+    r[0] = glm::dvec4(1 - 2 * (y * y + z * z), 2 * (x * y + z * w), 2 * (x * z - y * w), 0);
+    r[1] = glm::dvec4(2 * (x * y - z * w), 1 - 2 * (x * x + z * z), 2 * (y * z + x * w), 0);
+    r[2] = glm::dvec4(2 * (x * z + y * w), 2 * (y * z - x * w), 1 - 2 * (x * x + y * y), 0);
+    return t * r * glm::scale(glm::dmat4(1.0), scale);
+}
+
 glm::dmat4 localTransform(const tinygltf::Node& node) {
     if (node.matrix.size() == 16) return glm::make_mat4(node.matrix.data());  // column-major, as glm
-    glm::dmat4 t(1.0), r(1.0), s(1.0);
+    glm::dvec3 t(0.0), s(1.0);
+    glm::dvec4 q(0.0, 0.0, 0.0, 1.0);
     if (node.translation.size() == 3)
-        t[3] = glm::dvec4(node.translation[0], node.translation[1], node.translation[2], 1.0);
-    if (node.rotation.size() == 4) {
-        // The unit quaternion (x, y, z, w) as a rotation matrix (m[column][row]).
-        glm::dvec4 q(node.rotation[0], node.rotation[1], node.rotation[2], node.rotation[3]);
-        double length = glm::length(q);
-        if (length != 1.0) q /= length;
-        double x = q.x, y = q.y, z = q.z, w = q.w;
-        r[0] = glm::dvec4(1 - 2 * (y * y + z * z), 2 * (x * y + z * w), 2 * (x * z - y * w), 0);
-        r[1] = glm::dvec4(2 * (x * y - z * w), 1 - 2 * (x * x + z * z), 2 * (y * z + x * w), 0);
-        r[2] = glm::dvec4(2 * (x * z + y * w), 2 * (y * z - x * w), 1 - 2 * (x * x + y * y), 0);
+        t = glm::dvec3(node.translation[0], node.translation[1], node.translation[2]);
+    if (node.rotation.size() == 4)
+        q = glm::dvec4(node.rotation[0], node.rotation[1], node.rotation[2], node.rotation[3]);
+    if (node.scale.size() == 3) s = glm::dvec3(node.scale[0], node.scale[1], node.scale[2]);
+    return trsTransform(t, q, s);
+}
+
+std::vector<glm::dmat4> gpuInstanceTransforms(const tinygltf::Model& model, int node,
+                                              const std::string& name) {
+    auto it = model.nodes[size_t(node)].extensions.find("EXT_mesh_gpu_instancing");
+    if (it == model.nodes[size_t(node)].extensions.end()) return {};
+    const std::string where = nodeName(node) + ".extensions.EXT_mesh_gpu_instancing";
+    if (!it->second.IsObject() || !it->second.Has("attributes") || !it->second.Get("attributes").IsObject())
+        throw Error(name + ": " + where + " names none of TRANSLATION, ROTATION and SCALE in its attributes");
+    const tinygltf::Value& attributes = it->second.Get("attributes");
+    // The extension's three attributes, each optional; every one present has one element per instance.
+    struct Attribute {
+        const char* key;
+        int type;
+        std::optional<AccessorData> data;
+    } trs[3] = {{"TRANSLATION", TINYGLTF_TYPE_VEC3, {}},
+                {"ROTATION", TINYGLTF_TYPE_VEC4, {}},
+                {"SCALE", TINYGLTF_TYPE_VEC3, {}}};
+    std::optional<size_t> count;
+    for (Attribute& a : trs) {
+        if (!attributes.Has(a.key)) continue;
+        const tinygltf::Value& index = attributes.Get(a.key);
+        if (!index.IsInt())
+            throw Error(name + ": " + where + ".attributes." + a.key + " must be an accessor index");
+        a.data.emplace(model, index.GetNumberAsInt(), std::string(a.key) + " of " + where, name);
+        // The extension's component types: floats, and for ROTATION normalized BYTE or SHORT too.
+        if (a.type == TINYGLTF_TYPE_VEC4)
+            a.data->requireQuantized(a.type, {TINYGLTF_COMPONENT_TYPE_BYTE, TINYGLTF_COMPONENT_TYPE_SHORT},
+                                     {}, "VEC4 of FLOAT, or of normalized BYTE or SHORT");
+        else
+            a.data->require(a.type, {TINYGLTF_COMPONENT_TYPE_FLOAT}, false, "VEC3 of FLOAT");
+        if (count && *count != a.data->count())
+            throw Error(name + ": " + where + "'s attributes hold different numbers of instances (" +
+                        std::to_string(*count) + " and " + std::to_string(a.data->count()) + ")");
+        count = a.data->count();
     }
-    if (node.scale.size() == 3)
-        s = glm::scale(glm::dmat4(1.0), glm::dvec3(node.scale[0], node.scale[1], node.scale[2]));
-    return t * r * s;
+    if (!count)
+        throw Error(name + ": " + where + " names none of TRANSLATION, ROTATION and SCALE in its attributes");
+    std::vector<glm::dmat4> transforms(*count);
+    for (size_t i = 0; i < *count; ++i) {
+        auto vec = [&](const Attribute& a, glm::dvec4 fallback) {
+            if (!a.data) return fallback;
+            for (int c = 0; c < a.data->components(); ++c) fallback[c] = a.data->real(i, c);
+            return fallback;
+        };
+        glm::dvec4 t = vec(trs[0], glm::dvec4(0.0)), q = vec(trs[1], glm::dvec4(0.0, 0.0, 0.0, 1.0)),
+                   s = vec(trs[2], glm::dvec4(1.0));
+        transforms[i] = trsTransform(glm::dvec3(t), q, glm::dvec3(s));
+        if (!finite(transforms[i]))
+            throw Error(name + ": " + where + " instance " + std::to_string(i) +
+                        " has a non-finite transform");
+    }
+    return transforms;
 }
 
 SceneGraph walkScene(const tinygltf::Model& model, const std::string& name) {
@@ -128,7 +187,14 @@ SceneGraph walkScene(const tinygltf::Model& model, const std::string& name) {
         glm::dmat4 world = parentWorld * localTransform(node);
         if (!finite(world))
             throw Error(name + ": the transform of " + nodeName(i) + " (with its ancestors') is not finite");
-        if (node.mesh >= 0) graph.instances.push_back({i, node.mesh, world});
+        if (node.mesh >= 0) {
+            // EXT_mesh_gpu_instancing: the mesh once for each instance, each transform in the node's
+            // space (the node's own placement is then not drawn by itself).
+            std::vector<glm::dmat4> instances = gpuInstanceTransforms(model, i, name);
+            if (instances.empty()) graph.instances.push_back({i, node.mesh, world});
+            for (const glm::dmat4& instance : instances)
+                graph.instances.push_back({i, node.mesh, world * instance});
+        }
         if (node.camera >= 0 && size_t(node.camera) < model.cameras.size()) {
             if (model.cameras[size_t(node.camera)].type == "perspective") {
                 if (graph.cameraNode < 0) {

@@ -625,7 +625,7 @@ bool isImplementedExtension(const std::string& extension) {
            extension == "KHR_materials_clearcoat" || extension == "KHR_materials_sheen" ||
            extension == "KHR_lights_punctual" || extension == "KHR_texture_transform" ||
            extension == "KHR_mesh_quantization" || extension == "KHR_draco_mesh_compression" ||
-           extension == "EXT_meshopt_compression";
+           extension == "EXT_meshopt_compression" || extension == "EXT_mesh_gpu_instancing";
 }
 
 std::string percentDecoded(const std::string& uri) {
