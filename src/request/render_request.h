@@ -14,6 +14,7 @@
 
 #include "image/image.h"
 #include "request/args.h"
+#include "request/default_light.h"
 #include "scene/lighting.h"
 #include "scene/scene.h"
 #include "settings/render_settings.h"
@@ -40,7 +41,7 @@ constexpr unsigned kAllRequestOptions = (1u << 11) - 1;
 // What --environment asks for.
 enum class EnvironmentChoice {
     Default,   // the scene's environment; a scene without light of its own gets the default light
-               // (scene/lighting.h lightIfUnlit)
+               // (request/default_light.h lightIfUnlit)
     None,      // no environment at all: black wherever no surface is seen, whatever the scene file says
     Studio,    // the studio environment (scene/studio_environment.h), in place of the scene's
     Constant,  // a constant colour (X, a grey, or R,G,B), in place of the scene's environment
@@ -79,7 +80,7 @@ class RenderRequest {
 
     // The scene named on the command line (its only positional argument), else the built-in Cornell box,
     // with the environment --environment asks for: by default a scene without light of its own gets the
-    // studio environment, with a note (scene/lighting.h lightIfUnlit).
+    // studio environment, with a note (request/default_light.h lightIfUnlit).
     Scene loadScene() const;
     // What loadScene does to the scene it loads (--flatten-instances, --environment), for a scene that
     // comes from elsewhere (the study's scene set).

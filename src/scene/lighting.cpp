@@ -7,14 +7,9 @@
 #include "core/text.h"
 #include "image/exr.h"
 #include "image/hdr.h"
-#include "scene/own_light.h"
-#include "scene/studio_environment.h"
 
 namespace fp {
 
-namespace {
-
-// A punctual light or an environment that is not black: light the scene's author chose.
 bool hasPunctualOrEnvironmentLight(const Scene& scene) {
     auto positive = [](const glm::vec3& c) { return c.x > 0.0f || c.y > 0.0f || c.z > 0.0f; };
     // A black punctual light is left out of light selection (pack/pack.cpp): it lights nothing.
@@ -35,8 +30,6 @@ bool hasEmitters(const Scene& scene) {
     return false;
 }
 
-}  // namespace
-
 bool hasLight(const Scene& scene) {
     return hasEmitters(scene) || hasPunctualOrEnvironmentLight(scene);
 }
@@ -45,25 +38,6 @@ Environment defaultSky() {
     Environment sky;
     sky.color = glm::vec3(1.0f);
     return sky;
-}
-
-bool lightIfUnlit(Scene& scene, DefaultLight light) {
-    if (hasPunctualOrEnvironmentLight(scene)) return false;
-    std::string why = "no light of its own";
-    if (hasEmitters(scene)) {
-        const OwnLightEstimate own = estimateOwnLight(scene);
-        if (own.lightsTheScene()) return false;
-        why = formatText(
-            "its emitters are glowing detail, not lighting (%.2f%% of their light stays in the "
-            "scene, %.2fx the studio's light on its surfaces)",
-            100.0 * own.enclosure, own.ownToStudio);
-    }
-    const bool studio = light == DefaultLight::Studio;
-    note((scene.source.empty() ? std::string() : scene.source + ": ") + why + ": lit by " +
-         (studio ? "the studio environment" : "a uniform white sky of radiance 1") +
-         " (--environment none keeps it dark)");
-    scene.environment = studio ? studioEnvironment() : defaultSky();
-    return true;
 }
 
 bool isEnvironmentMapPath(const std::string& path) {

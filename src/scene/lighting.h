@@ -12,6 +12,10 @@ namespace fp {
 // with a positive texel and a positive intensity).
 // Anything that adds a kind of light to Scene must be counted here too.
 bool hasLight(const Scene& scene);
+// The two halves of hasLight: a triangle of an emissive material; a punctual light or an environment
+// that is not black (the light a scene's author chose, as request/default_light.h weighs it).
+bool hasEmitters(const Scene& scene);
+bool hasPunctualOrEnvironmentLight(const Scene& scene);
 
 // The uniform white sky (--environment 1, and the native reference's default light): a constant environment
 // of radiance 1 from every direction. It is the most neutral choice (no direction, colour or time of day
@@ -19,17 +23,6 @@ bool hasLight(const Scene& scene);
 // answers: an unoccluded Lambertian surface of albedo k shows exactly k after one bounce, as in a white
 // furnace.
 Environment defaultSky();
-
-// The light lightIfUnlit gives: the studio environment (scene/studio_environment.h), or, for the native
-// reference, which has constant skies only, the uniform white sky (defaultSky).
-enum class DefaultLight { Studio, UniformSky };
-
-// Lights a scene that has no light of its own as a model viewer does: unless it has a punctual light or
-// an environment that is not black, or emitters that light it (scene/own_light.h: a closed room's lamp,
-// not a glowing visor), it gets `light`, with a note (not a warning: it is the documented default, not
-// a repair, so --strict does not refuse it) that says why and how to keep it dark (--environment none).
-// Returns whether it did.
-bool lightIfUnlit(Scene& scene, DefaultLight light = DefaultLight::Studio);
 
 // An equirectangular environment map by its extension (case-insensitive): a Radiance .hdr (RGBE) or
 // an OpenEXR .exr of linear radiance (image/exr.h decodeExrRadiance: R, G, B or Y; multi-part, deep,

@@ -1,7 +1,7 @@
 #pragma once
-// The studio environment: the light a model without its own gets by default (scene/lighting.h
-// lightIfUnlit, --environment studio), as a model viewer lights a model with a neutral studio map.
-// Made here, in code, from a few smooth shapes; no image is read or copied.
+// The studio environment: the light a model without its own gets by default
+// (request/default_light.h lightIfUnlit, --environment studio), as a model viewer lights a model with a
+// neutral studio map. Made here, in code, from a few smooth shapes; no image is read or copied.
 #include <glm/glm.hpp>
 
 #include "scene/scene.h"

@@ -62,63 +62,6 @@ TEST(Lighting, AnEmitterOrAnEnvironmentThatIsNotBlackLightsTheScene) {
     EXPECT_TRUE(hasLight(scene));
 }
 
-TEST(Lighting, AnUnlitSceneGetsTheStudioEnvironmentWithANote) {
-    Scene scene = unlitTriangle();
-    WarningCapture capture;
-    EXPECT_TRUE(lightIfUnlit(scene));
-    const Environment studio = studioEnvironment();
-    EXPECT_EQ(scene.environment.map.pixels, studio.map.pixels);
-    EXPECT_EQ(scene.environment.color, glm::vec3(0.0f));
-    EXPECT_TRUE(capture.messages().empty()) << "a note, not a warning: " << test::joined(capture);
-    ASSERT_EQ(capture.notes().size(), 1u);
-    EXPECT_EQ(
-        capture.notes()[0],
-        "unlit.obj: no light of its own: lit by the studio environment (--environment none keeps it dark)");
-    // Now lit: nothing changes, no second note.
-    EXPECT_FALSE(lightIfUnlit(scene));
-    EXPECT_EQ(capture.notes().size(), 1u);
-    // The native reference's choice: the uniform sky.
-    Scene native = unlitTriangle();
-    EXPECT_TRUE(lightIfUnlit(native, DefaultLight::UniformSky));
-    EXPECT_EQ(native.environment.color, glm::vec3(1.0f));
-    EXPECT_FALSE(native.environment.hasMap());
-    EXPECT_NE(capture.notes().back().find("lit by a uniform white sky of radiance 1"), std::string::npos);
-}
-
-// Emitters that are glowing detail (scene/own_light.h) get the studio light too, and the note says why;
-// a lamp that lights its room is left alone.
-TEST(Lighting, GlowingDetailIsNotLightButALampInARoomIs) {
-    Scene scene = unlitTriangle();
-    Material glow;
-    glow.emission = glm::vec3(1.0f);
-    scene.materials.push_back(glow);
-    Triangle t = scene.triangles[0];
-    t.material = 1;
-    t.p = {glm::vec3(2, 0, 0), glm::vec3(3, 0, 0), glm::vec3(2, 1, 0)};
-    scene.triangles.push_back(t);
-    ASSERT_TRUE(hasLight(scene));
-    WarningCapture capture;
-    EXPECT_TRUE(lightIfUnlit(scene));
-    EXPECT_TRUE(scene.environment.hasMap());
-    ASSERT_EQ(capture.notes().size(), 1u);
-    EXPECT_CONTAINS_ALL(capture.notes()[0],
-                        "unlit.obj: its emitters are glowing detail, not lighting (0.00% of",
-                        "lit by the studio environment");
-    Scene cornell = loadScene(std::string(FP_SOURCE_DIR) + "/assets/cornell/cornell.obj");
-    EXPECT_FALSE(lightIfUnlit(cornell));
-    EXPECT_TRUE(cornell.environment.isBlack());
-    EXPECT_EQ(capture.notes().size(), 1u);
-}
-
-TEST(Lighting, ALitSceneKeepsItsEnvironment) {
-    Scene scene = unlitTriangle();
-    scene.environment.color = glm::vec3(0.25f);
-    WarningCapture capture;
-    EXPECT_FALSE(lightIfUnlit(scene));
-    EXPECT_EQ(scene.environment.color, glm::vec3(0.25f));
-    EXPECT_TRUE(capture.messages().empty()) << test::joined(capture);
-}
-
 TEST(Lighting, TheStudioEnvironmentIsNeutralAndOfModerateRange) {
     EXPECT_EQ(studioRadiance(glm::vec3(0, -1, 0)), glm::vec3(kStudioGround));
     EXPECT_EQ(studioRadiance(glm::vec3(0, 1, 0)), glm::vec3(kStudioZenith));
@@ -139,17 +82,6 @@ TEST(Lighting, TheStudioEnvironmentIsNeutralAndOfModerateRange) {
     // Row 0 is straight up; the middle column looks along -z (u = 0.5), the first along +z.
     EXPECT_NEAR(studio.map.at(kStudioMapWidth / 2, 0).x, kStudioZenith, 1e-3f);
     EXPECT_NEAR(studio.map.at(0, kStudioMapHeight - 1).x, kStudioGround, 1e-6f);
-}
-
-TEST(Lighting, StrictModeAcceptsTheDefaultLight) {
-    // The studio light is the documented default (as the default camera is), not a repair.
-    Scene scene = unlitTriangle();
-    setStrictWarnings(true);
-    bool lit = false;
-    EXPECT_NO_THROW(lit = lightIfUnlit(scene));
-    setStrictWarnings(false);
-    EXPECT_TRUE(lit);
-    EXPECT_TRUE(scene.environment.hasMap());
 }
 
 TEST(Lighting, EnvironmentMapsAreHdrOrExrByExtension) {

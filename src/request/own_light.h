@@ -1,7 +1,7 @@
 #pragma once
 // Whether a scene's emitters light it, or are only glowing detail: a room lit by its lamp (the Cornell
 // box) keeps its own light, while a helmet whose visor glows, or a model with an emissive texture over
-// most of it, gets the studio environment as a model viewer would (scene/lighting.h lightIfUnlit).
+// most of it, gets the studio environment as a model viewer would (request/default_light.h lightIfUnlit).
 //
 // Two measures, each estimated with a fixed number of CPU rays (bvh/ray_query.h) at a fixed seed, so
 // the answer is the same on every run:

@@ -5,12 +5,13 @@
 #include <fstream>
 
 #include "core/log.h"
-#include "gltf_test_util.h"
+#include "request/default_light.h"
+#include "request/own_light.h"
+#include "scene/gltf_test_util.h"
 #include "scene/lighting.h"
 #include "scene/load.h"
-#include "scene/own_light.h"
 #include "scene/procedural.h"
-#include "scene_test_util.h"
+#include "scene/scene_test_util.h"
 
 namespace fp {
 namespace {

@@ -1,4 +1,4 @@
-#include "scene/own_light.h"
+#include "request/own_light.h"
 
 #include <algorithm>
 #include <cmath>
