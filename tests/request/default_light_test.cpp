@@ -13,19 +13,8 @@
 namespace fp {
 namespace {
 
-// One triangle of material 0, Lambertian and not emissive, without an environment.
-Scene unlitTriangle() {
-    Scene scene;
-    scene.source = "unlit.obj";
-    Triangle t;
-    t.p = {glm::vec3(0, 0, 0), glm::vec3(1, 0, 0), glm::vec3(0, 1, 0)};
-    scene.triangles.push_back(t);
-    scene.materials.push_back(Material{});
-    return scene;
-}
-
 TEST(DefaultLight, AnUnlitSceneGetsTheStudioEnvironmentWithANote) {
-    Scene scene = unlitTriangle();
+    Scene scene = test::unlitTriangle();
     WarningCapture capture;
     EXPECT_TRUE(lightIfUnlit(scene));
     const Environment studio = studioEnvironment();
@@ -40,7 +29,7 @@ TEST(DefaultLight, AnUnlitSceneGetsTheStudioEnvironmentWithANote) {
     EXPECT_FALSE(lightIfUnlit(scene));
     EXPECT_EQ(capture.notes().size(), 1u);
     // The native reference's choice: the uniform sky.
-    Scene native = unlitTriangle();
+    Scene native = test::unlitTriangle();
     EXPECT_TRUE(lightIfUnlit(native, DefaultLight::UniformSky));
     EXPECT_EQ(native.environment.color, glm::vec3(1.0f));
     EXPECT_FALSE(native.environment.hasMap());
@@ -50,7 +39,7 @@ TEST(DefaultLight, AnUnlitSceneGetsTheStudioEnvironmentWithANote) {
 // Emitters that are glowing detail (request/own_light.h) get the studio light too, and the note says why;
 // a lamp that lights its room is left alone.
 TEST(DefaultLight, GlowingDetailIsNotLightButALampInARoomIs) {
-    Scene scene = unlitTriangle();
+    Scene scene = test::unlitTriangle();
     Material glow;
     glow.emission = glm::vec3(1.0f);
     scene.materials.push_back(glow);
@@ -73,7 +62,7 @@ TEST(DefaultLight, GlowingDetailIsNotLightButALampInARoomIs) {
 }
 
 TEST(DefaultLight, ALitSceneKeepsItsEnvironment) {
-    Scene scene = unlitTriangle();
+    Scene scene = test::unlitTriangle();
     scene.environment.color = glm::vec3(0.25f);
     WarningCapture capture;
     EXPECT_FALSE(lightIfUnlit(scene));
@@ -83,7 +72,7 @@ TEST(DefaultLight, ALitSceneKeepsItsEnvironment) {
 
 TEST(DefaultLight, StrictModeAcceptsTheDefaultLight) {
     // The studio light is the documented default (as the default camera is), not a repair.
-    Scene scene = unlitTriangle();
+    Scene scene = test::unlitTriangle();
     setStrictWarnings(true);
     bool lit = false;
     EXPECT_NO_THROW(lit = lightIfUnlit(scene));

@@ -16,19 +16,8 @@
 namespace fp {
 namespace {
 
-// One triangle of material 0, Lambertian and not emissive, without an environment.
-Scene unlitTriangle() {
-    Scene scene;
-    scene.source = "unlit.obj";
-    Triangle t;
-    t.p = {glm::vec3(0, 0, 0), glm::vec3(1, 0, 0), glm::vec3(0, 1, 0)};
-    scene.triangles.push_back(t);
-    scene.materials.push_back(Material{});
-    return scene;
-}
-
 TEST(Lighting, AnEmitterOrAnEnvironmentThatIsNotBlackLightsTheScene) {
-    Scene scene = unlitTriangle();
+    Scene scene = test::unlitTriangle();
     EXPECT_FALSE(hasLight(scene));
     // An emissive material no triangle uses lights nothing.
     Material lamp;
@@ -38,7 +27,7 @@ TEST(Lighting, AnEmitterOrAnEnvironmentThatIsNotBlackLightsTheScene) {
     scene.triangles[0].material = 1;
     EXPECT_TRUE(hasLight(scene));
 
-    scene = unlitTriangle();
+    scene = test::unlitTriangle();
     scene.environment.color = glm::vec3(0.0f, 0.1f, 0.0f);
     EXPECT_TRUE(hasLight(scene));
     // A map: lit when some texel is and the intensity is positive.
@@ -51,7 +40,7 @@ TEST(Lighting, AnEmitterOrAnEnvironmentThatIsNotBlackLightsTheScene) {
 
     // A point, spot or directional light that is not black (issue 18: a scene lit only by a point light
     // must not get the default sky on top).
-    scene = unlitTriangle();
+    scene = test::unlitTriangle();
     PunctualLight bulb;
     bulb.intensity = glm::vec3(0.0f);
     scene.punctualLights.push_back(bulb);

@@ -74,4 +74,15 @@ inline std::string joined(const WarningCapture& capture) {
     return out;
 }
 
+// One triangle of material 0, Lambertian and not emissive, without an environment.
+inline Scene unlitTriangle() {
+    Scene scene;
+    scene.source = "unlit.obj";
+    Triangle t;
+    t.p = {glm::vec3(0, 0, 0), glm::vec3(1, 0, 0), glm::vec3(0, 1, 0)};
+    scene.triangles.push_back(t);
+    scene.materials.push_back(Material{});
+    return scene;
+}
+
 }  // namespace fp::test
