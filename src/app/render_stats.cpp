@@ -33,6 +33,7 @@ RenderStats collectRenderStats(const Renderer& renderer, const Accumulation& acc
     s.imageBytes = renderer.imageBytes();
     s.lightImage = !acc.splatSum.empty();
     s.spp = times.spp;
+    s.passes = renderer.passes();
     s.paths = uint64_t(s.settings.width) * uint64_t(s.settings.height) * uint64_t(std::max(times.spp, 0));
     s.rays = uint64_t(std::llround(acc.raysTraced()));
     s.droppedSamples = acc.droppedSamples();
@@ -80,8 +81,9 @@ std::string formatRenderStats(const RenderStats& stats) {
         "%.3f s; %.3f CPU-s\n",
         f.loadSeconds, f.contextSeconds, f.bvhSeconds, f.packAndUploadSeconds, f.compileSeconds,
         f.firstPassSeconds, f.cpuSeconds);
-    text += formatText("samples          %d per pixel, %.0f paths, %.0f rays (%.2f rays per path)\n",
-                       stats.spp, paths, rays, per(rays, paths));
+    text +=
+        formatText("samples          %d per pixel in %d passes, %.0f paths, %.0f rays (%.2f rays per path)\n",
+                   stats.spp, stats.passes, paths, rays, per(rays, paths));
     text += formatText("throughput       %.3g paths/s, %.3g rays/s, %.3g paths per CPU-second\n",
                        per(paths, stats.seconds), per(rays, stats.seconds), per(paths, stats.cpuSeconds));
     text += formatText("dropped samples  %llu (NaN or Inf, replaced by 0)\n",
@@ -125,7 +127,9 @@ nlohmann::json renderStatsJson(const RenderStats& stats) {
         {"height", settings.height},
         {"seed", settings.seed},
         {"sample_offset", settings.sampleOffset},
-        {"samples_per_pass", settings.samplesPerPass},
+        {"samples_per_pass", settings.samplesPerPass == RenderSettings::kAutoSamplesPerPass
+                                 ? nlohmann::json("auto")
+                                 : nlohmann::json(settings.samplesPerPass)},
         {"clamp_indirect", settings.clampIndirect},
         {"view", viewName(settings.view)},
     };
@@ -151,6 +155,7 @@ nlohmann::json renderStatsJson(const RenderStats& stats) {
           {"first_pass_seconds", stats.firstFrame.firstPassSeconds},
           {"cpu_seconds", stats.firstFrame.cpuSeconds}}},
         {"spp", stats.spp},
+        {"passes", stats.passes},
         {"paths", stats.paths},
         {"rays", stats.rays},
         {"rays_per_path", per(rays, paths)},

@@ -34,6 +34,7 @@ struct RenderStats {
     // This run's samples per pixel (a resumed render: those rendered now), and its paths (one per
     // pixel and sample) and rays (camera, bounce and shadow rays of those paths).
     int spp = 0;
+    int passes = 0;  // the draw calls that took them (RenderSettings::samplesPerPass)
     uint64_t paths = 0, rays = 0, droppedSamples = 0;
     double firstFrameSeconds = 0.0;  // from the start of the command to the end of the first pass
     FirstFrameStages firstFrame;
@@ -58,10 +59,11 @@ std::string formatRenderStats(const RenderStats& stats);
 // "leaf_size": {"min", "max", "mean"}, "sah_cost", "build_seconds", "build_cpu_seconds",
 // "build_threads"}, "memory": {"gpu_bytes", "gpu_geometry_bytes", "gpu_texture_bytes", "image_bytes"},
 // "scene_reads", "first_frame_seconds", "first_frame": {"load_seconds", "context_seconds", "bvh_seconds",
-// "pack_and_upload_seconds", "compile_seconds", "first_pass_seconds", "cpu_seconds"}, "spp", "paths", "rays",
-// "rays_per_path", "seconds", "cpu_seconds", "throughput": {"paths_per_second", "rays_per_second",
-// "paths_per_cpu_second"}, "dropped_samples", "settings": {"integrator", "sampler", "light_sampling",
-// "max_depth", "width", "height", "seed", "sample_offset", "samples_per_pass", "clamp_indirect", "view"}}.
+// "pack_and_upload_seconds", "compile_seconds", "first_pass_seconds", "cpu_seconds"}, "spp", "passes",
+// "paths", "rays", "rays_per_path", "seconds", "cpu_seconds", "throughput": {"paths_per_second",
+// "rays_per_second", "paths_per_cpu_second"}, "dropped_samples", "settings": {"integrator", "sampler",
+// "light_sampling", "max_depth", "width", "height", "seed", "sample_offset", "samples_per_pass" (a count, or
+// "auto"), "clamp_indirect", "view"}}.
 nlohmann::json renderStatsJson(const RenderStats& stats);
 
 // Writes renderStatsJson (indented, one trailing newline), atomically.

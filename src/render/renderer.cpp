@@ -257,9 +257,9 @@ double Renderer::lightPathsPerPixel() const {
 void Renderer::configure(const RenderSettings& settings, const Camera& camera) {
     if (settings.maxDepth < 0 || (settings.split && settings.split->maxDepth < 0))
         throw Error("max depth must be 0 or more");
-    if (settings.samplesPerPass < 1 || settings.samplesPerPass > RenderSettings::kMaxSamplesPerPass)
+    if (settings.samplesPerPass < 0 || settings.samplesPerPass > RenderSettings::kMaxSamplesPerPass)
         throw Error("samples per pass must be between 1 and " +
-                    std::to_string(RenderSettings::kMaxSamplesPerPass));
+                    std::to_string(RenderSettings::kMaxSamplesPerPass) + ", or 0 (chosen per pass)");
     if (!(settings.clampIndirect >= 0.0f) || !std::isfinite(settings.clampIndirect))
         throw Error("the indirect clamp must be a finite number, 0 or more (0: no clamp)");
     if (settings.clampIndirect > 0.0f && (settings.integrator == Integrator::Bdpt ||
@@ -334,6 +334,8 @@ void Renderer::configure(const RenderSettings& settings, const Camera& camera) {
     targets_->clear();
     resetLightImage(0);
     samples_ = 0;
+    passes_ = 0;
+    pacer_ = PassPacer(settings.samplesPerPass, RenderSettings::kMaxSamplesPerPass);
     nextTile_ = 0;
 }
 
@@ -448,9 +450,12 @@ void Renderer::render(int samples, const std::function<bool(int)>& progress) {
     if (!targets_) throw Error("internal: Renderer::render before configure");
     int done = 0;
     while (done < samples) {
-        int count = std::min(settings_.samplesPerPass, samples - done);
+        int count = pacer_.next(samples - done);
+        auto start = SteadyClock::now();
         drawPass(targets_->full(), count);
         glFinish();  // so that progress and timing see finished work, not queued commands
+        pacer_.record(count, secondsSince(start));
+        ++passes_;
         samples_ += count;
         done += count;
         if (progress && !progress(done)) break;

@@ -12,6 +12,7 @@
 #include "pack/pack.h"
 #include "render/accumulation.h"
 #include "render/light_splat.h"
+#include "render/pass_pacer.h"
 #include "render/render_targets.h"
 #include "scene/scene.h"
 #include "settings/render_settings.h"
@@ -76,6 +77,8 @@ class Renderer {
 
     // Samples completed over the whole image (tiles of an unfinished pass not counted).
     int samples() const { return samples_; }
+    // Passes render() drew since configure() (their sample counts: RenderSettings::samplesPerPass).
+    int passes() const { return passes_; }
     Accumulation readback() const;
     // The accumulation's textures, for a display pass.
     AccumulationTextures textures() const;
@@ -138,6 +141,8 @@ class Renderer {
     RenderSettings settings_;
     Camera camera_;
     int samples_ = 0;
+    int passes_ = 0;                                          // render()'s passes since configure()
+    PassPacer pacer_{0, RenderSettings::kMaxSamplesPerPass};  // render()'s samples per pass
     int nextTile_ = 0;
 };
 

@@ -104,8 +104,10 @@ std::vector<OptionGroup> requestOptionGroups(unsigned options, const FrontEndDef
                                     sceneOr + "off)"});
         path.options.push_back({"--samples-per-pass", "", "N",
                                 "samples each pixel takes per draw call, 1 to " +
-                                    std::to_string(RenderSettings::kMaxSamplesPerPass) + " (default " +
-                                    std::to_string(defaults.samplesPerPass) + ")"});
+                                    std::to_string(RenderSettings::kMaxSamplesPerPass) +
+                                    ", or auto: as many as fit a second (default " +
+                                    samplesPerPassName(defaults.samplesPerPass) +
+                                    "); the image is the same"});
     }
     if (options & kCameraOptions) {
         camera.options.push_back({"--eye", "", "X,Y,Z", "camera position"});
@@ -180,7 +182,10 @@ RenderRequest::RenderRequest(const Args& args, const FrontEndDefaults& defaults)
     clampIndirect_ = args.number("--clamp-indirect");
     if (clampIndirect_ && !(*clampIndirect_ >= 0.0f))
         throw Error("option --clamp-indirect: must be 0 (off) or more");
-    samplesPerPass_ = args.integer("--samples-per-pass", 1, RenderSettings::kMaxSamplesPerPass);
+    if (args.text("--samples-per-pass") == "auto")
+        samplesPerPass_ = RenderSettings::kAutoSamplesPerPass;
+    else
+        samplesPerPass_ = args.integer("--samples-per-pass", 1, RenderSettings::kMaxSamplesPerPass);
     if (auto t = args.text("--view")) view_ = parseView(*t);
     eye_ = args.vec3("--eye");
     target_ = args.vec3("--target");

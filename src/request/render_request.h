@@ -54,7 +54,7 @@ struct FrontEndDefaults {
     bool sceneSize = true;  // a scene file's width and height apply (not to a window or a sweep)
     int spp = 64;           // 0: no target (the viewer refines until stopped)
     bool sceneSpp = true;   // a scene file's spp applies (not to a benchmark run)
-    int samplesPerPass = 1;
+    int samplesPerPass = RenderSettings::kAutoSamplesPerPass;
     // The light of a scene without its own: the studio map, or the uniform sky for the native reference,
     // which has constant skies only.
     DefaultLight defaultLight = DefaultLight::Studio;

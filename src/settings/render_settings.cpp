@@ -60,4 +60,8 @@ const char* viewName(View view) {
     return nameOf(view, kNames);
 }
 
+std::string samplesPerPassName(int samplesPerPass) {
+    return samplesPerPass == RenderSettings::kAutoSamplesPerPass ? "auto" : std::to_string(samplesPerPass);
+}
+
 }  // namespace fp

@@ -87,6 +87,9 @@ struct SplitView {
     int maxDepth = kDefaultMaxDepth;
 };
 
+// "auto" for RenderSettings::kAutoSamplesPerPass, else the count.
+std::string samplesPerPassName(int samplesPerPass);
+
 struct RenderSettings {
     int width = 512, height = 512;
     int maxDepth = kDefaultMaxDepth;
@@ -97,10 +100,13 @@ struct RenderSettings {
     LightSelection lightSelection = LightSelection::Auto;
     Caustics caustics = Caustics::Auto;
     View view = View::Radiance;
-    // Samples each pixel takes in one draw call, at most kMaxSamplesPerPass: llvmpipe stops a shader loop
-    // after a fixed number of iterations (measured: 256 samples of the 32x32 Cornell box in one pass
-    // left some pixels with 157), which could cut a path short; real GPUs have draw-time watchdogs.
-    int samplesPerPass = 1;
+    // Samples each pixel takes in one draw call of Renderer::render: 0 (the default) chooses the count
+    // per pass from the last pass's time (render/pass_pacer.h), 1 to kMaxSamplesPerPass fixes it. At
+    // most kMaxSamplesPerPass: llvmpipe stops a shader's loops after a fixed number of iterations in all
+    // (measured: 256 samples of the 32x32 Cornell box in one pass left some pixels with 157), which could
+    // cut a path short; real GPUs have draw-time watchdogs. The image is the same for every count.
+    int samplesPerPass = kAutoSamplesPerPass;
+    static constexpr int kAutoSamplesPerPass = 0;
     static constexpr int kMaxSamplesPerPass = 16;
     std::optional<SplitView> split;
     uint32_t sampleOffset = 0;  // the first sample index (to render one range of a larger render)

@@ -86,10 +86,15 @@ TEST_F(RenderStatsCli, JsonIsConsistentAndMatchesThePrintedStats) {
     EXPECT_NEAR(std::stod(m[4]), j["bvh"]["sah_cost"].get<double>(), 0.005);
     m = find(r.output, R"(gpu memory +(\d+) bytes)");
     EXPECT_EQ(std::stoull(m[1]), j["memory"]["gpu_bytes"].get<uint64_t>());
-    m = find(r.output, R"(samples +(\d+) per pixel, (\d+) paths, (\d+) rays)");
+    m = find(r.output, R"(samples +(\d+) per pixel in (\d+) passes, (\d+) paths, (\d+) rays)");
     EXPECT_EQ(std::stoi(m[1]), j["spp"].get<int>());
-    EXPECT_EQ(std::stoull(m[2]), j["paths"].get<uint64_t>());
-    EXPECT_EQ(std::stoull(m[3]), j["rays"].get<uint64_t>());
+    EXPECT_EQ(std::stoi(m[2]), j["passes"].get<int>());
+    EXPECT_EQ(std::stoull(m[3]), j["paths"].get<uint64_t>());
+    EXPECT_EQ(std::stoull(m[4]), j["rays"].get<uint64_t>());
+    // The default chooses the samples per pass: the first pass takes one, so 3 samples need 2 or 3.
+    EXPECT_EQ(j["settings"]["samples_per_pass"], "auto");
+    EXPECT_GE(j["passes"].get<int>(), 2);
+    EXPECT_LE(j["passes"].get<int>(), 3);
     m = find(r.output, R"(dropped samples +(\d+))");
     EXPECT_EQ(std::stoull(m[1]), j["dropped_samples"].get<uint64_t>());
     m = find(r.output, R"(first frame +([0-9.]+) s)");

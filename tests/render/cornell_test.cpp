@@ -118,22 +118,32 @@ TEST_F(CornellBox, DifferentSeedDifferentNoiseSameMean) {
 }
 
 TEST_F(CornellBox, SamplesPerPassDoesNotChangeTheImage) {
-    // Sample k at pixel p draws the same random numbers however the passes are split.
+    // Sample k at pixel p draws the same random numbers however the passes are split: fixed counts, and
+    // the counts chosen from the passes' times (render/pass_pacer.h), which vary from run to run.
     RenderSettings s;
     s.width = s.height = kSize;
     s.maxDepth = kDepth;
     s.seed = 9;
     s.samplesPerPass = 1;
     renderer_->configure(s, *scene_->camera);
-    renderer_->render(6);
+    renderer_->render(20);
     Accumulation onePerPass = renderer_->readback();
-    s.samplesPerPass = 4;
-    renderer_->configure(s, *scene_->camera);
-    renderer_->render(6);
-    Accumulation fourPerPass = renderer_->readback();
-    EXPECT_EQ(
-        std::memcmp(onePerPass.sum.data(), fourPerPass.sum.data(), onePerPass.sum.size() * sizeof(glm::vec4)),
-        0);
+    EXPECT_EQ(renderer_->passes(), 20);
+    for (int perPass : {4, RenderSettings::kAutoSamplesPerPass}) {
+        SCOPED_TRACE(samplesPerPassName(perPass));
+        s.samplesPerPass = perPass;
+        renderer_->configure(s, *scene_->camera);
+        renderer_->render(20);
+        // This small image's passes are fast: 1 sample, then as many as allowed (1 + 16 + 3).
+        if (perPass == RenderSettings::kAutoSamplesPerPass) {
+            EXPECT_LE(renderer_->passes(), 6);
+        }
+        Accumulation other = renderer_->readback();
+        EXPECT_EQ(renderer_->samples(), 20);
+        EXPECT_EQ(
+            std::memcmp(onePerPass.sum.data(), other.sum.data(), onePerPass.sum.size() * sizeof(glm::vec4)),
+            0);
+    }
 }
 
 TEST_F(CornellBox, RegeneratedPathsAreTheSamplesTracedOneByOne) {

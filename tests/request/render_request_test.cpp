@@ -153,6 +153,9 @@ TEST(RenderRequest, FlagsOverrideTheSceneFile) {
     EXPECT_EQ(s.lightSampling, LightSampling::SolidAngle);
     EXPECT_EQ(s.clampIndirect, 0.0f);
     EXPECT_EQ(s.samplesPerPass, 4);
+    EXPECT_EQ(request({"--samples-per-pass", "auto"}).settings(scene).samplesPerPass,
+              RenderSettings::kAutoSamplesPerPass);
+    EXPECT_EQ(request({}).settings(scene).samplesPerPass, RenderSettings::kAutoSamplesPerPass);
     EXPECT_EQ(s.view, View::Depth);
     EXPECT_EQ(r.spp(scene), 3);
     Camera c = r.camera(scene);
