@@ -14,6 +14,7 @@
 #include "core/clock.h"
 #include "core/error.h"
 #include "core/file.h"
+#include "core/log.h"
 #include "denoise/denoiser.h"
 #include "gl/context.h"
 #include "image/file_io.h"
@@ -200,6 +201,12 @@ int renderCommand(const std::vector<std::string>& argv) {
         {acc.mean(), {{settings.sampleOffset, uint64_t(total)}}, fingerprint, outputAovs(acc, aovs, resumed)},
         display, settings.view);
     if (denoisedOutput) writeImage(*denoisedOutput, denoise(renderer, denoiser), display);
+    // After writing: under --strict the warning fails the command, but the samples are kept.
+    if (uint64_t pixels = acc.pixelsShortOf(total))
+        warn(std::to_string(pixels) + " pixels hold fewer than " + std::to_string(total) +
+             " samples: the OpenGL driver cut the shader's loops short (llvmpipe stops them after a fixed "
+             "number of iterations); the image is noisier there, and a path cut short may be darker. "
+             "Render again with --samples-per-pass 1");
 
     int done = total - already;
     double paths = double(settings.width) * settings.height * done;

@@ -42,6 +42,12 @@ uint64_t Accumulation::droppedSamples() const {
     return dropped;
 }
 
+uint64_t Accumulation::pixelsShortOf(int samples) const {
+    uint64_t pixels = 0;
+    for (const glm::vec4& s : sum) pixels += s.w < float(samples);
+    return pixels;
+}
+
 double Accumulation::raysTraced() const {
     double rays = 0.0;
     for (const glm::vec4& c : counters) rays += double(c.x);

@@ -35,6 +35,9 @@ struct Accumulation {
     Image varianceOfMean() const;
     // Samples that were NaN or Inf and were replaced by 0 (should be none).
     uint64_t droppedSamples() const;
+    // Pixels holding fewer than `samples` samples: a driver that cut the pass's shader loops short
+    // (llvmpipe stops them after a fixed number of iterations in all; RenderSettings::samplesPerPass).
+    uint64_t pixelsShortOf(int samples) const;
     // Rays traced (camera, bounce and shadow rays) over all pixels and samples.
     double raysTraced() const;
 };

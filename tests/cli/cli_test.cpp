@@ -114,6 +114,32 @@ TEST_F(Cli, BvhThreadsIsAcceptedAndChangesNothing) {
     expectSameRender("--size 8x6 --spp 2 --bvh-threads 1", "--size 8x6 --spp 2");
 }
 
+// A pass whose shader loops the driver cut short leaves pixels with fewer samples than the render
+// counts (llvmpipe stops a shader's loops after a fixed number of iterations in all): the image is written
+// and the shortfall reported, as an error under --strict. Simulated with shaders that drop every sample of
+// the 4 leftmost columns.
+TEST_F(Cli, PixelsWithFewerSamplesThanAskedAreReported) {
+    fs::copy(fs::path(FP_SOURCE_DIR) / "glsl", path("glsl"), fs::copy_options::recursive);
+    std::ifstream in(path("glsl/passes/trace.frag.glsl"));
+    std::string trace((std::istreambuf_iterator<char>(in)), {});
+    const std::string add = "void addSample(vec3 c, Ray ray) {\n";
+    ASSERT_NE(trace.find(add), std::string::npos);
+    trace.replace(trace.find(add), add.size(), add + "    if (gl_FragCoord.x < 4.0) return;\n");
+    write("glsl/passes/trace.frag.glsl", trace);
+    const std::string render = "render --size 16x8 --spp 3 --shader-dir " + path("glsl");
+    CliRun r = fragpath(render + " -o " + path("short.pfm"));
+    EXPECT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_NE(r.output.find("32 pixels hold fewer than 3 samples"), std::string::npos) << r.output;
+    EXPECT_TRUE(fs::exists(path("short.pfm")));
+    r = fragpath(render + " --strict -o " + path("strict.pfm"));
+    EXPECT_EQ(r.exitCode, 1) << r.output;
+    EXPECT_NE(r.output.find("32 pixels hold fewer than 3 samples"), std::string::npos) << r.output;
+    EXPECT_TRUE(fs::exists(path("strict.pfm")));  // the samples are kept
+    r = fragpath("render --size 16x8 --spp 3 -o " + path("full.pfm"));  // the built-in shaders
+    EXPECT_EQ(r.exitCode, 0);
+    EXPECT_EQ(r.output.find("fewer than"), std::string::npos) << r.output;
+}
+
 TEST_F(Cli, HelpListsTheOptions) {
     CliRun r = fragpath("render --help");
     EXPECT_EQ(r.exitCode, 0);
