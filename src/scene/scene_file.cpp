@@ -152,7 +152,7 @@ RenderDefaults parseRender(const json& render, Fields& fields) {
     fields.object(render, "render");
     fields.checkKeys(render, "render.",
                      {"width", "height", "spp", "max_depth", "seed", "integrator", "sampler",
-                      "light_sampling", "light_selection", "clamp_indirect"});
+                      "light_sampling", "light_selection", "caustics", "clamp_indirect"});
     constexpr long long kIntMax = std::numeric_limits<int>::max();
     RenderDefaults d;
     if (render.contains("width"))

@@ -38,7 +38,7 @@ TEST(SceneFile, CameraAndRenderParsed) {
     SceneDir s(sceneWith(R"("camera": {"eye": [1, 2, 3], "target": [4, 5, 6], "up": [0, 0, 1], "fov": 55.5},
         "render": {"width": 640, "height": 480, "spp": 16, "max_depth": 0, "seed": 2147483647,
                    "integrator": "bsdf", "sampler": "independent", "light_sampling": "area",
-                   "clamp_indirect": 4.5})"));
+                   "light_selection": "tree", "caustics": "path", "clamp_indirect": 4.5})"));
     WarningCapture capture;
     Scene scene = s.load();
     EXPECT_TRUE(capture.messages().empty()) << test::joined(capture);
@@ -57,6 +57,8 @@ TEST(SceneFile, CameraAndRenderParsed) {
     EXPECT_EQ(scene.defaults.integrator, Integrator::Bsdf);
     EXPECT_EQ(scene.defaults.sampler, Sampler::Independent);
     EXPECT_EQ(scene.defaults.lightSampling, LightSampling::Area);
+    EXPECT_EQ(scene.defaults.lightSelection, LightSelection::Tree);
+    EXPECT_EQ(scene.defaults.caustics, Caustics::Path);
     EXPECT_EQ(scene.defaults.clampIndirect, 4.5f);
 }
 
