@@ -91,10 +91,8 @@ INSTANTIATE_TEST_SUITE_P(
     ::testing::Values(AnalyticVariant{Integrator::Naive, 2048}, AnalyticVariant{Integrator::Bsdf, 1024},
                       AnalyticVariant{Integrator::Nee, 256, LightSampling::Area, LightSelection::Power},
                       AnalyticVariant{Integrator::Nee, 256, LightSampling::SolidAngle, LightSelection::Power},
-                      AnalyticVariant{Integrator::Nee, 256, LightSampling::Area, LightSelection::Tree},
-                      AnalyticVariant{Integrator::Nee, 256, LightSampling::SolidAngle, LightSelection::Tree},
-                      AnalyticVariant{Integrator::Bdpt, 256, LightSampling::Area},
-                      AnalyticVariant{Integrator::Bdpt, 256, LightSampling::SolidAngle}),
+                      AnalyticVariant{Integrator::Bdpt, 256, LightSampling::Area, LightSelection::Auto,
+                                      Caustics::Auto, 64}),
     [](const ::testing::TestParamInfo<AnalyticVariant>& param) { return variantName(param.param); });
 
 }  // namespace
