@@ -67,21 +67,12 @@ double truncatedTransmittance(double cosI, int maxDepth) {
     return (1.0 - r) * (1.0 - r) * sum;
 }
 
-// Each pixel's expected mean: the transmittance averaged over the pixel (16 x 16 points) times L.
+// Each pixel's expected mean: L times the transmittance at its rays' angles.
 std::vector<glm::dvec3> expectedSlabImage(const Camera& camera, int maxDepth) {
-    constexpr int n = 16;
-    std::vector<glm::dvec3> image;
-    for (int row = 0; row < kAnalyticSize; ++row)
-        for (int x = 0; x < kAnalyticSize; ++x) {
-            double sum = 0.0;
-            for (int j = 0; j < n; ++j)
-                for (int i = 0; i < n; ++i)
-                    sum += truncatedTransmittance(
-                        cameraDirection(camera, kAnalyticSize, x + (i + 0.5) / n, row + (j + 0.5) / n).z,
-                        maxDepth);
-            image.push_back(glm::dvec3(kEmitterRadiance) * (sum / (n * n)));
-        }
-    return image;
+    return pixelAverages(kAnalyticSize, [&](double x, double y) {
+        double cosI = cameraDirection(camera, kAnalyticSize, x, y).z;
+        return glm::dvec3(kEmitterRadiance) * truncatedTransmittance(cosI, maxDepth);
+    });
 }
 
 TEST(AnalyticGlassSlab, TheClosedFormsAreIssue35s) {

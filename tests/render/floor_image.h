@@ -32,11 +32,11 @@ inline glm::dvec3 floorPoint(const Camera& c, int size, double x, double y) {
     return eye + d * (-eye.y / d.y);
 }
 
-// Each pixel's expected mean, image rows top first (as Accumulation stores them): the radiance
-// `radiance(floor point)` averaged over the pixel's area (the shader's box filter), by the midpoint rule
-// on a 16 x 16 grid.
-inline std::vector<glm::dvec3> expectedFloorImage(
-    const Camera& c, int size, const std::function<glm::dvec3(const glm::dvec3&)>& radiance) {
+// Each pixel's expected mean, image rows top first (as Accumulation stores them): `value` at continuous
+// pixel positions (x, y) (y up) averaged over the pixel's area (the shader's box filter), by the
+// midpoint rule on a 16 x 16 grid.
+inline std::vector<glm::dvec3> pixelAverages(int size,
+                                             const std::function<glm::dvec3(double x, double y)>& value) {
     constexpr int n = 16;
     std::vector<glm::dvec3> image(size_t(size) * size_t(size));
     for (int row = 0; row < size; ++row)
@@ -44,11 +44,16 @@ inline std::vector<glm::dvec3> expectedFloorImage(
             int glY = size - 1 - row;
             glm::dvec3 sum(0.0);
             for (int j = 0; j < n; ++j)
-                for (int i = 0; i < n; ++i)
-                    sum += radiance(floorPoint(c, size, x + (i + 0.5) / n, glY + (j + 0.5) / n));
+                for (int i = 0; i < n; ++i) sum += value(x + (i + 0.5) / n, glY + (j + 0.5) / n);
             image[size_t(row) * size_t(size) + size_t(x)] = sum / double(n * n);
         }
     return image;
+}
+
+// The same of `radiance(floor point)`.
+inline std::vector<glm::dvec3> expectedFloorImage(
+    const Camera& c, int size, const std::function<glm::dvec3(const glm::dvec3&)>& radiance) {
+    return pixelAverages(size, [&](double x, double y) { return radiance(floorPoint(c, size, x, y)); });
 }
 
 }  // namespace fp::test
