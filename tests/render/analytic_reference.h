@@ -58,12 +58,16 @@ inline Accumulation renderVariant(Renderer& renderer, const Camera& camera, cons
                        v.lightSampling, v.lightSelection, v.caustics);
 }
 
-// The twofold check above of `v` at `maxDepth` against `expected` (kAnalyticSize^2 pixels, rows top
-// first). Returns the relative error of the replicates' mean in the first channel.
-inline double expectAnalytic(Renderer& renderer, const Camera& camera, const AnalyticVariant& v, int maxDepth,
-                             const std::vector<glm::dvec3>& expected, const std::string& what) {
-    expectImage(renderVariant(renderer, camera, v, v.independentSpp, maxDepth, 1, Sampler::Independent),
-                expected, 4, what + ", independent numbers");
+// The relative error of the image mean, averaged over kReplicates Sobol renders of `v` at `maxDepth`
+// (seeds 1000 on), against `expected` (kAnalyticSize^2 pixels, rows top first), and its standard error
+// from their spread. Prints both.
+struct ReplicateError {
+    glm::dvec3 mean{0.0}, standardError{0.0};
+};
+
+inline ReplicateError replicateError(Renderer& renderer, const Camera& camera, const AnalyticVariant& v,
+                                     int maxDepth, const std::vector<glm::dvec3>& expected,
+                                     const std::string& what) {
     glm::dvec3 want(0.0);
     for (const glm::dvec3& value : expected) want += value / double(expected.size());
     glm::dvec3 sum(0.0), squares(0.0);
@@ -77,20 +81,31 @@ inline double expectAnalytic(Renderer& renderer, const Camera& camera, const Ana
     }
     const double n = kReplicates;
     glm::dvec3 mean = sum / n, variance = glm::max((squares - n * mean * mean) / (n - 1.0), glm::dvec3(0.0));
-    glm::dvec3 se = glm::sqrt(variance / n);
+    ReplicateError e{mean, glm::sqrt(variance / n)};
     std::printf("  %s: %d x %d spp, relative error %+.5f%% %+.5f%% %+.5f%%, standard error %.5f%%\n",
                 what.c_str(), kReplicates, v.replicateSpp, 100.0 * mean.x, 100.0 * mean.y, 100.0 * mean.z,
-                100.0 * se.y);
+                100.0 * e.standardError.y);
+    return e;
+}
+
+// The twofold check above of `v` at `maxDepth` against `expected`. Returns the relative error of the
+// replicates' mean in the first channel.
+inline double expectAnalytic(Renderer& renderer, const Camera& camera, const AnalyticVariant& v, int maxDepth,
+                             const std::vector<glm::dvec3>& expected, const std::string& what) {
+    expectImage(renderVariant(renderer, camera, v, v.independentSpp, maxDepth, 1, Sampler::Independent),
+                expected, 4, what + ", independent numbers");
+    const ReplicateError e = replicateError(renderer, camera, v, maxDepth, expected, what);
     for (int ch = 0; ch < 3; ++ch) {
-        EXPECT_LT(std::abs(mean[ch]), kAnalyticTolerance)
-            << what << ", channel " << ch << ": relative error " << mean[ch] << ", closed form " << want[ch];
-        EXPECT_LT(se[ch], 0.25 * kAnalyticTolerance)
+        double error = e.mean[ch], se = e.standardError[ch];
+        EXPECT_LT(std::abs(error), kAnalyticTolerance)
+            << what << ", channel " << ch << ": relative error " << error;
+        EXPECT_LT(se, 0.25 * kAnalyticTolerance)
             << what << ", channel " << ch << ": too noisy for a 0.05 % bound to mean anything";
         // 1e-5 for the shader's float arithmetic, where the estimate is noise-free.
-        EXPECT_LT(std::abs(mean[ch]), 5.0 * std::sqrt(se[ch] * se[ch] + 1e-10))
-            << what << ", channel " << ch << ": relative error " << mean[ch] << ", standard error " << se[ch];
+        EXPECT_LT(std::abs(error), 5.0 * std::sqrt(se * se + 1e-10))
+            << what << ", channel " << ch << ": relative error " << error << ", standard error " << se;
     }
-    return mean.x;
+    return e.mean.x;
 }
 
 // The same closed form at every pixel.
