@@ -70,9 +70,11 @@ TEST(AnalyticLamp, NeeSamplesACloseLampBySolidAngle) {
 // of side 2, 1 above, as the closed form does pixel by pixel (each pixel its own floor points' form
 // factor) and to 0.05 % over the image (analytic_reference.h). Direct light only exists here (the lamp
 // is black, the floor has nothing above it but the lamp), so depth 1 is exact (deeper paths add
-// exactly nothing: measured, bit for bit the same means at depth 3). The replicates' samples per pixel follow
-// each integrator's noise: naive (uniform directions, relative noise 1.4 per path) and bsdf (0.9) need 4 to 8
-// times nee's.
+// exactly nothing: measured, bit for bit the same means at depth 3). The replicates' samples per pixel
+// follow each integrator's noise: naive (uniform directions, relative noise 1.4 per path) and bsdf (0.9)
+// need 8 times nee's, bdpt a quarter of it. Left out as they gave bit for bit the same images: the
+// light tree (it picks between the lamp's two triangles as power does) and bdpt with
+// --light-sampling solid-angle (the same image as by area).
 class AnalyticLampAllIntegrators : public ::testing::TestWithParam<AnalyticVariant> {};
 
 TEST_P(AnalyticLampAllIntegrators, FloorRadianceIsRhoLeFToAFractionOfAPerMille) {
@@ -88,10 +90,10 @@ TEST_P(AnalyticLampAllIntegrators, FloorRadianceIsRhoLeFToAFractionOfAPerMille) 
 
 INSTANTIATE_TEST_SUITE_P(
     Issue35, AnalyticLampAllIntegrators,
-    ::testing::Values(AnalyticVariant{Integrator::Naive, 2048}, AnalyticVariant{Integrator::Bsdf, 1024},
+    ::testing::Values(AnalyticVariant{Integrator::Naive, 2048}, AnalyticVariant{Integrator::Bsdf, 2048},
                       AnalyticVariant{Integrator::Nee, 256, LightSampling::Area, LightSelection::Power},
                       AnalyticVariant{Integrator::Nee, 256, LightSampling::SolidAngle, LightSelection::Power},
-                      AnalyticVariant{Integrator::Bdpt, 256, LightSampling::Area, LightSelection::Auto,
+                      AnalyticVariant{Integrator::Bdpt, 64, LightSampling::Auto, LightSelection::Auto,
                                       Caustics::Auto, 64}),
     [](const ::testing::TestParamInfo<AnalyticVariant>& param) { return variantName(param.param); });
 
