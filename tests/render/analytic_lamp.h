@@ -25,6 +25,8 @@ struct LampCase {
     // (glsl/common/ray_offset.glsl), and from a floor 20 a wide that lifts what they see of a lamp 0.5 a
     // above it by 0.02 % (issue 35).
     double floorHalf = 0.0;
+    // The lamp as tiles x tiles squares (2 tiles^2 triangles), for the light tree to choose among.
+    int tiles = 1;
 };
 
 // Near enough for the old offsets (1e-5 of the scene's reach, shadow rays shortened by 1e-4 of their
@@ -69,9 +71,16 @@ inline Scene lampOverFloor(const LampCase& c) {
           l = float(0.5 * c.side), h = float(c.height);
     // Counter-clockwise seen from above (+y) for the floor, from below for the lamp.
     const glm::vec3 floorCorners[4] = {{x - f, 0, -f}, {x - f, 0, f}, {x + f, 0, f}, {x + f, 0, -f}};
-    const glm::vec3 lampCorners[4] = {{x - l, h, -l}, {x + l, h, -l}, {x + l, h, l}, {x - l, h, l}};
     appendQuad(scene, floorCorners, 0);
-    appendQuad(scene, lampCorners, 1);
+    const float t = 2.0f * l / float(c.tiles);
+    for (int i = 0; i < c.tiles; ++i)
+        for (int j = 0; j < c.tiles; ++j) {
+            float x0 = x - l + float(i) * t, z0 = -l + float(j) * t, x1 = x0 + t, z1 = z0 + t;
+            if (i == c.tiles - 1) x1 = x + l;  // the lamp's edges exactly where one square puts them
+            if (j == c.tiles - 1) z1 = l;
+            const glm::vec3 lampCorners[4] = {{x0, h, z0}, {x1, h, z0}, {x1, h, z1}, {x0, h, z1}};
+            appendQuad(scene, lampCorners, 1);
+        }
     return scene;
 }
 
