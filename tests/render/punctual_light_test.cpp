@@ -22,6 +22,7 @@
 #include <vector>
 
 #include "core/log.h"
+#include "render/floor_image.h"
 #include "render_test_util.h"
 #include "scene/builtin_scene.h"
 #include "scene/procedural.h"
@@ -43,42 +44,6 @@ Scene floorScene(float half) {
     appendQuad(scene, glm::vec3(-half, 0, -half), glm::vec3(-half, 0, half), glm::vec3(half, 0, half),
                glm::vec3(half, 0, -half), 0);
     return scene;
-}
-
-// The camera ray through continuous pixel position (x, y) (y up, as gl_FragCoord), as
-// glsl/common/camera.glsl builds it, in double.
-glm::dvec3 cameraDirection(const Camera& c, int size, double x, double y) {
-    glm::dvec3 forward = glm::normalize(glm::dvec3(c.target) - glm::dvec3(c.eye));
-    glm::dvec3 right = glm::normalize(glm::cross(forward, glm::dvec3(c.up)));
-    glm::dvec3 up = glm::cross(right, forward);
-    double tanHalf = std::tan(0.5 * double(c.fovY) * kPi / 180.0);
-    double nx = 2.0 * x / size - 1.0, ny = 2.0 * y / size - 1.0;
-    return glm::normalize(forward + nx * tanHalf * right + ny * tanHalf * up);
-}
-
-// The floor point the camera ray through (x, y) hits (the camera looks down at it).
-glm::dvec3 floorPoint(const Camera& c, int size, double x, double y) {
-    glm::dvec3 d = cameraDirection(c, size, x, y), eye(c.eye);
-    return eye + d * (-eye.y / d.y);
-}
-
-// Each pixel's expected mean, image rows top first (as Accumulation stores them): the radiance
-// `radiance(floor point)` averaged over the pixel's area (the shader's box filter), by the midpoint rule
-// on a 16 x 16 grid.
-std::vector<glm::dvec3> expectedImage(const Camera& c, int size,
-                                      const std::function<glm::dvec3(const glm::dvec3&)>& radiance) {
-    constexpr int n = 16;
-    std::vector<glm::dvec3> image(size_t(size) * size_t(size));
-    for (int row = 0; row < size; ++row)
-        for (int x = 0; x < size; ++x) {
-            int glY = size - 1 - row;
-            glm::dvec3 sum(0.0);
-            for (int j = 0; j < n; ++j)
-                for (int i = 0; i < n; ++i)
-                    sum += radiance(floorPoint(c, size, x + (i + 0.5) / n, glY + (j + 0.5) / n));
-            image[size_t(row) * size_t(size) + size_t(x)] = sum / double(n * n);
-        }
-    return image;
 }
 
 // k / pi I cos(theta) / r^2 at floor point p (normal +y) from a light at `light` whose intensity toward
@@ -140,7 +105,7 @@ TEST(PunctualLight, PointLightOverAPlaneIsKOverPiICosOverR2) {
     const Camera camera = obliqueCamera();
     const glm::dvec3 light(scene.punctualLights[0].position), intensity(scene.punctualLights[0].intensity);
     std::vector<glm::dvec3> expected =
-        expectedImage(camera, kSize, [&](const glm::dvec3& p) { return pointLit(p, light, intensity); });
+        expectedFloorImage(camera, kSize, [&](const glm::dvec3& p) { return pointLit(p, light, intensity); });
     EXPECT_GT(spread(expected), 3.0) << "the light must vary over the image";
     Renderer renderer(scene, testShaders());
     expectImage(renderScene(renderer, camera, Integrator::Nee, kSize, 64, 1, 3), expected, 4,
@@ -180,7 +145,7 @@ TEST(PunctualLight, SpotLightsItsConeWithGltfsFalloff) {
     auto lit = [&](const glm::dvec3& p) {
         return pointLit(p, light, intensity * gltfSpotFalloff(cosToAxis(p), kInner, kOuter));
     };
-    std::vector<glm::dvec3> expected = expectedImage(camera, kSize, lit);
+    std::vector<glm::dvec3> expected = expectedFloorImage(camera, kSize, lit);
     Renderer renderer(scene, testShaders());
     Accumulation nee = renderScene(renderer, camera, Integrator::Nee, kSize, 64, 1, 3);
     expectImage(nee, expected, 4, "nee, spot");
