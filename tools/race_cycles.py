@@ -292,6 +292,56 @@ def analytic(args, out):
     return result
 
 
+def check(args, name, scene, depth, out):
+    """Both renderers at a small size and modest spp, twice each (two seeds): the whole image's mean and
+    each block's, Cycles' over fragpath's, with standard errors from the two renders' difference (which
+    holds the noise and none of the image's detail); PNGs to look at."""
+    sys.path.insert(0, os.path.join(ROOT, "tools/race"))
+    from scene_io import write_png
+    size, spp, blocks = args.check_size, args.check_spp, args.check_blocks
+    r = Renderers(args, scene, depth, size, out)
+    images = {}
+    for n in ("fragpath", "cycles"):
+        pair = [r.render(n, spp, seed, "check_%s_d%d_%s_%d" % (name, depth, n, seed))[1] for seed in (11, 12)]
+        images[n] = pair
+        write_png(os.path.join(out, "check_%s_d%d_%s.png" % (name, depth, n)), size, size,
+                  [0.5 * (a + b) for a, b in zip(*pair)])
+    print("\n== check %s (%s), %dx%d, 2 x %d spp, max depth %d: Cycles / fragpath, mean +- 1 sigma; PNGs in %s" %
+          (name, scene, size, size, spp, depth, out))
+
+    def region(pair, x0, y0, x1, y1):
+        """The region's mean over both renders, and its standard error."""
+        indices = [3 * (y * size + x) + c for y in range(y0, y1) for x in range(x0, x1) for c in range(3)]
+        first, second = [pair[0][i] for i in indices], [pair[1][i] for i in indices]
+        pixels = len(indices) // 3
+        mean = 0.5 * (statistics.mean(first) + statistics.mean(second))
+        difference = [sum(first[i:i + 3]) / 3 - sum(second[i:i + 3]) / 3 for i in range(0, len(first), 3)]
+        return mean, 0.5 * statistics.pstdev(difference) / math.sqrt(pixels)
+
+    def compare(x0, y0, x1, y1):
+        (mf, ef), (mc, ec) = (region(images[n], x0, y0, x1, y1) for n in ("fragpath", "cycles"))
+        ratio = mc / mf if mf > 0 else float("nan")
+        sigma = ratio * math.hypot(ef / mf, ec / mc) if mf > 0 and mc > 0 else float("nan")
+        return mf, mc, ratio, sigma
+
+    mf, mc, ratio, sigma = compare(0, 0, size, size)
+    print("whole image: fragpath %.5f, Cycles %.5f, ratio %.4f +- %.4f" % (mf, mc, ratio, sigma))
+    step = size // blocks
+    rows, worst = [], 0.0
+    for by in reversed(range(blocks)):  # the image's top row first
+        cells = []
+        for bx in range(blocks):
+            _, _, q, s = compare(bx * step, by * step, (bx + 1) * step, (by + 1) * step)
+            cells.append("%.3f+-%.3f" % (q, s))
+            if s == s and s > 0:
+                worst = max(worst, abs(q - 1) / s)
+        rows.append("  " + " ".join(cells))
+    print("blocks (%dx%d, top row first):\n%s\nlargest |ratio - 1| / sigma over blocks: %.1f" %
+          (blocks, blocks, "\n".join(rows), worst))
+    return {"scene": name, "max_depth": depth, "size": size, "spp": spp, "fragpath_mean": mf, "cycles_mean": mc,
+            "ratio": ratio, "sigma": sigma, "largest_block_z": worst}
+
+
 def main():
     parser = argparse.ArgumentParser(description="error against CPU time, fragpath against Cycles")
     parser.add_argument("--scene", default="cornell",
@@ -318,6 +368,11 @@ def main():
                         help="only the analytic scene: each renderer's offset from the closed form")
     parser.add_argument("--analytic-size", type=int, default=32)
     parser.add_argument("--analytic-spp", type=int, default=16384)
+    parser.add_argument("--check", action="store_true",
+                        help="only compare the two renderers' images (means, block means, PNGs), no race")
+    parser.add_argument("--check-size", type=int, default=64)
+    parser.add_argument("--check-spp", type=int, default=256)
+    parser.add_argument("--check-blocks", type=int, default=4)
     parser.add_argument("--out", default=None, help="where the renders go (default: a new temporary folder)")
     parser.add_argument("--json", default=None, help="write every figure to this file")
     args = parser.parse_args()
@@ -333,9 +388,13 @@ def main():
         depths = [int(d) for d in args.max_depth.split(",")]
         if args.reference and (len(names) > 1 or len(depths) > 1 or args.reference_renderer == "both"):
             raise SystemExit("--reference is one image: give one scene, one depth and one reference renderer")
-        for name in names:
-            scene = scene_file(name, args.scene_dir)
+        for given in names:
+            scene = scene_file(given, args.scene_dir)
+            name = given if given in SCENES else os.path.splitext(os.path.basename(given))[0]
             for depth in depths:
+                if args.check:
+                    report.setdefault("checks", []).append(check(args, name, scene, depth, out))
+                    continue
                 report["races"].append(race(args, name, scene, depth, out))
                 if args.json:  # written as it goes: a long suite keeps what it has measured
                     with open(args.json, "w") as f:

@@ -3,16 +3,8 @@ make_lamp_plane.py): OBJ/MTL, Radiance .hdr skies and scene files, standard libr
 import json
 import math
 import os
-
-
-def rgbe(r, g, b):
-    """One Radiance RGBE texel (Ward, Graphics Gems II, "Real Pixels"): a shared exponent."""
-    m = max(r, g, b)
-    if m < 1e-32:
-        return bytes((0, 0, 0, 0))
-    f, e = math.frexp(m)
-    s = f * 256.0 / m
-    return bytes((min(255, int(r * s)), min(255, int(g * s)), min(255, int(b * s)), e + 128))
+import struct
+import sys
 
 
 def direction_of_texel(u, v):
@@ -33,27 +25,52 @@ def sun_direction(elevation_degrees, azimuth_degrees):
     return (math.sin(a) * math.cos(e), math.sin(e), math.cos(a) * math.cos(e))
 
 
+def write_exr(path, width, height, texel):
+    """An uncompressed scanline OpenEXR of 32-bit float R, G, B (OpenEXR file layout: magic, version,
+    header attributes, line offset table, one scanline per block; channels in alphabetical order).
+    texel(x, y) gives (r, g, b), y = 0 the top row. EXR, not Radiance .hdr: the renderers' .hdr readers
+    round RGBE differently (Blender's adds half a mantissa step, fragpath's stb_image none), which would
+    make Cycles' sky 0.2-0.4 % brighter."""
+    def attribute(name, kind, value):
+        return name.encode() + b"\0" + kind.encode() + b"\0" + struct.pack("<i", len(value)) + value
+
+    channels = b"".join(c + b"\0" + struct.pack("<iB3xii", 2, 0, 1, 1) for c in (b"B", b"G", b"R")) + b"\0"
+    window = struct.pack("<iiii", 0, 0, width - 1, height - 1)
+    header = (b"\x76\x2f\x31\x01" + struct.pack("<i", 2) + attribute("channels", "chlist", channels) +
+              attribute("compression", "compression", b"\0") + attribute("dataWindow", "box2i", window) +
+              attribute("displayWindow", "box2i", window) + attribute("lineOrder", "lineOrder", b"\0") +
+              attribute("pixelAspectRatio", "float", struct.pack("<f", 1.0)) +
+              attribute("screenWindowCenter", "v2f", struct.pack("<ff", 0.0, 0.0)) +
+              attribute("screenWindowWidth", "float", struct.pack("<f", 1.0)) + b"\0")
+    line_size = 8 + 12 * width
+    first = len(header) + 8 * height
+    offsets = struct.pack("<%dQ" % height, *(first + y * line_size for y in range(height)))
+    with open(path, "wb") as f:
+        f.write(header + offsets)
+        for y in range(height):
+            row = [texel(x, y) for x in range(width)]
+            f.write(struct.pack("<ii", y, 12 * width))
+            for c in (2, 1, 0):
+                f.write(struct.pack("<%df" % width, *(t[c] for t in row)))
+
+
 def write_sky(path, width, height, sun, sun_radiance, sun_texels=2):
-    """An equirectangular sky: blue above the horizon, brighter towards it, a brown ground below, and a
-    sun of `sun_texels` x `sun_texels` texels of radiance `sun_radiance` (RGB) centred on direction
-    `sun`. Written as an uncompressed .hdr (scanlines top first, as `-Y H +X W` says)."""
+    """An equirectangular sky as an .exr (write_exr): blue above the horizon, brighter towards it, a
+    brown ground below, and a sun of `sun_texels` x `sun_texels` texels of radiance `sun_radiance` (RGB)
+    centred on direction `sun`."""
     su, sv = texel_of_direction(sun)
     sx, sy = int(su * width) - sun_texels // 2, int(sv * height) - sun_texels // 2
-    out = bytearray(b"#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y %d +X %d\n" % (height, width))
-    for y in range(height):
-        for x in range(width):
-            if sx <= x < sx + sun_texels and sy <= y < sy + sun_texels:
-                out += rgbe(*sun_radiance)
-                continue
-            d = direction_of_texel((x + 0.5) / width, (y + 0.5) / height)
-            if d[1] > 0:
-                horizon = 1 - d[1]
-                r, g, b = 0.25 + 0.55 * horizon ** 3, 0.4 + 0.45 * horizon ** 3, 0.9 + 0.1 * horizon ** 3
-            else:
-                r, g, b = 0.2, 0.16, 0.12
-            out += rgbe(r, g, b)
-    with open(path, "wb") as f:
-        f.write(out)
+
+    def texel(x, y):
+        if sx <= x < sx + sun_texels and sy <= y < sy + sun_texels:
+            return sun_radiance
+        d = direction_of_texel((x + 0.5) / width, (y + 0.5) / height)
+        if d[1] <= 0:
+            return (0.2, 0.16, 0.12)
+        horizon = (1 - d[1]) ** 3
+        return (0.25 + 0.55 * horizon, 0.4 + 0.45 * horizon, 0.9 + 0.1 * horizon)
+
+    write_exr(path, width, height, texel)
 
 
 class Obj:
@@ -111,3 +128,18 @@ def write_scene(folder, scene):
     with open(os.path.join(folder, "scene.json"), "w") as f:
         json.dump(scene, f, indent=1)
         f.write("\n")
+
+
+def write_png(path, width, height, rgb, exposure=1.0):
+    """A linear RGB image (rows bottom first, as PFM) as an sRGB PNG, clamped, for looking at."""
+    sys.path.insert(0, os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+    from make_gltf_showcase import png
+
+    def encode(c):
+        c = max(0.0, min(1.0, c * exposure))
+        return int(255 * (12.92 * c if c <= 0.0031308 else 1.055 * c ** (1 / 2.4) - 0.055) + 0.5)
+
+    rows = [[encode(rgb[3 * (y * width + x) + c]) for x in range(width) for c in range(3)]
+            for y in reversed(range(height))]
+    with open(path, "wb") as f:
+        f.write(png(width, height, rows, 3))
