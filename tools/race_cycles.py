@@ -93,11 +93,16 @@ def timed(command, env=None):
 
 
 def ensure_blender():
-    if shutil.which("blender"):
+    """Debian's blender, and python3-numpy, which its glTF importer needs (Debian's blender does not
+    depend on it)."""
+    missing = [] if shutil.which("blender") else ["blender"]
+    if not os.path.exists("/usr/lib/python3/dist-packages/numpy"):
+        missing.append("python3-numpy")
+    if not missing:
         return
     sudo = [] if os.geteuid() == 0 else ["sudo"]
     env = dict(os.environ, DEBIAN_FRONTEND="noninteractive")
-    subprocess.run(sudo + ["apt-get", "install", "-y", "-qq", "--no-install-recommends", "blender"], check=True,
+    subprocess.run(sudo + ["apt-get", "install", "-y", "-qq", "--no-install-recommends"] + missing, check=True,
                    env=env)
 
 
@@ -302,12 +307,16 @@ def check(args, name, scene, depth, out):
     r = Renderers(args, scene, depth, size, out)
     images = {}
     for n in ("fragpath", "cycles"):
-        pair = [r.render(n, spp, seed, "check_%s_d%d_%s_%d" % (name, depth, n, seed))[1] for seed in (11, 12)]
-        images[n] = pair
-        write_png(os.path.join(out, "check_%s_d%d_%s.png" % (name, depth, n)), size, size,
-                  [0.5 * (a + b) for a, b in zip(*pair)])
-    print("\n== check %s (%s), %dx%d, 2 x %d spp, max depth %d: Cycles / fragpath, mean +- 1 sigma; PNGs in %s" %
-          (name, scene, size, size, spp, depth, out))
+        images[n] = [r.render(n, spp, seed, "check_%s_d%d_%s_%d" % (name, depth, n, seed))[1] for seed in (11, 12)]
+    # One PNG, fragpath left and Cycles right, each the mean of its two renders, enlarged to 256 rows.
+    zoom = max(1, 256 // size)
+    means = [[0.5 * (a + b) for a, b in zip(*images[n])] for n in ("fragpath", "cycles")]
+    side = [means[(x // zoom) // size][3 * ((y // zoom) * size + (x // zoom) % size) + c]
+            for y in range(size * zoom) for x in range(2 * size * zoom) for c in range(3)]
+    png = os.path.join(out, "check_%s_d%d.png" % (name, depth))
+    write_png(png, 2 * size * zoom, size * zoom, side)
+    print("\n== check %s (%s), %dx%d, 2 x %d spp, max depth %d: Cycles / fragpath, mean +- 1 sigma; %s (fragpath | Cycles)" %
+          (name, scene, size, size, spp, depth, png))
 
     def region(pair, x0, y0, x1, y1):
         """The region's mean over both renders, and its standard error."""

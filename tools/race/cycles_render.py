@@ -13,14 +13,16 @@
 #   sRGB image decoded before filtering, bilinear, repeated, times Kd), glass (illum 4/6/7/9 or Tf: Glass
 #   BSDF with Ni and Pr), metals (Pm: Principled, metallic, GGX, roughness Pr), emitters that emit from
 #   their front face only (a counter-clockwise face, as fragpath's).
-# - glTF meshes (Blender's bundled importer, io_scene_gltf2): each imported Principled BSDF is rebuilt
-#   as fragpath's glTF model (glsl/common/bsdf.glsl, "metallic-roughness") as far as Cycles' nodes can:
-#   metallic 1 is the Principled conductor (GGX, F0 = base colour); metallic 0 is a Diffuse base and a
-#   GGX Glossy coat mixed by the coat's exact Fresnel at the view direction (Fresnel node, IOR 1.5). That
-#   base lacks fragpath's second (1 - F(wi)) factor on the light's side, which no Cycles node can see:
-#   the base colour is scaled by 1 - F_dr = 0.908 (the cosine-weighted hemispherical mean of 1 - F at
-#   index 1.5), exact for uniform light and off by a few percent for a low sun (see BENCHMARKS.md).
-#   Base colour textures are decoded from sRGB before filtering, as fragpath does.
+# - glTF meshes (Blender's bundled importer, io_scene_gltf2, which needs Debian's python3-numpy): each
+#   imported Principled BSDF is rebuilt as fragpath's glTF model (glsl/common/bsdf.glsl,
+#   "metallic-roughness") as far as Cycles' nodes can: metallic 1 is the Principled conductor (GGX, F0 =
+#   base colour); metallic 0 is Principled's specular layer alone (black base: GGX with the exact
+#   Fresnel of index 1.5 at the microfacet normal, as fragpath's coat) plus a Diffuse base times
+#   1 - F(wo) (Fresnel node). fragpath's base has a second factor, 1 - F(wi) on the light's side, which
+#   no Cycles node can see: 1 - F_dr = 0.908 (the cosine-weighted mean of 1 - F at index 1.5) stands for
+#   it, exact under uniform light; under a sun 50 degrees from the normal (1 - F = 0.94) Cycles' base is
+#   3 % darker (the race's glTF scene: Cycles 1.4 % darker over the image; race it against each
+#   renderer's own reference). Base colour textures are decoded from sRGB before filtering.
 # - The environment: a constant colour, or an equirectangular map looked up as fragpath's
 #   directionToUv (glsl/common/lights.glsl: u = 0.5 + atan2(x, -z) / 2 pi with +y up, turned by
 #   "rotation" degrees about +y; the nearest texel, no filtering) times "intensity".
@@ -177,6 +179,14 @@ def coat_transmittance(ior, steps=4096):
 
 
 def gltf_materials():
+    # The importer needs numpy (Debian's python3-numpy). Blender's embedded Python finds its home from
+    # the PATH, and a python3 of pyenv's or a virtualenv's ahead of Debian's hides Debian's packages.
+    if "/usr/lib/python3/dist-packages" not in sys.path:
+        sys.path.append("/usr/lib/python3/dist-packages")
+    import numpy
+    if "bool" not in vars(numpy):
+        # Blender 3.4's importer uses numpy.bool, the alias of bool that numpy 1.24 (Debian 12's) removed.
+        numpy.bool = bool
     bpy.ops.import_scene.gltf(filepath=mesh_path)
     for obj in list(bpy.data.objects):
         if obj.type in ("LIGHT", "CAMERA"):
@@ -210,8 +220,25 @@ def gltf_materials():
             principled.distribution = "GGX"
             shader = principled.outputs[0]
         elif metallic <= 0.0:
-            diffuse = nodes.new("ShaderNodeBsdfDiffuse")
-            diffuse.inputs["Roughness"].default_value = 0.0
+            # The coat: Principled v1's specular layer alone (black base, specular 0.5: F0 = 0.04, which
+            # its Fresnel turns into the exact dielectric Fresnel of index 1.5 at the microfacet normal,
+            # as fragpath's coat). The base: Lambertian, times 1 - F(wo) (Fresnel node, the shading
+            # normal) and 1 - F_dr in place of fragpath's 1 - F(wi).
+            principled.distribution = "GGX"
+            if base_link:
+                links.remove(principled.inputs["Base Color"].links[0])
+            principled.inputs["Base Color"].default_value = (0.0, 0.0, 0.0, 1.0)
+            principled.inputs["Specular"].default_value = 0.5
+            principled.inputs["Specular Tint"].default_value = 0.0
+            principled.inputs["Sheen"].default_value = 0.0
+            principled.inputs["Subsurface"].default_value = 0.0
+            fresnel = nodes.new("ShaderNodeFresnel")
+            fresnel.inputs["IOR"].default_value = 1.5
+            through = nodes.new("ShaderNodeMath")
+            through.operation = "MULTIPLY_ADD"  # (F x -coat) + coat = coat (1 - F)
+            links.new(fresnel.outputs["Fac"], through.inputs[0])
+            through.inputs[1].default_value = -coat
+            through.inputs[2].default_value = coat
             scale = nodes.new("ShaderNodeMixRGB")
             scale.blend_type = "MULTIPLY"
             scale.inputs["Fac"].default_value = 1.0
@@ -219,19 +246,14 @@ def gltf_materials():
                 links.new(base_link, scale.inputs["Color1"])
             else:
                 scale.inputs["Color1"].default_value = base
-            scale.inputs["Color2"].default_value = (coat, coat, coat, 1.0)
+            links.new(through.outputs["Value"], scale.inputs["Color2"])
+            diffuse = nodes.new("ShaderNodeBsdfDiffuse")
+            diffuse.inputs["Roughness"].default_value = 0.0
             links.new(scale.outputs["Color"], diffuse.inputs["Color"])
-            glossy = nodes.new("ShaderNodeBsdfGlossy")
-            glossy.distribution = "GGX"
-            glossy.inputs["Color"].default_value = (1.0, 1.0, 1.0, 1.0)
-            glossy.inputs["Roughness"].default_value = roughness
-            fresnel = nodes.new("ShaderNodeFresnel")
-            fresnel.inputs["IOR"].default_value = 1.5
-            mix = nodes.new("ShaderNodeMixShader")
-            links.new(fresnel.outputs["Fac"], mix.inputs["Fac"])
-            links.new(diffuse.outputs[0], mix.inputs[1])
-            links.new(glossy.outputs[0], mix.inputs[2])
-            shader = mix.outputs["Shader"]
+            add = nodes.new("ShaderNodeAddShader")
+            links.new(principled.outputs[0], add.inputs[0])
+            links.new(diffuse.outputs[0], add.inputs[1])
+            shader = add.outputs["Shader"]
         else:
             raise SystemExit("cycles_render.py: %s: metallic %g between 0 and 1 is not matched" %
                              (material.name, metallic))
