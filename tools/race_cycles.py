@@ -10,16 +10,30 @@
 #   gltf         a textured glTF model under an HDR sky with a sun (tools/make_race_gltf.py)
 #   many-lights  assets/many_lights/many_lights.json: a hall of 112 small lamps
 #   window       a closed room lit by sky and sun through a window (tools/make_window_room.py)
-#   mesh         a Cornell room around a displaced blob of 131,072 triangles (tools/make_mesh_room.py)
+#   mesh         a Cornell room around a displaced blob of 81,920 triangles (tools/make_mesh_room.py)
+#   checker      assets/cornell_checker/cornell_checker.json: the Cornell box with a textured floor (not in
+#                --suite)
 # Generated scenes are written once into build/race_scenes/NAME/ (--scene-dir).
 #
-# The lead's race (quiet machine; each scene at depths 64, 12 and 5, 256x256, Cycles' 4096-spp reference):
-#   tools/race_cycles.py --suite --json race.json                  # every scene, 3 runs
-#   tools/race_cycles.py --scene glass --json glass.json           # one scene
-#   tools/race_cycles.py --scene cornell --reference-renderer both # against Cycles' and fragpath's references
-#   tools/race_cycles.py --analytic                                # each renderer's offset from a closed form
-# A quick check that everything runs (loaded machine):
-#   tools/race_cycles.py --scene window --runs 1 --size 128 --spp 16,64 --max-depth 64 --reference-spp 1024
+# The lead's race, on a quiet machine: each scene at max depth 64, 12 and 5 (the defaults), 256x256,
+# 16, 64 and 256 spp, 3 runs, against Cycles' and fragpath's 4096-spp references; one command a scene:
+#   tools/race_cycles.py --scene cornell     --reference-renderer both --json race_cornell.json
+#   tools/race_cycles.py --scene glass       --reference-renderer both --json race_glass.json
+#   tools/race_cycles.py --scene gltf        --reference-renderer both --json race_gltf.json
+#   tools/race_cycles.py --scene many-lights --reference-renderer both --json race_many_lights.json
+#   tools/race_cycles.py --scene window      --reference-renderer both --json race_window.json
+#   tools/race_cycles.py --scene mesh        --reference-renderer both --json race_mesh.json
+#   tools/race_cycles.py --suite --reference-renderer both --json race.json   # the six in one go
+#   tools/race_cycles.py --analytic --json analytic.json   # each renderer's offset from a closed form
+#   tools/race_cycles.py --rows race.json                   # BENCHMARKS.md's table rows from a --json file
+# On the glTF scene Cycles cannot express fragpath's material exactly (tools/race/cycles_render.py):
+# read its "own" rows. The second table (the earlier rows' settings):
+#   tools/race_cycles.py --scene cornell --size 128 --max-depth 5 --reference-renderer fragpath \
+#                        --reference-spp 8192 [--fragpath-args "--samples-per-pass 16"]
+# Before racing a new scene, check that the two renderers agree (means and block means with their
+# standard errors, and a PNG of both side by side to look at), at a small size:
+#   tools/race_cycles.py --check --suite --max-depth 64 --check-size 32 --check-spp 512
+# A quick end-to-end run (a loaded machine): --runs 1 --size 128 --spp 16,64 --max-depth 64 --reference-spp 1024
 #
 # fragpath runs its default command (`fragpath render SCENE --size --spp --max-depth --seed -o`): no
 # --samples-per-pass, integrator, light selection or caustics unless given (--integrator, --light-selection,
@@ -55,8 +69,12 @@ SCENES = {
     "gltf": ("a textured glTF model under an HDR sky with a sun", None, "tools/make_race_gltf.py"),
     "many-lights": ("a hall of 112 small lamps", "assets/many_lights/many_lights.json", None),
     "window": ("a closed room lit by sky and sun through a window", None, "tools/make_window_room.py"),
-    "mesh": ("a Cornell room around a displaced blob of 131,072 triangles", None, "tools/make_mesh_room.py"),
+    "mesh": ("a Cornell room around a displaced blob of 81,920 triangles", None, "tools/make_mesh_room.py"),
+    "checker": ("the Cornell box with a checker-textured floor", "assets/cornell_checker/cornell_checker.json",
+                None),
 }
+# --suite: the scenes of issue 35 (the checker floor is the Cornell box's story again)
+SUITE = ("cornell", "glass", "gltf", "many-lights", "window", "mesh")
 
 # The analytic scene (tools/make_lamp_plane.py): a Lambertian plane of albedo 0.5 under a one-sided square
 # lamp of radiance 1, side 2, 1 above; under the lamp's centre its radiance is 0.5 x the form factor
@@ -210,7 +228,7 @@ def race(args, name, scene, depth, out):
     r = Renderers(args, scene, depth, args.size, out)
     print("\n== %s (%s), %dx%d, max depth %d, %d threads; fragpath: %s" %
           (name, scene, args.size, args.size, depth, args.threads,
-           " ".join(r.fragpath("N", "S", "OUT")[2:])), flush=True)
+           "fragpath " + " ".join(r.fragpath("N", "S", "OUT")[1:])), flush=True)
     refs = references(args, r, label)
     renderers = ("fragpath", "cycles")
     sample_counts = [int(s) for s in args.spp.split(",")]
@@ -351,11 +369,40 @@ def check(args, name, scene, depth, out):
             "ratio": ratio, "sigma": sigma, "largest_block_z": worst}
 
 
+def rows(path):
+    """BENCHMARKS.md table rows from a --json file: per race and reference, each sample count's CPU
+    seconds less set-up, RMSE and mean / reference for both renderers, and fragpath's CPU time for
+    Cycles' error over Cycles'."""
+    report = json.load(open(path))
+    print("<!-- %s, commit %s, %d threads: tools/race_cycles.py %s -->" %
+          (report["date"], report["commit"], report["threads"], " ".join(report["argv"])))
+    print("| scene | depth | reference | spp | fragpath CPU s | fragpath RMSE | fragpath mean / ref | Cycles CPU s | "
+          "Cycles RMSE | Cycles mean / ref | fragpath's CPU time for Cycles' error, over Cycles' |")
+    print("|---|---|---|---|---|---|---|---|---|---|---|")
+    for race in report["races"]:
+        for kind in list(race["references"]) + (["own"] if len(race["references"]) == 2 else []):
+            for spp in race["spp"]:
+                f, c = (race["summary"][n]["spp"][str(spp)] for n in ("fragpath", "cycles"))
+                crossing = next(x for x in race["crossings"] if x["reference"] == kind and
+                                x["renderer"] == "fragpath" and x["spp"] == spp)
+                ratio = lambda x: "%.4f" % x["mean_over_reference"][kind] if kind != "own" else "-"
+                print("| %s | %d | %s | %d | %.2f | %.5f | %s | %.2f | %.5f | %s | %.2fx |" %
+                      (race["scene"], race["max_depth"], race["references"].get(kind, {}).get("what", "own"), spp,
+                       f["cpu_s_less_setup"], f["rmse"][kind], ratio(f), c["cpu_s_less_setup"], c["rmse"][kind],
+                       ratio(c), crossing["ratio"]))
+    if "analytic" in report:
+        a = report["analytic"]
+        for n, r in a["renderers"].items():
+            print("| analytic: plane under a square lamp, %dx%d, %d spp | %s | mean %.6f +- %.6f | closed form %.6f | "
+                  "%+.3f%% |" % (a["size"], a["size"], a["spp"], n, r["mean"], r["standard_error"], a["closed_form"],
+                                100 * r["offset"]))
+
+
 def main():
     parser = argparse.ArgumentParser(description="error against CPU time, fragpath against Cycles")
     parser.add_argument("--scene", default="cornell",
                         help="a race scene's name (%s), a list of them, or a fragpath scene file" % ", ".join(SCENES))
-    parser.add_argument("--suite", action="store_true", help="every race scene")
+    parser.add_argument("--suite", action="store_true", help="the race scenes: " + ", ".join(SUITE))
     parser.add_argument("--scene-dir", default=os.path.join(ROOT, "build/race_scenes"),
                         help="where generated scenes are written (once)")
     parser.add_argument("--fragpath", default=os.path.join(ROOT, "build/fragpath"))
@@ -384,7 +431,11 @@ def main():
     parser.add_argument("--check-blocks", type=int, default=4)
     parser.add_argument("--out", default=None, help="where the renders go (default: a new temporary folder)")
     parser.add_argument("--json", default=None, help="write every figure to this file")
+    parser.add_argument("--rows", default=None, metavar="FILE.json",
+                        help="print BENCHMARKS.md's table rows from a --json file, and nothing else")
     args = parser.parse_args()
+    if args.rows:
+        return rows(args.rows)
     ensure_blender()
     out = args.out or tempfile.mkdtemp(prefix="race_")
     os.makedirs(out, exist_ok=True)
@@ -393,7 +444,7 @@ def main():
     if args.analytic:
         report["analytic"] = analytic(args, out)
     else:
-        names = list(SCENES) if args.suite else args.scene.split(",")
+        names = list(SUITE) if args.suite else args.scene.split(",")
         depths = [int(d) for d in args.max_depth.split(",")]
         if args.reference and (len(names) > 1 or len(depths) > 1 or args.reference_renderer == "both"):
             raise SystemExit("--reference is one image: give one scene, one depth and one reference renderer")
