@@ -80,6 +80,9 @@ SUITE = ("cornell", "glass", "gltf", "many-lights", "window", "mesh")
 # lamp of radiance 1, side 2, 1 above; under the lamp's centre its radiance is 0.5 x the form factor
 # (tests/render/analytic_lamp.h, lampFormFactor).
 ANALYTIC_GENERATOR = "tools/make_lamp_plane.py"
+# And a grey plane under a sky with a small bright sun (tools/make_sky_plane.py, which writes the
+# expected radiance).
+SKY_PLANE_GENERATOR = "tools/make_sky_plane.py"
 
 
 def corner_form_factor(x, y):
@@ -290,28 +293,38 @@ def race(args, name, scene, depth, out):
 
 
 def analytic(args, out):
-    """Each renderer's mean radiance over a spot under the lamp's centre against the closed form."""
-    scene = generated(ANALYTIC_GENERATOR, os.path.join(args.scene_dir, "analytic"))
+    """Each renderer's mean radiance over a spot where the radiance is known, against that value: the
+    plane under a square lamp (a closed form) and the plane under a sky with a small sun (a sum over
+    the map's texels)."""
+    lamp = generated(ANALYTIC_GENERATOR, os.path.join(args.scene_dir, "analytic"))
+    sky = generated(SKY_PLANE_GENERATOR, os.path.join(args.scene_dir, "analytic_sky"))
+    with open(os.path.join(os.path.dirname(sky), "expected.json")) as f:
+        sky_radiance = json.load(f)["mean"]
+    # fragpath's default light takes the dim lamp over an open plane for glowing detail and adds its
+    # studio environment; the closed form has no other light.
+    cases = (("lamp", "a plane under a square lamp", lamp, ANALYTIC_RADIANCE, ["--environment", "none"]),
+             ("sky", "a plane under a sky with a small sun", sky, sky_radiance, []))
     size, spp = args.analytic_size, args.analytic_spp
-    r = Renderers(args, scene, 5, size, out)
-    # fragpath's default light takes a dim lamp over an open plane for glowing detail and adds its studio
-    # environment; the closed form has no other light.
-    r.fragpath_extra = ["--environment", "none"]
-    print("analytic scene %s, %dx%d, %d spp, max depth 5; closed form %.6f" % (scene, size, size, spp,
-                                                                               ANALYTIC_RADIANCE))
-    result = {"scene_file": scene, "size": size, "spp": spp, "closed_form": ANALYTIC_RADIANCE, "renderers": {}}
-    for n in ("fragpath", "cycles"):
-        seconds, image, path = r.render(n, spp, 7, "analytic_" + n)
-        pixels = [sum(image[i:i + 3]) / 3 for i in range(0, len(image), 3)]
-        mean = statistics.mean(pixels)
-        # Standard error as if the pixels were independent estimates (fragpath spreads its samples as blue
-        # noise across pixels, which makes its true error smaller: the figure is then an upper bound).
-        error = statistics.stdev(pixels) / math.sqrt(len(pixels))
-        offset = mean / ANALYTIC_RADIANCE - 1
-        print("%-9s mean %.6f +- %.6f (1 sigma): %+.3f%% +- %.3f%% from the closed form  (%.1f CPU s)" %
-              (n, mean, error, 100 * offset, 100 * error / ANALYTIC_RADIANCE, seconds))
-        result["renderers"][n] = {"mean": mean, "standard_error": error, "offset": offset, "cpu_s": seconds,
-                                  "image": path, "command": r.command(n, spp, 7, path)}
+    result = {"size": size, "spp": spp, "cases": []}
+    for key, what, scene, expected, extra in cases:
+        r = Renderers(args, scene, 5, size, out)
+        r.fragpath_extra = extra
+        print("analytic: %s (%s), %dx%d, %d spp, max depth 5; expected %.6f" % (what, scene, size, size, spp,
+                                                                                expected))
+        case = {"case": key, "what": what, "scene_file": scene, "expected": expected, "renderers": {}}
+        for n in ("fragpath", "cycles"):
+            seconds, image, path = r.render(n, spp, 7, "analytic_%s_%s" % (key, n))
+            pixels = [sum(image[i:i + 3]) / 3 for i in range(0, len(image), 3)]
+            mean = statistics.mean(pixels)
+            # Standard error as if the pixels were independent estimates (fragpath spreads its samples
+            # as blue noise across pixels, which makes its true error smaller: then an upper bound).
+            error = statistics.stdev(pixels) / math.sqrt(len(pixels))
+            offset = mean / expected - 1
+            print("  %-9s mean %.6f +- %.6f (1 sigma): %+.3f%% +- %.3f%%  (%.1f CPU s)" %
+                  (n, mean, error, 100 * offset, 100 * error / expected, seconds))
+            case["renderers"][n] = {"mean": mean, "standard_error": error, "offset": offset, "cpu_s": seconds,
+                                    "image": path, "command": r.command(n, spp, 7, path)}
+        result["cases"].append(case)
     return result
 
 
@@ -392,10 +405,11 @@ def rows(path):
                        ratio(c), crossing["ratio"]))
     if "analytic" in report:
         a = report["analytic"]
-        for n, r in a["renderers"].items():
-            print("| analytic: plane under a square lamp, %dx%d, %d spp | %s | mean %.6f +- %.6f | closed form %.6f | "
-                  "%+.3f%% |" % (a["size"], a["size"], a["spp"], n, r["mean"], r["standard_error"], a["closed_form"],
-                                100 * r["offset"]))
+        for case in a["cases"]:
+            for n, r in case["renderers"].items():
+                print("| analytic: %s, %dx%d, %d spp | %s | mean %.6f +- %.6f | expected %.6f | %+.3f%% |" %
+                      (case["what"], a["size"], a["size"], a["spp"], n, r["mean"], r["standard_error"],
+                       case["expected"], 100 * r["offset"]))
 
 
 def main():

@@ -54,23 +54,42 @@ def write_exr(path, width, height, texel):
                 f.write(struct.pack("<%df" % width, *(t[c] for t in row)))
 
 
-def write_sky(path, width, height, sun, sun_radiance, sun_texels=2):
-    """An equirectangular sky as an .exr (write_exr): blue above the horizon, brighter towards it, a
-    brown ground below, and a sun of `sun_texels` x `sun_texels` texels of radiance `sun_radiance` (RGB)
-    centred on direction `sun`."""
+def sky(width, height, sun, sun_radiance, sun_texels=2):
+    """texel(x, y) of an equirectangular sky (y = 0 the top row): blue above the horizon, brighter
+    towards it, a brown ground below, and a sun of `sun_texels` x `sun_texels` texels of radiance
+    `sun_radiance` (RGB) centred on direction `sun`."""
     su, sv = texel_of_direction(sun)
     sx, sy = int(su * width) - sun_texels // 2, int(sv * height) - sun_texels // 2
 
     def texel(x, y):
         if sx <= x < sx + sun_texels and sy <= y < sy + sun_texels:
-            return sun_radiance
+            return tuple(sun_radiance)
         d = direction_of_texel((x + 0.5) / width, (y + 0.5) / height)
         if d[1] <= 0:
             return (0.2, 0.16, 0.12)
         horizon = (1 - d[1]) ** 3
         return (0.25 + 0.55 * horizon, 0.4 + 0.45 * horizon, 0.9 + 0.1 * horizon)
 
-    write_exr(path, width, height, texel)
+    return texel
+
+
+def write_sky(path, width, height, sun, sun_radiance, sun_texels=2):
+    """sky(...) written as an .exr (write_exr)."""
+    write_exr(path, width, height, sky(width, height, sun, sun_radiance, sun_texels))
+
+
+def irradiance_from_above(width, height, texel):
+    """RGB irradiance on an upward-facing surface under an equirectangular map of an even height,
+    radiance constant over each texel: the sum of radiance x the texel's cosine-weighted solid angle,
+    (2 pi / width) x (sin^2 theta1 - sin^2 theta0) / 2 for its rows' polar angles theta0, theta1."""
+    total = [0.0, 0.0, 0.0]
+    for y in range(height // 2):
+        t0, t1 = math.pi * y / height, math.pi * (y + 1) / height
+        weight = 2 * math.pi / width * (math.sin(t1) ** 2 - math.sin(t0) ** 2) / 2
+        for x in range(width):
+            for c, value in enumerate(texel(x, y)):
+                total[c] += value * weight
+    return total
 
 
 class Obj:
