@@ -25,7 +25,8 @@
 #   renderer's own reference). Base colour textures are decoded from sRGB before filtering.
 # - The environment: a constant colour, or an equirectangular map looked up as fragpath's
 #   directionToUv (glsl/common/lights.glsl: u = 0.5 + atan2(x, -z) / 2 pi with +y up, turned by
-#   "rotation" degrees about +y; the nearest texel, no filtering) times "intensity".
+#   "rotation" degrees about +y; the nearest texel, no filtering) times "intensity" (which a constant
+#   colour ignores, as in fragpath).
 # - A pinhole camera with the vertical field of view, a 1-pixel box filter, the same bounce limit for
 #   every kind of bounce, no adaptive sampling, no denoising, no clamping, a fixed thread count.
 import json
@@ -45,6 +46,9 @@ mesh_path = os.path.join(scene_dir, scene_file["mesh"])
 width, height, spp, depth = job["width"], job["height"], job["spp"], job["max_depth"]
 if scene_file.get("lights"):
     raise SystemExit("cycles_render.py: scene files with punctual \"lights\" are not matched")
+if "camera" not in scene_file:
+    raise SystemExit("cycles_render.py: %s has no \"camera\": the race matches only the scene file's camera"
+                     % scene_path)
 cam = scene_file["camera"]
 
 
@@ -272,10 +276,12 @@ def world_from(environment):
     if environment is None:
         background.inputs["Strength"].default_value = 0.0
         return world
-    background.inputs["Strength"].default_value = float(environment.get("intensity", 1.0))
     if "color" in environment:
+        # fragpath's intensity scales a map only (src/render/renderer.cpp, environmentColor_).
+        background.inputs["Strength"].default_value = 1.0
         background.inputs["Color"].default_value = (*environment["color"], 1.0)
         return world
+    background.inputs["Strength"].default_value = float(environment.get("intensity", 1.0))
     texture = nodes.new("ShaderNodeTexEnvironment")
     texture.image = bpy.data.images.load(os.path.join(scene_dir, environment["map"]))
     texture.image.colorspace_settings.name = "Linear"
