@@ -135,6 +135,8 @@ def time_for_error(curve, error):
         return float("nan")
     for (t0, e0), (t1, e1) in zip(points, points[1:]):
         if e1 <= error or (t1, e1) == points[-1]:
+            if t1 <= t0 or e0 <= 0 or e1 <= 0 or e1 == e0:
+                return float("nan")  # times too short to tell apart (less set-up), or no slope
             slope = math.log(e1 / e0) / math.log(t1 / t0)
             return t0 * math.exp(math.log(error / e0) / slope)
     return float("nan")
