@@ -219,12 +219,19 @@ def references(args, r, label):
             out[renderer] = (read_pfm(args.reference), args.reference, "given")
             continue
         extra = ["--integrator", args.reference_integrator] if args.reference_integrator else []
-        path = os.path.join(r.out, "%s_reference_%s.pfm" % (label, renderer))
-        command = r.fragpath(args.reference_spp, 1000, path, extra) if renderer == "fragpath" else \
-            r.cycles(args.reference_spp, 1000, path)
-        seconds = timed(command, r.env)
-        print("  reference: %s, %d spp, %.1f CPU s -> %s" % (renderer, args.reference_spp, seconds, path), flush=True)
-        out[renderer] = (read_pfm(path), path, "%s %d spp" % (renderer, args.reference_spp))
+        integrator = "_" + args.reference_integrator if args.reference_integrator and renderer == "fragpath" else ""
+        path = os.path.join(r.out, "%s_%d_reference_%s%s_%d.pfm" % (label, r.size, renderer, integrator,
+                                                                   args.reference_spp))
+        what = "%s %d spp" % (renderer, args.reference_spp)
+        if os.path.exists(path):
+            # A reference of the same scene, depth, size, renderer and samples in --out: a rerun reuses it.
+            print("  reference: %s, reused %s" % (what, path), flush=True)
+        else:
+            command = r.fragpath(args.reference_spp, 1000, path, extra) if renderer == "fragpath" else \
+                r.cycles(args.reference_spp, 1000, path)
+            seconds = timed(command, r.env)
+            print("  reference: %s, %.1f CPU s -> %s" % (what, seconds, path), flush=True)
+        out[renderer] = (read_pfm(path), path, what)
     return out
 
 
@@ -445,7 +452,9 @@ def main():
     parser.add_argument("--check-size", type=int, default=64)
     parser.add_argument("--check-spp", type=int, default=256)
     parser.add_argument("--check-blocks", type=int, default=4)
-    parser.add_argument("--out", default=None, help="where the renders go (default: a new temporary folder)")
+    parser.add_argument("--out", default=None,
+                        help="where the renders go (default: a new temporary folder); references already there "
+                             "(same scene, depth, size, renderer, spp) are reused: remove fragpath's after changing fragpath")
     parser.add_argument("--json", default=None, help="write every figure to this file")
     parser.add_argument("--rows", default=None, metavar="FILE.json",
                         help="print BENCHMARKS.md's table rows from a --json file, and nothing else")
