@@ -17,13 +17,13 @@
 #
 # The lead's race, on a quiet machine: each scene at max depth 64, 12 and 5 (the defaults), 256x256,
 # 16, 64 and 256 spp, 3 runs, against Cycles' and fragpath's 4096-spp references; one command a scene:
-#   tools/race_cycles.py --scene cornell     --reference-renderer both --json race_cornell.json
-#   tools/race_cycles.py --scene glass       --reference-renderer both --json race_glass.json
-#   tools/race_cycles.py --scene gltf        --reference-renderer both --json race_gltf.json
-#   tools/race_cycles.py --scene many-lights --reference-renderer both --json race_many_lights.json
-#   tools/race_cycles.py --scene window      --reference-renderer both --json race_window.json
-#   tools/race_cycles.py --scene mesh        --reference-renderer both --json race_mesh.json
-#   tools/race_cycles.py --suite --reference-renderer both --json race.json   # the six in one go
+#   tools/race_cycles.py --scene cornell     --reference-renderer both --out build/race --json race_cornell.json
+#   tools/race_cycles.py --scene glass       --reference-renderer both --out build/race --json race_glass.json
+#   tools/race_cycles.py --scene gltf        --reference-renderer both --out build/race --json race_gltf.json
+#   tools/race_cycles.py --scene many-lights --reference-renderer both --out build/race --json race_many_lights.json
+#   tools/race_cycles.py --scene window      --reference-renderer both --out build/race --json race_window.json
+#   tools/race_cycles.py --scene mesh        --reference-renderer both --out build/race --json race_mesh.json
+#   tools/race_cycles.py --suite --reference-renderer both --out build/race --json race.json   # the six in one go
 #   tools/race_cycles.py --analytic --json analytic.json   # each renderer's offset from a closed form
 #   tools/race_cycles.py --rows race.json                   # BENCHMARKS.md's table rows from a --json file
 # On the glTF scene Cycles cannot express fragpath's material exactly (tools/race/cycles_render.py):
