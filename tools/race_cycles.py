@@ -110,6 +110,11 @@ def timed(command, env=None):
         sys.stderr.write(result.stderr.decode(errors="replace")[-4000:])
         raise SystemExit("failed (%d): %s" % (result.returncode, " ".join(map(shlex.quote, command))))
     after = resource.getrusage(resource.RUSAGE_CHILDREN)
+    if b"--environment none keeps it dark" in result.stderr:
+        # fragpath's default light (README, "Default camera and light"), which Cycles would not have.
+        raise SystemExit("fragpath added its default light to the scene, which Cycles does not: give the scene "
+                         "file light of its own, or --fragpath-args \"--environment none\"\n" +
+                         result.stderr.decode(errors="replace"))
     return (after.ru_utime - before.ru_utime) + (after.ru_stime - before.ru_stime)
 
 
