@@ -21,7 +21,7 @@
 #   1 - F(wo) (Fresnel node). fragpath's base has a second factor, 1 - F(wi) on the light's side, which
 #   no Cycles node can see: 1 - F_dr = 0.908 (the cosine-weighted mean of 1 - F at index 1.5) stands for
 #   it, exact under uniform light; under a sun 50 degrees from the normal (1 - F = 0.94) Cycles' base is
-#   3 % darker (the race's glTF scene: Cycles 1.4 % darker over the image; race it against each
+#   3 % darker (the race's glTF scene: Cycles 1.8 % darker over the image; race it against each
 #   renderer's own reference). Base colour textures are decoded from sRGB before filtering.
 # - The environment: a constant colour, or an equirectangular map looked up as fragpath's
 #   directionToUv (glsl/common/lights.glsl: u = 0.5 + atan2(x, -z) / 2 pi with +y up, turned by
