@@ -449,7 +449,8 @@ def main():
     parser.add_argument("--caustics", default=None, help="fragpath's (default: its default)")
     parser.add_argument("--fragpath-args", default="", help="more arguments for fragpath, e.g. \"--sampler independent\"")
     parser.add_argument("--analytic", action="store_true",
-                        help="only the analytic scene: each renderer's offset from the closed form")
+                        help="only the analytic scenes (a plane under a square lamp, a plane under a sky with a small sun): "
+                             "each renderer's offset from the known radiance")
     parser.add_argument("--analytic-size", type=int, default=32)
     parser.add_argument("--analytic-spp", type=int, default=16384)
     parser.add_argument("--check", action="store_true",
