@@ -7,6 +7,7 @@ packages=(
   libdraco-dev libmeshoptimizer-dev
   libglfw3-dev libimgui-dev xvfb xauth clang libclang-rt-14-dev
   gnuplot-nox
+  python3-numpy  # Blender's glTF importer needs it (tools/race_cycles.py --scene gltf)
 )
 missing=()
 for p in "${packages[@]}"; do
