@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
 """Writes a Cornell room (assets/cornell/cornell.obj without its two blocks) with a white torus knot of
 many small triangles in their place: a mesh room for measuring BVH traversal of a real mesh at depth 64
-(docs/optimisation-log.md, "Cheaper samples on real scenes"). Nothing is committed: it writes to OUT.
+(docs/optimisation-log.md, "Cheaper samples on real scenes at depth 64"). Nothing is committed: it
+writes to OUT_DIR.
 
 usage (from the repository root): python3 tools/make_cornell_knot.py OUT_DIR [SEGMENTS [SIDES]]
   SEGMENTS x SIDES quads along and around the tube (default 600 x 36: 43,200 triangles)."""
