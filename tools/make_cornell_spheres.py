@@ -72,4 +72,5 @@ def main():
         '  "render": {"width": 512, "height": 512, "spp": 256, "max_depth": 8}\n}\n')
 
 
-main()
+if __name__ == "__main__":  # not on import (tools/make_cornell_knot.py reuses room_lines)
+    main()

@@ -127,7 +127,7 @@ vec3 safeInverse(vec3 d) { return 1.0 / mix(d, vec3(1e-20), lessThan(abs(d), vec
 // stack size is written one SIMD lane at a time, each lane's store behind a branch on its mask, and
 // those stores held a quarter of the glass scene's samples (docs/optimisation-log.md, "The traversal
 // stack as a shift register"): shifting all BVH_STACK_SIZE entries (the renderer sizes the stack to the
-// tree's depth, 3 entries a level: layout::traversalStackEntries) takes more instructions and 13-29 %
+// entries its tree can hold: WideBvh::stackEntries) takes more instructions and 13-29 %
 // less time.
 // Moves the stack by d entries: pushes l1 .. ld (d = 1, 2, 3; l1 ends on top), pops the top (d = -1) or
 // keeps it (d = 0).

@@ -57,9 +57,10 @@ std::string formatRenderStats(const RenderStats& stats) {
                            s.storedTriangles, s.triangles);
     if (s.punctualLights > 0) text += formatText("punctual lights  %u\n", s.punctualLights);
     text += formatText(
-        "bvh              %u nodes, %u leaves, depth %u, leaf size %u..%u (mean %.2f), SAH cost %.2f\n",
+        "bvh              %u nodes, %u leaves, depth %u, leaf size %u..%u (mean %.2f), SAH cost %.2f, "
+        "traversal stack %u\n",
         s.bvh.nodeCount, s.bvh.leafCount, s.bvh.maxDepth, s.bvh.minLeafSize, s.bvh.maxLeafSize,
-        s.bvh.meanLeafSize, s.bvh.sahCost);
+        s.bvh.meanLeafSize, s.bvh.sahCost, s.stackSize);
     text +=
         formatText("bvh build        %.3f s, %.3f CPU-s, threads %d (%.3g triangles/s)\n", s.bvhBuildSeconds,
                    s.bvhBuildCpuSeconds, s.bvhBuildThreads, per(s.storedTriangles, s.bvhBuildSeconds));

@@ -10,9 +10,11 @@ struct Collapser {
     const Bvh& bvh;
     WideBvh& out;
 
-    // Appends the wide node for binary interior node `binary` and, depth first, its descendants.
-    uint32_t node(uint32_t binary, uint32_t depth) {
+    // Appends the wide node for binary interior node `binary` and, depth first, its descendants;
+    // `waiting`: the stack entries its ancestors can leave behind (WideBvh::stackEntries).
+    uint32_t node(uint32_t binary, uint32_t depth, uint32_t waiting) {
         out.depth = std::max(out.depth, depth);
+        out.stackEntries = std::max(out.stackEntries, waiting);
         uint32_t index = uint32_t(out.nodes.size());
         out.nodes.emplace_back();
         const BvhNode& b = bvh.nodes[binary];
@@ -37,11 +39,13 @@ struct Collapser {
         }
         WideBvhNode wide;
         wide.childCount = count;
+        uint32_t interior = 0;
+        for (int i = 0; i < count; ++i) interior += bvh.nodes[children[i]].isLeaf() ? 0 : 1;
         for (int i = 0; i < count; ++i) {
             const BvhNode& c = bvh.nodes[children[i]];
             wide.bounds[i] = c.bounds;
             wide.count[i] = c.count;
-            wide.first[i] = c.isLeaf() ? c.first : node(children[i], depth + 1);
+            wide.first[i] = c.isLeaf() ? c.first : node(children[i], depth + 1, waiting + interior - 1);
         }
         out.nodes[index] = wide;  // after the recursion, which may reallocate
         return index;
@@ -63,7 +67,7 @@ WideBvh collapseToWide(const Bvh& bvh) {
         out.nodes.push_back(wide);
         return out;
     }
-    Collapser{bvh, out}.node(0, 0);
+    Collapser{bvh, out}.node(0, 0, 0);
     return out;
 }
 

@@ -25,6 +25,11 @@ struct WideBvhNode {
 struct WideBvh {
     std::vector<WideBvhNode> nodes;  // nodes[0] is the root; depth first, a node before its children
     uint32_t depth = 0;              // deepest node (root = 0)
+    // The most entries a stack traversal that pushes a node's other interior children and descends into
+    // one (glsl/common/intersect.glsl) can hold: its stack holds only the waiting siblings of the nodes
+    // on the path from the root, so the most, over the interior nodes, of the sum over their ancestors of
+    // each one's interior children but one. At most 3 a level, fewer where children are leaves.
+    uint32_t stackEntries = 0;
 };
 
 // Collapses `bvh` (greedily, as Wald, Benthin & Boulos 2008, "Getting rid of packets", build 4-wide trees): a

@@ -52,13 +52,11 @@ ShaderDefines layoutDefines(bool images) {
     return defines;
 }
 
-uint32_t traversalStackEntries(uint32_t bvhDepth) {
-    uint64_t entries = std::max<uint64_t>(4, 3 * uint64_t(bvhDepth));
-    if (entries > kMaxTraversalStack)
-        throw Error("the scene's BVH is " + std::to_string(bvhDepth) +
-                    " levels deep; the GPU traversal handles at most " +
-                    std::to_string(kMaxTraversalStack / 3) + " levels");
-    return uint32_t(entries);
+uint32_t traversalStackEntries(uint32_t treeEntries) {
+    if (treeEntries > kMaxTraversalStack)
+        throw Error("the scene's BVH needs a traversal stack of " + std::to_string(treeEntries) +
+                    " entries; the GPU traversal handles at most " + std::to_string(kMaxTraversalStack));
+    return std::max<uint32_t>(4, treeEntries);
 }
 
 }  // namespace fp::layout

@@ -13,11 +13,10 @@ ShaderDefines layoutDefines(bool images = false);
 // The most entries glsl/common/intersect.glsl's traversal stack can have (shiftStack's runs).
 constexpr uint32_t kMaxTraversalStack = 259;
 
-// The traversal stack's entries (BVH_STACK_SIZE) for a wide BVH whose deepest node is `bvhDepth` levels
-// below the root: three entries (the hit siblings of the child it descends to) for each level above the
-// deepest, as many as can be, no more, since the shader shifts every entry at every node visit (an
-// instance's subtree goes on the same stack, and the two levels' depths add up in bvhDepth); at least the
-// 4 that shiftStack needs. Throws fp::Error for a tree too deep for kMaxTraversalStack.
-uint32_t traversalStackEntries(uint32_t bvhDepth);
+// The traversal stack's entries (BVH_STACK_SIZE) for a tree whose traversal can hold `treeEntries`
+// (PackedScene::stackEntries): as many as it needs, no more, since the shader shifts every entry at every
+// node visit; at least the 4 that shiftStack needs. Throws fp::Error for a tree that needs more than
+// kMaxTraversalStack.
+uint32_t traversalStackEntries(uint32_t treeEntries);
 
 }  // namespace fp::layout

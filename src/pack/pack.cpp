@@ -167,7 +167,7 @@ void appendTransformNode(const glm::mat4& m, uint32_t root, PackedScene* out) {
 
 // The two-level BVH of a scene with instances (pack/layout.h): the top level over the instances (and
 // the world triangles as one more, untransformed), then the world triangles' BVH, each mesh's, and each
-// instance's pair of transform nodes. Returns the depth a traversal can reach.
+// instance's pair of transform nodes. Returns the most entries a traversal's stack can hold.
 uint32_t packTwoLevel(const Scene& scene, const Bvh& bvh, const std::vector<Bvh>& meshBvhs,
                       const std::vector<uint32_t>& meshTriangleBase, PackedScene* out) {
     struct Entry {
@@ -194,11 +194,11 @@ uint32_t packTwoLevel(const Scene& scene, const Bvh& bvh, const std::vector<Bvh>
     levels.push_back(scene.triangles.empty() ? WideBvh{} : collapseToWide(bvh));
     for (const Bvh& mesh : meshBvhs) levels.push_back(collapseToWide(mesh));
     std::vector<uint32_t> root(levels.size());
-    uint32_t next = uint32_t(topWide.nodes.size()), depth = 0;
+    uint32_t next = uint32_t(topWide.nodes.size()), meshEntries = 0;
     for (size_t k = 0; k < levels.size(); ++k) {
         root[k] = next;
         next += uint32_t(levels[k].nodes.size());
-        depth = std::max(depth, levels[k].depth);
+        meshEntries = std::max(meshEntries, levels[k].stackEntries);
     }
     const uint32_t instanceNodes = next;
     // The top level's leaves become links to their instance's node pair.
@@ -218,7 +218,9 @@ uint32_t packTwoLevel(const Scene& scene, const Bvh& bvh, const std::vector<Bvh>
     out->instanceCount = uint32_t(entries.size());
     out->instanceNodeStart = instanceNodes;
     out->nodeCount = uint32_t(out->nodes.size() / layout::kNodeTexels);
-    return topWide.depth + 1 + depth;
+    // Every top-level child is a link to be visited (an instance is one), so up to three waiting siblings
+    // a level down to the instance's node pair, which pushes none; then its mesh's own.
+    return 3 * (topWide.depth + 1) + meshEntries;
 }
 
 }  // namespace
@@ -381,11 +383,11 @@ PackedScene packScene(const Scene& scene, const Bvh& bvh, const std::vector<Bvh>
 
     if (scene.instances.empty()) {
         WideBvh wide = collapseToWide(bvh);
-        out.bvhDepth = wide.depth;
+        out.stackEntries = wide.stackEntries;
         appendNodes(std::move(wide), 0, 0, &out);
         out.nodeCount = uint32_t(out.nodes.size() / layout::kNodeTexels);
     } else {
-        out.bvhDepth = packTwoLevel(scene, bvh, meshBvhs, meshTriangleBase, &out);
+        out.stackEntries = packTwoLevel(scene, bvh, meshBvhs, meshTriangleBase, &out);
     }
     return out;
 }

@@ -36,7 +36,9 @@ struct PackedScene {
     // triangles as one more when there are any) and the node where their transform pairs start; 0 and
     // 0 otherwise.
     uint32_t instanceCount = 0, instanceNodeStart = 0;
-    uint32_t bvhDepth = 0;         // deepest (wide) node, root = 0: the traversal stack grows with it
+    // The most entries the traversal stack can hold (WideBvh::stackEntries; with instances, the top
+    // level's and the deepest mesh's together): the shader's stack is that deep (layout_defines.h).
+    uint32_t stackEntries = 0;
     float totalLightPower = 0.0f;  // sum over lights of their power / pi (scene/light_selection.h)
     // The light tree's root texel in `lights` and its depth (pack/light_tree.h); lightTreeFirst 0: none.
     uint32_t lightTreeFirst = 0, lightTreeDepth = 0;

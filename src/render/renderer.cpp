@@ -84,7 +84,7 @@ Renderer::Renderer(const Scene& scene, ShaderLibrary shaders, const BvhBuildOpti
     texcoordSlots_ = packed.texcoordSlots;
     textureSampling_ = packed.textureSampling;
     vertexColors_ = !packed.colors.empty();
-    stats_.stackSize = layout::traversalStackEntries(packed.bvhDepth);
+    stats_.stackSize = layout::traversalStackEntries(packed.stackEntries);
     lightCount_ = packed.lightCount;
     punctualCount_ = packed.punctualCount;
     lightTreeFirst_ = packed.lightTreeFirst;

@@ -3,6 +3,8 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <random>
+#include <vector>
 
 #include "bvh/wide_bvh.h"
 #include "bvh_test_util.h"
@@ -69,6 +71,63 @@ TEST(WideBvh, CollapseKeepsEveryLeafOnceAndFillsNodes) {
         for (const BvhNode& n : bvh.nodes) binaryInterior += n.isLeaf() ? 0 : 1;
         for (const WideBvhNode& n : wide.nodes) absorbed += size_t(n.childCount - 1);
         EXPECT_EQ(absorbed, binaryInterior) << m.name;
+    }
+}
+
+// The most entries the stack of glsl/common/intersect.glsl's traversal holds when every box is hit: at each
+// node the interior children in a random order, the first descended into and the others pushed, the
+// leaves tested in place; each pop visits the top entry.
+uint32_t deepestStackOfAFullTraversal(const WideBvh& wide, std::mt19937& rng) {
+    std::vector<uint32_t> stack;
+    uint32_t node = 0, deepest = 0;
+    while (true) {
+        const WideBvhNode& n = wide.nodes[node];
+        std::vector<uint32_t> interior;
+        for (int i = 0; i < n.childCount; ++i)
+            if (n.count[i] == 0) interior.push_back(n.first[i]);
+        std::shuffle(interior.begin(), interior.end(), rng);
+        if (interior.empty()) {
+            if (stack.empty()) return deepest;
+            node = stack.back();
+            stack.pop_back();
+            continue;
+        }
+        for (size_t i = 1; i < interior.size(); ++i) stack.push_back(interior[i]);
+        deepest = std::max(deepest, uint32_t(stack.size()));
+        node = interior[0];
+    }
+}
+
+TEST(WideBvh, StackEntriesBoundEveryTraversalAndAreReachedByOne) {
+    // stackEntries sizes the shader's stack (pack.h): a traversal that needs more would lose subtrees,
+    // so no order of visits may exceed it; and it is no larger than some order needs, since every entry
+    // costs the shader a shift at every node visit.
+    std::mt19937 rng(7);
+    for (const test::NamedMesh& m : test::testMeshes()) {
+        const AabbArray bounds = triangleBounds(m.mesh);
+        if (bounds.empty()) continue;
+        WideBvh wide = collapseToWide(buildBinnedSah(bounds));
+        uint32_t deepest = 0;
+        for (int k = 0; k < 20; ++k) {
+            uint32_t d = deepestStackOfAFullTraversal(wide, rng);
+            EXPECT_LE(d, wide.stackEntries) << m.name;
+            deepest = std::max(deepest, d);
+        }
+        EXPECT_LE(wide.stackEntries, 3 * wide.depth) << m.name;
+        // Reached: the path that descends, at every level, into the child whose subtree needs the most.
+        std::vector<uint32_t> need(wide.nodes.size(), 0);  // the most entries below a node, its own included
+        for (size_t i = wide.nodes.size(); i-- > 0;) {
+            const WideBvhNode& n = wide.nodes[i];
+            uint32_t interior = 0, most = 0;
+            for (int c = 0; c < n.childCount; ++c)
+                if (n.count[c] == 0) {
+                    ++interior;
+                    most = std::max(most, need[n.first[c]]);
+                }
+            need[i] = interior == 0 ? 0 : interior - 1 + most;
+        }
+        EXPECT_EQ(need[0], wide.stackEntries) << m.name;
+        if (wide.stackEntries > 0) EXPECT_GE(deepest, 1u) << m.name;
     }
 }
 

@@ -125,14 +125,14 @@ TEST(GpuTraversal, SmallTrianglesFarFromTheOriginMatchBruteForce) {
     expectDepthMatchesBruteForce(s, c);
 }
 
-TEST(GpuTraversal, TheStackHoldsThreeEntriesALevelAndRefusesTreesTooDeepForIt) {
-    // The shader shifts every entry at every node visit, so the stack is as deep as the tree needs, no
-    // deeper; a tree it cannot hold is an error, not lost subtrees.
+TEST(GpuTraversal, TheStackHoldsWhatTheTreeNeedsAndRefusesTreesThatNeedTooMuch) {
+    // The shader shifts every entry at every node visit, so the stack is as deep as the tree needs
+    // (WideBvh::stackEntries), no deeper; a tree it cannot hold is an error, not lost subtrees.
     EXPECT_EQ(layout::traversalStackEntries(0), 4u);
-    EXPECT_EQ(layout::traversalStackEntries(10), 30u);
-    EXPECT_EQ(layout::traversalStackEntries(86), 258u);
-    EXPECT_LE(layout::traversalStackEntries(86), layout::kMaxTraversalStack);
-    EXPECT_THROW(layout::traversalStackEntries(87), Error);
+    EXPECT_EQ(layout::traversalStackEntries(3), 4u);
+    EXPECT_EQ(layout::traversalStackEntries(30), 30u);
+    EXPECT_EQ(layout::traversalStackEntries(layout::kMaxTraversalStack), layout::kMaxTraversalStack);
+    EXPECT_THROW(layout::traversalStackEntries(layout::kMaxTraversalStack + 1), Error);
 }
 
 TEST(GpuTraversal, EmptyChildSlotsAreNeverEntered) {
