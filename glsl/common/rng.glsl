@@ -74,8 +74,9 @@ vec2 randAt(uint pair) {
 // Sobol dimensions, its index shuffled and its digits Owen-scrambled with hashes of (seed, d): the
 // samples of one pixel in one pair are a (0, 2)-sequence, so every power-of-two prefix puts one point in
 // each elementary interval (a pixel's jitter, a light's point, a BSDF direction: all stratified), and
-// pairs are independent of each other (Burley's padding by independent shuffles). rand() is the first
-// coordinate of a pair of its own.
+// pairs are independent of each other (Burley's padding by independent shuffles), except pairs 0 and 1,
+// the pixel jitter and the first hit's first pair, which are one 4D Sobol point (kJointPairs, below; pair 1
+// then a (t, 2)-sequence with t <= 2). rand() is the first coordinate of a pair of its own.
 //
 // Blue noise over the screen (after Ahmed & Wonka 2020, "Screen-space blue-noise diffusion of Monte
 // Carlo sampling error via hierarchical ordering of pixels", ACM TOG 39(6)): the scramble is the same
@@ -182,45 +183,27 @@ uvec3 gZOrderOf = uvec3(0xffffffffu);  // the (pixel, seed) gZOrderReversed belo
 const uint kCoherentBlockLevels = 3u;
 uint gCoherentBlockKey;
 
-void samplerInit(uint seed, uvec2 pixel, uint sampleIndex) {
-    if (gZOrderOf != uvec3(pixel, seed)) {  // once per pixel of a pass, not once per sample
-        gZOrderReversed = bitfieldReverse(shuffledZOrder(pixel, seed));
-        gZOrderOf = uvec3(pixel, seed);
-    }
-    gSampleReversed = bitfieldReverse(sampleIndex);
-    uvec2 block = pixel >> kCoherentBlockLevels;
-    gCoherentBlockKey = block.x | (block.y << 16u);
-}
-
-// Digit q of the result is the XOR of the bits i of z with i a subset of q (a subset, or zeta,
-// transform over GF(2), the transpose of sobolSecondReversed's).
-uint subsetParities(uint z) {
-    z ^= (z << 1u) & 0xaaaaaaaau;
-    z ^= (z << 2u) & 0xccccccccu;
-    z ^= (z << 4u) & 0xf0f0f0f0u;
-    z ^= (z << 8u) & 0xff00ff00u;
-    return z ^ (z << 16u);
-}
-
 // Point k of Sobol dimensions 2 and 3, bits reversed (bit q the digit of 2^-(q+1)). Their primitive
 // polynomials x^2 + x + 1 and x^3 + x + 1 and initial direction numbers (1, 3) and (1, 3, 1) are Joe &
 // Kuo's (2008, "Constructing Sobol sequences with better two-dimensional projections", SIAM J. Sci.
 // Comput. 30(5), table new-joe-kuo-6.21201); direction number v_i (the column of index bit i - 1) follows
 // Bratley & Fox's recurrence (their eq. 2): v_i = v_{i-2} ^ (v_{i-2} >> 2) ^ v_{i-1} and v_i = v_{i-3} ^
 // (v_{i-3} >> 3) ^ v_{i-2}. Each is made as the loop reaches its bit, so a sample costs a loop over the
-// bits of k (ten at 1024 spp) and reads no table.
+// bits of k (ten at 1024 spp) and reads no table, once per sample (samplerInit).
 uvec2 sobolDimensionsTwoAndThreeReversed(uint k) {
+    // Kept reversed from the start (reverse(v >> s) = reverse(v) << s): v_1, v_2 = 2^31, 3 x 2^30 and
+    // v_3 = 2^29 reversed are 1, 3 and 4.
     uvec2 point = uvec2(0u);
-    uint x0 = 0x80000000u, x1 = 0xc0000000u;                    // v_i, v_{i+1} of dimension 2
-    uint y0 = 0x80000000u, y1 = 0xc0000000u, y2 = 0x20000000u;  // v_i .. v_{i+2} of dimension 3
+    uint x0 = 1u, x1 = 3u;          // v_i, v_{i+1} of dimension 2
+    uint y0 = 1u, y1 = 3u, y2 = 4u;  // v_i .. v_{i+2} of dimension 3
     for (; k != 0u; k >>= 1u) {
         if ((k & 1u) != 0u) point ^= uvec2(x0, y0);
-        uint x = x0 ^ (x0 >> 2u) ^ x1;
-        uint y = y0 ^ (y0 >> 3u) ^ y1;
+        uint x = x0 ^ (x0 << 2u) ^ x1;
+        uint y = y0 ^ (y0 << 3u) ^ y1;
         x0 = x1, x1 = x;
         y0 = y1, y1 = y2, y2 = y;
     }
-    return uvec2(bitfieldReverse(point.x), bitfieldReverse(point.y));
+    return point;
 }
 
 // Pairs 0 and 1 of the camera stream, the pixel jitter and the first hit's first pair (nee's point on a
@@ -237,10 +220,30 @@ uvec2 sobolDimensionsTwoAndThreeReversed(uint k) {
 #define SOBOL_JOINT_PAIRS 2u
 #endif
 const uint kJointPairs = SOBOL_JOINT_PAIRS;
+uvec4 gJointPoint;  // the sample's point in Sobol dimensions 0 to 3, bits reversed
 
-uvec2 jointSobolReversed(uint pair, uint k) {
-    if (pair == 0u) return uvec2(k, sobolSecondReversed(k));
-    return sobolDimensionsTwoAndThreeReversed(k);
+void samplerInit(uint seed, uvec2 pixel, uint sampleIndex) {
+    if (gZOrderOf != uvec3(pixel, seed)) {  // once per pixel of a pass, not once per sample
+        gZOrderReversed = bitfieldReverse(shuffledZOrder(pixel, seed));
+        gZOrderOf = uvec3(pixel, seed);
+    }
+    gSampleReversed = bitfieldReverse(sampleIndex);
+    // Here, not in sobolPair: llvmpipe runs both sides of a branch its lanes disagree on, and the lanes of
+    // paths at different bounces would pay the loop for every pair they draw.
+    gJointPoint = uvec4(sampleIndex, sobolSecondReversed(sampleIndex),
+                        sobolDimensionsTwoAndThreeReversed(sampleIndex));
+    uvec2 block = pixel >> kCoherentBlockLevels;
+    gCoherentBlockKey = block.x | (block.y << 16u);
+}
+
+// Digit q of the result is the XOR of the bits i of z with i a subset of q (a subset, or zeta,
+// transform over GF(2), the transpose of sobolSecondReversed's).
+uint subsetParities(uint z) {
+    z ^= (z << 1u) & 0xaaaaaaaau;
+    z ^= (z << 2u) & 0xccccccccu;
+    z ^= (z << 4u) & 0xf0f0f0f0u;
+    z ^= (z << 8u) & 0xff00ff00u;
+    return z ^ (z << 16u);
 }
 
 vec2 sobolPair(bool blockWide) {
@@ -254,13 +257,12 @@ vec2 sobolPair(bool blockWide) {
     uint pair = rngKey.w;
     uvec4 h = pcg4d(uvec4(rngKey.z, pair, scrambleKey, 0x0b1ad5u));
     ++rngKey.w;
-    uvec2 point;  // the Sobol point, bits reversed, before the pixel's shift and the scramble
-    if (pair < kJointPairs) {
-        point = jointSobolReversed(pair, gRngSample);
-    } else {
-        uint i = bitfieldReverse(laineKarrasPermutation(gSampleReversed, h.x));  // shuffle the samples, per pair
-        point = uvec2(i, sobolSecondReversed(i));
-    }
+    uint i = bitfieldReverse(laineKarrasPermutation(gSampleReversed, h.x));  // shuffle the samples, per pair
+    // The Sobol point, bits reversed, before the pixel's shift and the scramble (selects, not a branch: a
+    // branch costs llvmpipe both sides and its masks).
+    uvec2 point = pair >= kJointPairs ? uvec2(i, sobolSecondReversed(i))
+                  : pair == 0u        ? gJointPoint.xy
+                                      : gJointPoint.zw;
     // The pixel's Z-order index, Owen-scrambled per pair.
     uint z = lightStream || blockWide ? 0u
                          : bitfieldReverse(laineKarrasPermutation(gZOrderReversed, h.w)) &

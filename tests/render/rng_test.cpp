@@ -157,9 +157,9 @@ bool isNet(const std::vector<std::array<float, 4>>& points, int dims, int m, int
 // Owen-scrambled Sobol points (Burley 2020; a nested scramble maps elementary boxes onto elementary
 // boxes, so it keeps these properties). Pair 0, the pixel jitter, is a (0, 2)-sequence: every
 // power-of-two prefix is a (0, m, 2)-net. Pairs 0 and 1 are one 4D Sobol point (rng.glsl,
-// jointSobolReversed): every prefix is a (t, m, 4)-net with t <= 3 (Sobol dimensions 0 to 3; computed
+// kJointPairs): every prefix is a (t, m, 4)-net with t <= 3 (Sobol dimensions 0 to 3; computed
 // for m <= 10 from their generator matrices), and pair 1 alone a (t, m, 2)-net with t <= 2 and each of
-// its coordinates a (0, m, 1)-net. Catches a wrong generator matrix or direction number, a scramble that
+// its coordinates a (0, m, 1)-net. Catches a wrong generator matrix, a scramble that
 // is not nested (flipping a digit by anything but the digits above it), and pairs 0 and 1 padded by
 // independent shuffles (each still stratified, their product not: no (3, m, 4)-net from m = 5 on).
 void expectEveryPrefixStratified(Program& program, bool coherentFirst) {

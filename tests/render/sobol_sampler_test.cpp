@@ -90,7 +90,7 @@ TEST(SobolSampler, CornellBoxConvergesToTheSameImageWithLessError) {
     EXPECT_LT(errorSobol, 0.5 * errorIndependent);  // measured 0.18
 }
 
-// The pixel jitter and the first hit's light point are one 4D Sobol point (rng.glsl, jointSobolReversed):
+// The pixel jitter and the first hit's light point are one 4D Sobol point (rng.glsl, kJointPairs):
 // where the light a point receives changes across the pixel, padding the two pairs by independent
 // shuffles leaves that interplay's error falling as N^-1/2. Direct light (depth 1) on the Cornell box at
 // 64x64, 256 spp, away from the lamp (pixels with a neighbour brighter than 2 left out: the lamp's edge
