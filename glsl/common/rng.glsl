@@ -187,8 +187,8 @@ uint gCoherentBlockKey;
 // polynomials x^2 + x + 1 and x^3 + x + 1 and initial direction numbers (1, 3) and (1, 3, 1) are Joe &
 // Kuo's (2008, "Constructing Sobol sequences with better two-dimensional projections", SIAM J. Sci.
 // Comput. 30(5), table new-joe-kuo-6.21201); direction number v_i (the column of index bit i - 1) follows
-// Bratley & Fox's recurrence (their eq. 2): v_i = v_{i-2} ^ (v_{i-2} >> 2) ^ v_{i-1} and v_i = v_{i-3} ^
-// (v_{i-3} >> 3) ^ v_{i-2}. Each is made as the loop reaches its bit, so a sample costs a loop over the
+// Sobol's recurrence for the polynomial (as in Bratley & Fox 1988, ACM TOMS 14(1), Algorithm 659):
+// v_i = v_{i-2} ^ (v_{i-2} >> 2) ^ v_{i-1} and v_i = v_{i-3} ^ (v_{i-3} >> 3) ^ v_{i-2}. Each is made as the loop reaches its bit, so a sample costs a loop over the
 // bits of k (ten at 1024 spp) and reads no table, once per sample (samplerInit).
 uvec2 sobolDimensionsTwoAndThreeReversed(uint k) {
     // Kept reversed from the start (reverse(v >> s) = reverse(v) << s): v_1, v_2 = 2^31, 3 x 2^30 and
