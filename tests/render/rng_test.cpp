@@ -5,9 +5,11 @@
 // or samples that own them are correlated instead of independent.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdlib>
+#include <functional>
 #include <string>
 #include <unordered_map>
 #include <vector>
@@ -125,31 +127,65 @@ TEST(RandomStreams, NoTwoStreamsShareNumbers) {
     EXPECT_NEAR(sum / double(numbers.size()), 0.5, 5.0 * 0.2887 / std::sqrt(double(numbers.size())));
 }
 
-// Owen-scrambled Sobol points (Burley 2020): every power-of-two prefix of a pixel's samples in one
-// dimension pair is a (0, m, 2)-net, one point in each elementary interval [i / 2^a, (i + 1) / 2^a) x
-// [j / 2^b, (j + 1) / 2^b) with a + b = m. Catches a wrong generator matrix, a scramble that is not
-// nested (flipping a digit by anything but the digits above it), or an index shuffle that is not.
+// Whether every elementary box of `dims` coordinates of the first 2^m points, [i_d / 2^a_d, (i_d + 1) /
+// 2^a_d) in coordinate d with sum a_d = m - t, holds exactly 2^t of them: a (t, m, s)-net.
+bool isNet(const std::vector<std::array<float, 4>>& points, int dims, int m, int t) {
+    const int q = m - t;
+    std::vector<int> a(size_t(dims), 0);
+    std::function<bool(int, int)> boxes = [&](int d, int left) -> bool {
+        if (d == dims - 1) {
+            a[size_t(d)] = left;
+            std::vector<int> cells(size_t(1) << q, 0);
+            for (int k = 0; k < (1 << m); ++k) {
+                size_t cell = 0;
+                for (int c = 0; c < dims; ++c)
+                    cell = cell << a[size_t(c)] |
+                           size_t(points[size_t(k)][size_t(c)] * float(1 << a[size_t(c)]));
+                ++cells[cell];
+            }
+            for (int n : cells)
+                if (n != 1 << t) return false;
+            return true;
+        }
+        for (a[size_t(d)] = 0; a[size_t(d)] <= left; ++a[size_t(d)])
+            if (!boxes(d + 1, left - a[size_t(d)])) return false;
+        return true;
+    };
+    return boxes(0, q);
+}
+
+// Owen-scrambled Sobol points (Burley 2020; a nested scramble maps elementary boxes onto elementary
+// boxes, so it keeps these properties). Pair 0, the pixel jitter, is a (0, 2)-sequence: every
+// power-of-two prefix is a (0, m, 2)-net. Pairs 0 and 1 are one 4D Sobol point (rng.glsl,
+// kJointPairs): every prefix is a (t, m, 4)-net with t <= 3 (Sobol dimensions 0 to 3; computed
+// for m <= 10 from their generator matrices), and pair 1 alone a (t, m, 2)-net with t <= 2 and each of
+// its coordinates a (0, m, 1)-net. Catches a wrong generator matrix, a scramble that
+// is not nested (flipping a digit by anything but the digits above it), and pairs 0 and 1 padded by
+// independent shuffles (each still stratified, their product not: no (3, m, 4)-net from m = 5 on).
 void expectEveryPrefixStratified(Program& program, bool coherentFirst) {
     for (uint32_t seed : {0u, 7u})
         for (glm::uvec2 pixel : {glm::uvec2(0, 0), glm::uvec2(5, 300)}) {
-            std::vector<glm::vec4> points = pixelSamples(program, seed, pixel, 1024, coherentFirst);
-            for (int pair = 0; pair < 2; ++pair)
-                for (int m = 0; m <= 10; ++m)
-                    for (int a = 0; a <= m; ++a) {
-                        int b = m - a;
-                        std::vector<int> cells(size_t(1) << m, 0);
-                        for (int k = 0; k < (1 << m); ++k) {
-                            glm::vec2 p = pair == 0 ? glm::vec2(points[size_t(k)])
-                                                    : glm::vec2(points[size_t(k)].z, points[size_t(k)].w);
-                            int i = int(p.x * float(1 << a)), j = int(p.y * float(1 << b));
-                            ++cells[size_t(i) << b | size_t(j)];
-                        }
-                        for (int c : cells)
-                            ASSERT_EQ(c, 1)
-                                << "seed " << seed << ", pixel " << pixel.x << "," << pixel.y << ", pair "
-                                << pair << (coherentFirst ? " (coherent first)" : "") << ": " << (1 << m)
-                                << " points in cells of 2^-" << a << " x 2^-" << b;
-                    }
+            std::vector<glm::vec4> samples = pixelSamples(program, seed, pixel, 1024, coherentFirst);
+            std::vector<std::array<float, 4>> pair0, pair1, pair1x, pair1y, joint;
+            for (const glm::vec4& p : samples) {
+                pair0.push_back({p.x, p.y, 0.0f, 0.0f});
+                pair1.push_back({p.z, p.w, 0.0f, 0.0f});
+                pair1x.push_back({p.z, 0.0f, 0.0f, 0.0f});
+                pair1y.push_back({p.w, 0.0f, 0.0f, 0.0f});
+                joint.push_back({p.x, p.y, p.z, p.w});
+            }
+            const std::string where = "seed " + std::to_string(seed) + ", pixel " + std::to_string(pixel.x) +
+                                      "," + std::to_string(pixel.y) +
+                                      (coherentFirst ? " (coherent first)" : "");
+            for (int m = 0; m <= 10; ++m) {
+                ASSERT_TRUE(isNet(pair0, 2, m, 0)) << where << ": pair 0, " << (1 << m) << " points";
+                ASSERT_TRUE(isNet(pair1x, 1, m, 0)) << where << ": pair 1 x, " << (1 << m) << " points";
+                ASSERT_TRUE(isNet(pair1y, 1, m, 0)) << where << ": pair 1 y, " << (1 << m) << " points";
+                ASSERT_TRUE(isNet(pair1, 2, m, std::min(m, 2)))
+                    << where << ": pair 1, " << (1 << m) << " points";
+                ASSERT_TRUE(isNet(joint, 4, m, std::min(m, 3)))
+                    << where << ": pairs 0 and 1 as one 4D point, " << (1 << m) << " points";
+            }
         }
 }
 
