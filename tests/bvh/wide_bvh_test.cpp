@@ -127,7 +127,9 @@ TEST(WideBvh, StackEntriesBoundEveryTraversalAndAreReachedByOne) {
             need[i] = interior == 0 ? 0 : interior - 1 + most;
         }
         EXPECT_EQ(need[0], wide.stackEntries) << m.name;
-        if (wide.stackEntries > 0) EXPECT_GE(deepest, 1u) << m.name;
+        if (wide.stackEntries > 0) {
+            EXPECT_GE(deepest, 1u) << m.name;
+        }
     }
 }
 
