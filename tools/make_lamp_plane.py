@@ -5,19 +5,15 @@ centre the plane's radiance is 0.5 x the form factor 0.554126 = 0.277063 (tests/
 The camera is a pinhole halfway between lamp and plane looking straight down with a 2-degree field, so
 its image is a spot of radius 0.009 where the form factor is constant to 1e-5 (as lampCamera there).
 Used by tools/race_cycles.py --analytic."""
-import argparse
 import os
 import sys
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "race"))
-from scene_io import Obj, write_scene  # noqa: E402
+from scene_io import output_folder, Obj, write_scene  # noqa: E402
 
 
 def main():
-    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
-    parser.add_argument("--out", required=True)
-    args = parser.parse_args()
-    os.makedirs(args.out, exist_ok=True)
+    args = output_folder(__doc__)
     obj = Obj()
     f = 20.0
     obj.quad("plane", [(-f, 0, -f), (-f, 0, f), (f, 0, f), (f, 0, -f)])  # counter-clockwise from above

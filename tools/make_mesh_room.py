@@ -4,14 +4,13 @@ materials) with its two blocks replaced by a lumpy blob, an icosphere subdivided
 triangles, flat-shaded) whose radius is displaced by a few sines of the position, so that traversal of a
 real mesh, not of boxes, is what a sample costs. scene.json gives the box's camera. Used by
 tools/race_cycles.py --scene mesh."""
-import argparse
 import math
 import os
 import shutil
 import sys
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "race"))
-from scene_io import Obj, write_scene  # noqa: E402
+from scene_io import output_folder, Obj, write_scene  # noqa: E402
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 CORNELL = os.path.join(ROOT, "assets/cornell")
@@ -74,11 +73,8 @@ def lumpy(p):
 
 
 def main():
-    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
-    parser.add_argument("--out", required=True)
-    parser.add_argument("--levels", type=int, default=6, help="subdivisions: 20 x 4^levels triangles")
-    args = parser.parse_args()
-    os.makedirs(args.out, exist_ok=True)
+    args = output_folder(__doc__, lambda p: p.add_argument("--levels", type=int, default=6,
+                                                          help="subdivisions: 20 x 4^levels triangles"))
     obj = Obj()
     cornell_room(obj)
     points, faces = icosphere(args.levels)

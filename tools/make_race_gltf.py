@@ -9,7 +9,6 @@
 - sky.exr: tools/race/scene_io.py's sky (1024 x 512) with a sun of 2 x 2 texels 40 degrees high.
 - scene.json: the camera and the sky.
 Used by tools/race_cycles.py --scene gltf."""
-import argparse
 import json
 import math
 import os
@@ -19,7 +18,7 @@ TOOLS = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(TOOLS, "race"))
 sys.path.insert(0, TOOLS)
 import make_gltf_showcase as gltf  # noqa: E402  (its Builder, png, sphere and quad)
-from scene_io import sun_direction, write_scene, write_sky  # noqa: E402
+from scene_io import output_folder, sun_direction, write_scene, write_sky  # noqa: E402
 
 LINEAR, REPEAT = 9729, 10497  # glTF sampler enums: no mipmaps, so that Cycles (which has none) filters alike
 
@@ -73,10 +72,7 @@ def vase(stacks=64, slices=128):
 
 
 def main():
-    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
-    parser.add_argument("--out", required=True)
-    args = parser.parse_args()
-    os.makedirs(args.out, exist_ok=True)
+    args = output_folder(__doc__)
     gltf.OUT = os.path.join(args.out, "")  # where the Builder writes its textures
     b = gltf.Builder()
     b.doc["asset"]["generator"] = "fragpath tools/make_race_gltf.py"

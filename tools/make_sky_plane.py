@@ -5,23 +5,19 @@ radiance (160000, 150000, 130000), 30 degrees high: the window room's), nothing 
 plane sees the whole upper hemisphere, so its radiance is 0.5 / pi x the irradiance, the sum over the
 map's texels of radiance x cosine-weighted solid angle (scene_io.irradiance_from_above), written to
 expected.json. The camera looks at a spot near the origin. Used by tools/race_cycles.py --analytic."""
-import argparse
 import json
 import math
 import os
 import sys
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "race"))
-from scene_io import Obj, irradiance_from_above, sky, sun_direction, write_exr, write_scene  # noqa: E402
+from scene_io import output_folder, Obj, irradiance_from_above, sky, sun_direction, write_exr, write_scene  # noqa: E402
 
 WIDTH, HEIGHT, ALBEDO = 1024, 512, 0.5
 
 
 def main():
-    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
-    parser.add_argument("--out", required=True)
-    args = parser.parse_args()
-    os.makedirs(args.out, exist_ok=True)
+    args = output_folder(__doc__)
     obj = Obj()
     f = 50.0
     obj.quad("plane", [(-f, 0, -f), (-f, 0, f), (f, 0, f), (f, 0, -f)])

@@ -5,22 +5,18 @@ sky (sky.exr, 1024 x 512: a blue sky, a brown ground and a sun of 2 x 2 texels, 
 degrees high, shining in through the window onto the floor). Interior light is indirect but for the sun
 patch and the sky seen through the window: the hard case of architectural rendering. scene.json gives
 the camera. Used by tools/race_cycles.py --scene window."""
-import argparse
 import os
 import sys
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "race"))
-from scene_io import Obj, box_quads, sun_direction, write_scene, write_sky  # noqa: E402
+from scene_io import output_folder, Obj, box_quads, sun_direction, write_scene, write_sky  # noqa: E402
 
 W, H, D = 2.0, 2.7, 3.0  # half width, height, half depth
 WINDOW = (-1.0, 1.0, 0.8, 2.2)  # x0, x1, y0, y1 of the opening in the wall z = +D
 
 
 def main():
-    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
-    parser.add_argument("--out", required=True)
-    args = parser.parse_args()
-    os.makedirs(args.out, exist_ok=True)
+    args = output_folder(__doc__)
     obj = Obj()
     # The room's inside faces (counter-clockwise seen from inside; every surface is two-sided anyway).
     obj.quad("floor", [(-W, 0, -D), (W, 0, -D), (W, 0, D), (-W, 0, D)])

@@ -7,6 +7,19 @@ import struct
 import sys
 
 
+def output_folder(doc, add_arguments=None):
+    """A scene generator's command line: --out FOLDER (created) and whatever add_arguments(parser) adds;
+    the description is the first line of the generator's docstring `doc`."""
+    import argparse
+    parser = argparse.ArgumentParser(description=doc.split("\n")[0])
+    parser.add_argument("--out", required=True)
+    if add_arguments:
+        add_arguments(parser)
+    args = parser.parse_args()
+    os.makedirs(args.out, exist_ok=True)
+    return args
+
+
 def direction_of_texel(u, v):
     """fragpath's uvToDirection (glsl/common/lights.glsl) without rotation: v = 0 is +y (the file's first
     scanline), u = 0.5 looks along -z."""
