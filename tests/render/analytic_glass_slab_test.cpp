@@ -111,9 +111,7 @@ INSTANTIATE_TEST_SUITE_P(Issue35, AnalyticGlassSlab,
                                                            LightSelection::Auto, Caustics::Light},
                                            AnalyticVariant{Integrator::Bdpt, 256, LightSampling::Auto,
                                                            LightSelection::Auto, Caustics::Auto, 64}),
-                         [](const ::testing::TestParamInfo<AnalyticVariant>& param) {
-                             return variantName(param.param);
-                         });
+                         variantTestName);
 
 }  // namespace
 }  // namespace fp::test

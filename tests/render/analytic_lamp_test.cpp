@@ -98,7 +98,7 @@ INSTANTIATE_TEST_SUITE_P(
                       AnalyticVariant{Integrator::Nee, 256, LightSampling::SolidAngle, LightSelection::Tree},
                       AnalyticVariant{Integrator::Bdpt, 64, LightSampling::Auto, LightSelection::Auto,
                                       Caustics::Auto, 64}),
-    [](const ::testing::TestParamInfo<AnalyticVariant>& param) { return variantName(param.param); });
+    variantTestName);
 
 // nee's two strategies for one path, a light sample and a BSDF ray that hits the lamp, must weigh it
 // with densities measured from the same point, or the MIS weights do not sum to 1. The BSDF ray leaves

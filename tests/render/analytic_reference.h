@@ -52,6 +52,14 @@ inline std::string variantName(const AnalyticVariant& v) {
     return name;
 }
 
+// The same as INSTANTIATE_TEST_SUITE_P's name generator, and as gtest prints a parameter.
+inline std::string variantTestName(const ::testing::TestParamInfo<AnalyticVariant>& info) {
+    return variantName(info.param);
+}
+inline void PrintTo(const AnalyticVariant& v, std::ostream* os) {
+    *os << variantName(v);
+}
+
 inline Accumulation renderVariant(Renderer& renderer, const Camera& camera, const AnalyticVariant& v, int spp,
                                   int maxDepth, uint32_t seed, Sampler sampler) {
     return renderScene(renderer, camera, v.integrator, kAnalyticSize, spp, maxDepth, seed, sampler,

@@ -83,9 +83,7 @@ INSTANTIATE_TEST_SUITE_P(Issue35, AnalyticSkySphere,
                                            AnalyticVariant{Integrator::Nee, 64},
                                            AnalyticVariant{Integrator::Bdpt, 16, LightSampling::Auto,
                                                            LightSelection::Auto, Caustics::Auto, 64}),
-                         [](const ::testing::TestParamInfo<AnalyticVariant>& param) {
-                             return variantName(param.param);
-                         });
+                         variantTestName);
 
 }  // namespace
 }  // namespace fp::test
