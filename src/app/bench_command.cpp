@@ -67,8 +67,8 @@ FrontEndDefaults benchDefaults(bool suite, bool native = false) {
     FrontEndDefaults d = FrontEndDefaults::ownImage(glm::ivec2(suite ? 256 : 512), suite ? 2 : 8);
     // The native reference has constant skies only: with --native an unlit scene gets the uniform sky.
     if (native) d.defaultLight = DefaultLight::UniformSky;
-    d.sceneSize = !suite;
-    d.samplesPerPass = 8;  // the timed runs' (about 5 % less CPU per path than 1 on llvmpipe)
+    if (!suite) d.ignoresSceneFile &= ~kSizeOption;
+    d.own.set("samples_per_pass", 8);  // the timed runs' (about 5 % less CPU per path than 1)
     return d;
 }
 
@@ -137,7 +137,7 @@ int benchOneScene(const Args& args, const bench::BenchSettings& settings, std::o
 
     if (jsonPath) {
         nlohmann::json j = environmentJson(environment);
-        j["settings"] = settingsJson(resolved);
+        j["settings"] = benchSettingsJson(resolved);
         j.update(measurementJson(m, firstFrameSeconds));
         j["first_frame"]["context_seconds"] = contextSeconds;
         if (native) j["native"] = nativeJson(*native, m);

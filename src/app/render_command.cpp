@@ -133,8 +133,8 @@ int renderCommand(const std::vector<std::string>& argv) {
     RenderSettings settings = request.settings(scene);
     settings.sampleOffset = sampleOffset;
     settings.guides = denoiser != Denoiser::None || !aovs.empty();
-    // With only a time budget, the budget decides when to stop.
-    int spp = budget && !args.has("--spp") ? 1 << 24 : request.spp(scene);
+    // With only a time budget, the budget decides when to stop; with --spp unlimited, an interrupt.
+    int spp = (budget && !args.has("--spp")) || request.spp(scene) == 0 ? 1 << 24 : request.spp(scene);
     Camera camera = request.camera(scene);
     std::optional<PartialRender> resumed;
     if (auto r = args.text("--resume")) resumed = readPartial(*r);

@@ -9,6 +9,7 @@
 #include "core/error.h"
 #include "core/text.h"
 #include "image/file_io.h"
+#include "settings/settings_json.h"
 
 namespace fp {
 
@@ -117,23 +118,7 @@ nlohmann::json renderStatsJson(const RenderStats& stats) {
         {"rays_per_second", per(rays, stats.seconds)},
         {"paths_per_cpu_second", per(paths, stats.cpuSeconds)},
     };
-    nlohmann::json renderSettings = {
-        {"integrator", integratorName(settings.integrator)},
-        {"sampler", samplerName(settings.sampler)},
-        {"light_sampling", lightSamplingName(settings.lightSampling)},
-        {"light_selection", lightSelectionName(settings.lightSelection)},
-        {"caustics", causticsName(settings.caustics)},
-        {"max_depth", settings.maxDepth},
-        {"width", settings.width},
-        {"height", settings.height},
-        {"seed", settings.seed},
-        {"sample_offset", settings.sampleOffset},
-        {"samples_per_pass", settings.samplesPerPass == RenderSettings::kAutoSamplesPerPass
-                                 ? nlohmann::json("auto")
-                                 : nlohmann::json(settings.samplesPerPass)},
-        {"clamp_indirect", settings.clampIndirect},
-        {"view", viewName(settings.view)},
-    };
+    nlohmann::json renderSettings = settingsJson(settings);
     return {
         {"renderer", stats.renderer},
         {"scene", stats.scene},

@@ -14,6 +14,7 @@
 #include "core/log.h"
 #include "core/statistics.h"
 #include "core/text.h"
+#include "settings/settings_json.h"
 
 namespace fp::bench {
 
@@ -282,16 +283,11 @@ nlohmann::json environmentJson(const BenchEnvironment& environment) {
     return j;
 }
 
-nlohmann::json settingsJson(const BenchSettings& settings) {
-    const RenderSettings& r = settings.render;
-    return {{"width", r.width},
-            {"height", r.height},
-            {"spp", settings.spp},
-            {"runs", settings.runs},
-            {"max_depth", r.maxDepth},
-            {"integrator", integratorName(r.integrator)},
-            {"sampler", samplerName(r.sampler)},
-            {"samples_per_pass", r.samplesPerPass}};
+nlohmann::json benchSettingsJson(const BenchSettings& settings) {
+    nlohmann::json j = fp::settingsJson(settings.render);
+    j["spp"] = settings.spp;
+    j["runs"] = settings.runs;
+    return j;
 }
 
 nlohmann::json measurementJson(const SceneMeasurement& m, double firstFrameSeconds) {

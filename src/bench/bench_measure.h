@@ -112,7 +112,7 @@ void printMeasurement(const SceneMeasurement& m, double firstFrameSeconds,
                       std::optional<double> contextSeconds);
 
 nlohmann::json environmentJson(const BenchEnvironment& environment);
-nlohmann::json settingsJson(const BenchSettings& settings);
+nlohmann::json benchSettingsJson(const BenchSettings& settings);
 // The scene, BVH, GPU memory, first frame, warm-up, every run and the summary, as in printMeasurement.
 nlohmann::json measurementJson(const SceneMeasurement& m, double firstFrameSeconds);
 

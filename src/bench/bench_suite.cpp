@@ -319,7 +319,7 @@ int runSuite(const SuiteOptions& options) {
 
     if (options.jsonPath) {
         nlohmann::json j = environmentJson(environment);
-        j["settings"] = settingsJson(options.settings);
+        j["settings"] = benchSettingsJson(options.settings);
         j["context_seconds"] = contextSeconds;
         j["scenes"] = nlohmann::json::array();
         for (const Measured& e : measured) {

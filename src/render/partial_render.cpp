@@ -8,6 +8,7 @@
 #include "core/text.h"
 #include "image/image.h"
 #include "render/view_image.h"
+#include "settings/setting_table.h"
 
 namespace fp {
 
@@ -125,19 +126,19 @@ std::string renderFingerprint(const Scene& scene, const RenderSettings& settings
         f.value(camera.aperture);
         f.value(resolvedFocusDistance(camera));
     }
-    f.value(settings.width);
-    f.value(settings.height);
-    f.value(settings.maxDepth);
-    f.value(settings.seed);
-    f.value(settings.integrator);
-    f.value(settings.sampler);
-    f.value(settings.lightSampling);
-    // Only when chosen: the default leaves the fingerprints of renders saved before the light tree as
-    // they were, so that those still resume and merge.
-    if (settings.lightSelection != LightSelection::Auto) f.value(settings.lightSelection);
-    if (settings.caustics != Caustics::Auto) f.value(settings.caustics);
-    f.value(settings.clampIndirect);
-    f.value(settings.view);
+    // The settings table's rows in order, each value as the type it had when fingerprints began (a
+    // float for a number, 32 bits for the rest), so that saved renders still resume and merge.
+    for (const Setting& setting : settingTable()) {
+        const double value = setting.get(settings);
+        const bool chosen = value != settingDefault(setting);
+        if (!(setting.effects & kEntersFingerprint) &&
+            !((setting.effects & kEntersFingerprintIfChosen) && chosen))
+            continue;
+        if (setting.kind == SettingKind::Number)
+            f.value(float(value));
+        else
+            f.value(uint32_t(int64_t(value)));
+    }
     char text[17];
     std::snprintf(text, sizeof text, "%016llx", (unsigned long long)f.h);
     return text;

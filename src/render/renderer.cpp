@@ -12,6 +12,8 @@
 #include "pack/layout.h"
 #include "pack/light_strategy.h"
 #include "scene/spectrum.h"
+#include "settings/integrators.h"
+#include "settings/setting_table.h"
 
 namespace fp {
 
@@ -121,6 +123,7 @@ std::unique_ptr<Program> Renderer::compile(Integrator integrator, const char* fr
     ShaderDefines defines = layout::layoutDefines(stats_.sceneReads == SceneReads::Images);
     for (const auto& d : LightSplat::defines()) defines.push_back(d);
     defines.emplace_back("BVH_STACK_SIZE", std::to_string(stats_.stackSize));
+    defines.emplace_back("BDPT_MAX_DEPTH", std::to_string(integratorFacts(Integrator::Bdpt).depthCap));
     defines.emplace_back("INTEGRATOR_FILE",
                          std::string("\"integrators/") + integratorName(integrator) + ".glsl\"");
     defines.emplace_back("DEBUG_VIEW", std::to_string(int(settings_.view)));
@@ -255,16 +258,14 @@ double Renderer::lightPathsPerPixel() const {
 }
 
 void Renderer::configure(const RenderSettings& settings, const Camera& camera) {
-    if (settings.maxDepth < 0 || (settings.split && settings.split->maxDepth < 0))
-        throw Error("max depth must be 0 or more");
-    if (settings.samplesPerPass < 0 || settings.samplesPerPass > RenderSettings::kMaxSamplesPerPass)
-        throw Error("samples per pass must be between 1 and " +
-                    std::to_string(RenderSettings::kMaxSamplesPerPass) + ", or 0 (chosen per pass)");
-    if (!(settings.clampIndirect >= 0.0f) || !std::isfinite(settings.clampIndirect))
-        throw Error("the indirect clamp must be a finite number, 0 or more (0: no clamp)");
-    if (settings.clampIndirect > 0.0f && (settings.integrator == Integrator::Bdpt ||
-                                          (settings.split && settings.split->integrator == Integrator::Bdpt)))
-        throw Error("the indirect clamp is implemented for nee, bsdf and naive, not for bdpt");
+    checkSettings(settings);  // each setting's range or choices (settings/setting_table.h)
+    if (settings.split)
+        checkSetting(*findSetting("max_depth"), settings.split->maxDepth, "the split's max depth");
+    for (Integrator i :
+         {settings.integrator, settings.split ? settings.split->integrator : settings.integrator})
+        if (settings.clampIndirect > 0.0f && !integratorFacts(i).clampsIndirect)
+            throw Error(std::string("the indirect clamp is not implemented for ") + integratorName(i) +
+                        " (its strategies share paths)");
     if (settings.caustics == Caustics::Light && settings.clampIndirect > 0.0f)
         throw Error("light-traced caustics are not clamped: use --caustics path with --clamp-indirect");
     if (!castersSearched_ && usesCausticCasters(settings))
@@ -294,12 +295,10 @@ void Renderer::configure(const RenderSettings& settings, const Camera& camera) {
         throw Error("the focus distance must be a finite number above 0");
     bool splitChanged = settings.split.has_value() != settings_.split.has_value() ||
                         (settings.split && settings.split->integrator != settings_.split->integrator);
-    bool recompile =
-        !program_ || settings.integrator != settings_.integrator || settings.view != settings_.view ||
-        settings.guides != settings_.guides || settings.sampler != settings_.sampler ||
-        settings.lightSampling != settings_.lightSampling ||
-        settings.lightSelection != settings_.lightSelection || settings.caustics != settings_.caustics ||
-        settings.clampIndirect != settings_.clampIndirect || splitChanged;
+    const bool recompile = !program_ || !sameSettings(settings, settings_, kRecompiles) || splitChanged;
+    // An integrator that traces fewer bounces than asked says so, once per change.
+    if (!program_ || settings.maxDepth != settings_.maxDepth || settings.integrator != settings_.integrator)
+        if (auto capped = depthCapNote(settings.integrator, settings.maxDepth)) note(*capped);
     if (recompile) {
         // Compile both programs before changing anything, so that a compile error leaves the renderer
         // exactly as it was.

@@ -2,6 +2,7 @@
 
 #include <cctype>
 #include <filesystem>
+#include <set>
 
 #include "core/error.h"
 #include "core/log.h"
@@ -24,28 +25,35 @@ bool looksLikeColor(const std::string& text) {
     return std::isdigit(static_cast<unsigned char>(c)) || c == '.' || c == '-' || c == '+';
 }
 
-std::string sizeText(glm::ivec2 size) {
-    return std::to_string(size.x) + "x" + std::to_string(size.y);
+// A setting's line in --help: the choices or range, the help text and the default.
+Option settingOption(const Setting& setting, const FrontEndDefaults& defaults) {
+    const RenderSettings d = defaults.settings();
+    const bool fromScene = setting.sceneFile && !(defaults.ignoresSceneFile & setting.option);
+    std::string value = settingText(setting, setting.get(d));
+    if (std::string(setting.valueName) == "WxH")  // width and height share the flag
+        value = std::to_string(d.width) + "x" + std::to_string(d.height);
+    const std::string defaultText =
+        "(default: " + std::string(fromScene ? "the scene file's, else " : "") + value + ")";
+    // Choices first, with the default, then what they mean; else the help, then the default.
+    if (setting.kind == SettingKind::Choice || setting.specialName)
+        return {setting.flag, "", setting.valueName,
+                settingChoices(setting) + " " + defaultText + "\n" + setting.help};
+    return {setting.flag, "", setting.valueName, std::string(setting.help) + " " + defaultText};
 }
 
 }  // namespace
 
 std::vector<OptionGroup> requestOptionGroups(unsigned options, const FrontEndDefaults& defaults) {
-    const RenderSettings builtIn;
-    const std::string sceneOr = "the scene file's, else ";
     OptionGroup image{"Image", {}}, scene{"Scene", {}}, path{"Path tracing", {}}, camera{"Camera", {}},
         display{"Display", {}}, gl{"OpenGL", {}};
-    if (options & kSizeOption)
-        image.options.push_back({"--size", "", "WxH",
-                                 "image size (default: " + (defaults.sceneSize ? sceneOr : std::string()) +
-                                     sizeText(defaults.size) + ")"});
-    if (options & kSppOption)
-        image.options.push_back({"--spp", "", "N",
-                                 "samples per pixel (default: " +
-                                     (defaults.spp == 0 ? std::string("no limit")
-                                                        : (defaults.sceneSpp ? sceneOr : std::string()) +
-                                                              std::to_string(defaults.spp)) +
-                                     ")"});
+    std::set<std::string> listed;  // flags shared by two settings (--size) are listed once
+    for (const Setting& setting : settingTable()) {
+        if (setting.hidden || !(options & setting.option) || !listed.insert(setting.flag).second) continue;
+        OptionGroup& group = (setting.option & (kSizeOption | kSppOption)) ? image
+                             : (setting.option & kViewOption)              ? display
+                                                                           : path;
+        group.options.push_back(settingOption(setting, defaults));
+    }
     if (options & kSceneOptions) {
         scene.options.push_back(
             {"--environment", "", "ENV",
@@ -62,53 +70,6 @@ std::vector<OptionGroup> requestOptionGroups(unsigned options, const FrontEndDef
                                  "store a glTF mesh that several nodes use once per node instead of\nonce "
                                  "(one BVH over every triangle, no two-level traversal)"});
     }
-    if (options & kIntegratorOption)
-        path.options.push_back({"--integrator", "", "NAME",
-                                "naive | bsdf | nee | bdpt (default: " + sceneOr +
-                                    integratorName(builtIn.integrator) +
-                                    ")\nnee: light sampling with MIS; bdpt: bidirectional path tracing"});
-    if (options & kPathOptions) {
-        path.options.push_back({"--max-depth", "", "D",
-                                "bounces: 0 shows emitters only, 1 direct light, ... (default: " + sceneOr +
-                                    std::to_string(kDefaultMaxDepth) + ")"});
-        path.options.push_back({"--seed", "", "S",
-                                "random seed, 0 to " + std::to_string(kMaxSeed) +
-                                    "; the same seed gives the same image bit for bit\n(default: " + sceneOr +
-                                    std::to_string(builtIn.seed) + ")"});
-    }
-    if (options & kSamplingOptions) {
-        path.options.push_back(
-            {"--sampler", "", "NAME",
-             "sobol: Owen-scrambled Sobol points, blue noise over the screen |\nindependent: "
-             "independent uniform numbers (default: " +
-                 sceneOr + samplerName(builtIn.sampler) + ")"});
-        path.options.push_back(
-            {"--light-sampling", "", "NAME",
-             "auto: solid angle when an emitter faces a close surface | area |\nsolid-angle "
-             "(nee: emitters over 0.1 sr by solid angle) (default: " +
-                 sceneOr + lightSamplingName(builtIn.lightSampling) + ")"});
-        path.options.push_back(
-            {"--light-selection", "", "NAME",
-             "auto: the tree for scenes of many emitters | power: by power |\ntree: by a light tree, "
-             "power weighed by distance and orientation (nee)\n(default: " +
-                 sceneOr + lightSelectionName(builtIn.lightSelection) + ")"});
-        path.options.push_back(
-            {"--caustics", "", "NAME",
-             "auto: light where glass, mirrors or glossy metals meet a light | path:\ncamera paths "
-             "alone | light: light paths traced to glass, mirrors and\nglossy metals, joined to the "
-             "camera (nee) (default: " +
-                 sceneOr + causticsName(builtIn.caustics) + ")"});
-        path.options.push_back({"--clamp-indirect", "", "X",
-                                "scale each sample's indirect light down to at most X per channel:\nfewer "
-                                "fireflies, but BIASED (darker); not with bdpt (default: " +
-                                    sceneOr + "off)"});
-        path.options.push_back({"--samples-per-pass", "", "N",
-                                "samples each pixel takes per draw call, 1 to " +
-                                    std::to_string(RenderSettings::kMaxSamplesPerPass) +
-                                    ", or auto: as many as fit a second (default " +
-                                    samplesPerPassName(defaults.samplesPerPass) +
-                                    "); the image is the same"});
-    }
     if (options & kCameraOptions) {
         camera.options.push_back({"--eye", "", "X,Y,Z", "camera position"});
         camera.options.push_back({"--target", "", "X,Y,Z", "the point the camera looks at"});
@@ -123,11 +84,6 @@ std::vector<OptionGroup> requestOptionGroups(unsigned options, const FrontEndDef
                                   "distance from the eye to the plane in focus, along the view\n(default: "
                                   "the scene file's, else the distance from eye to target)"});
     }
-    if (options & kViewOption)
-        display.options.push_back(
-            {"--view", "", "NAME",
-             "radiance (default) | depth | normal | albedo: of the first hit |\nbounces | nodes | triangles: "
-             "per primary ray, as a heat map |\ncost: nodes, triangles, surfaces per path in R, G, B"});
     if (options & kDisplayOptions) {
         display.options.push_back(
             {"--exposure", "", "STOPS", "scale by 2^STOPS before tone mapping (default 0)"});
@@ -158,11 +114,17 @@ std::vector<OptionGroup> commandOptions(std::vector<OptionGroup> own, unsigned s
 
 FrontEndDefaults FrontEndDefaults::ownImage(glm::ivec2 size, int spp) {
     FrontEndDefaults d;
-    d.size = size;
-    d.sceneSize = false;
-    d.spp = spp;
-    d.sceneSpp = false;
+    d.own.set("width", size.x);
+    d.own.set("height", size.y);
+    d.own.set("spp", spp);
+    d.ignoresSceneFile = kSizeOption | kSppOption;
     return d;
+}
+
+RenderSettings FrontEndDefaults::settings() const {
+    RenderSettings s;
+    own.applyTo(s);
+    return s;
 }
 
 RenderRequest::RenderRequest(const Args& args, const FrontEndDefaults& defaults) : defaults_(defaults) {
@@ -170,23 +132,15 @@ RenderRequest::RenderRequest(const Args& args, const FrontEndDefaults& defaults)
         throw Error("expected one scene file, got " + std::to_string(args.positional().size()) +
                     " arguments");
     if (defaults.scene && !args.positional().empty()) scenePath_ = args.positional()[0];
-    size_ = args.size("--size");
-    spp_ = args.integer("--spp", 1, 1 << 24);
-    maxDepth_ = args.integer("--max-depth", 0, 1000);
-    if (auto s = args.integer("--seed", 0, int(kMaxSeed))) seed_ = uint32_t(*s);
-    if (auto t = args.text("--integrator")) integrator_ = parseIntegrator(*t);
-    if (auto t = args.text("--sampler")) sampler_ = parseSampler(*t);
-    if (auto t = args.text("--light-sampling")) lightSampling_ = parseLightSampling(*t);
-    if (auto t = args.text("--light-selection")) lightSelection_ = parseLightSelection(*t);
-    if (auto t = args.text("--caustics")) caustics_ = parseCaustics(*t);
-    clampIndirect_ = args.number("--clamp-indirect");
-    if (clampIndirect_ && !(*clampIndirect_ >= 0.0f))
-        throw Error("option --clamp-indirect: must be 0 (off) or more");
-    if (args.text("--samples-per-pass") == "auto")
-        samplesPerPass_ = RenderSettings::kAutoSamplesPerPass;
-    else
-        samplesPerPass_ = args.integer("--samples-per-pass", 1, RenderSettings::kMaxSamplesPerPass);
-    if (auto t = args.text("--view")) view_ = parseView(*t);
+    for (const Setting& setting : settingTable()) {
+        if (!*setting.flag) continue;
+        if (std::string(setting.valueName) == "WxH") {
+            if (auto size = args.size(setting.flag))
+                flags_.set(setting, std::string(setting.name) == "height" ? size->y : size->x);
+        } else if (auto text = args.text(setting.flag)) {
+            flags_.set(setting, parseSetting(setting, *text, std::string("option ") + setting.flag));
+        }
+    }
     eye_ = args.vec3("--eye");
     target_ = args.vec3("--target");
     up_ = args.vec3("--up");
@@ -264,31 +218,13 @@ Scene RenderRequest::prepareScene(Scene scene) const {
 }
 
 RenderSettings RenderRequest::settings(const Scene& scene) const {
-    const RenderDefaults& file = scene.defaults;
-    RenderSettings s;
-    glm::ivec2 size = defaults_.size;
-    if (defaults_.sceneSize && file.width) size.x = *file.width;
-    if (defaults_.sceneSize && file.height) size.y = *file.height;
-    size = size_.value_or(size);
-    s.width = size.x;
-    s.height = size.y;
-    s.maxDepth = maxDepth_.value_or(file.maxDepth.value_or(s.maxDepth));
-    s.seed = seed_.value_or(file.seed.value_or(s.seed));
-    s.integrator = integrator_.value_or(file.integrator.value_or(s.integrator));
-    s.sampler = sampler_.value_or(file.sampler.value_or(s.sampler));
-    s.lightSampling = lightSampling_.value_or(file.lightSampling.value_or(s.lightSampling));
-    s.lightSelection = lightSelection_.value_or(file.lightSelection.value_or(s.lightSelection));
-    s.caustics = caustics_.value_or(file.caustics.value_or(s.caustics));
-    s.clampIndirect = clampIndirect_.value_or(file.clampIndirect.value_or(s.clampIndirect));
-    s.samplesPerPass = samplesPerPass_.value_or(defaults_.samplesPerPass);
-    s.view = view_.value_or(s.view);
+    RenderSettings s = defaults_.settings();
+    for (const Setting& setting : settingTable())
+        if (auto value = scene.fileSettings.get(setting);
+            value && !(defaults_.ignoresSceneFile & setting.option))
+            setting.set(s, *value);
+    flags_.applyTo(s);
     return s;
-}
-
-int RenderRequest::spp(const Scene& scene) const {
-    if (spp_) return *spp_;
-    if (defaults_.sceneSpp && scene.defaults.spp) return *scene.defaults.spp;
-    return defaults_.spp;
 }
 
 Camera RenderRequest::framingCamera(const Scene& scene) const {

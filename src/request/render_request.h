@@ -18,25 +18,11 @@
 #include "scene/lighting.h"
 #include "scene/scene.h"
 #include "settings/render_settings.h"
+#include "settings/setting_table.h"
 
 namespace fp {
 
-// The shared options, as bits: a front end takes the ones that mean something to it.
-enum RequestOption : unsigned {
-    kSizeOption = 1u << 0,        // --size WxH
-    kSppOption = 1u << 1,         // --spp N
-    kIntegratorOption = 1u << 2,  // --integrator NAME
-    kPathOptions = 1u << 3,       // --max-depth D, --seed S
-    kSamplingOptions = 1u << 4,   // --sampler, --light-sampling, --light-selection, --clamp-indirect,
-                                  // --samples-per-pass
-    kCameraOptions = 1u << 5,     // --eye, --target, --up, --fov, --aperture, --focus-distance
-    kViewOption = 1u << 6,        // --view NAME
-    kDisplayOptions = 1u << 7,    // --exposure, --tonemap
-    kShaderOptions = 1u << 8,     // --shader-dir, --bvh-threads
-    kBackendOption = 1u << 9,     // --backend NAME
-    kSceneOptions = 1u << 10,     // --environment ENV, --strict, --flatten-instances
-};
-constexpr unsigned kAllRequestOptions = (1u << 11) - 1;
+// The shared options' bits (RequestOption) are in settings/setting_table.h, with the settings.
 
 // What --environment asks for.
 enum class EnvironmentChoice {
@@ -50,18 +36,22 @@ enum class EnvironmentChoice {
 
 // Where a front end's defaults differ from one final render's.
 struct FrontEndDefaults {
-    glm::ivec2 size{512, 512};
-    bool sceneSize = true;  // a scene file's width and height apply (not to a window or a sweep)
-    int spp = 64;           // 0: no target (the viewer refines until stopped)
-    bool sceneSpp = true;   // a scene file's spp applies (not to a benchmark run)
-    int samplesPerPass = RenderSettings::kAutoSamplesPerPass;
+    // This front end's own defaults, over RenderSettings' (a window's size, a benchmark's spp and
+    // samples per pass).
+    SettingValues own;
+    // RequestOption bits whose settings keep this front end's value whatever a scene file says (a
+    // window's size; a benchmark's spp); flags still change them.
+    unsigned ignoresSceneFile = 0;
     // The light of a scene without its own: the studio map, or the uniform sky for the native reference,
     // which has constant skies only.
     DefaultLight defaultLight = DefaultLight::Studio;
     bool scene = true;  // the positional argument names the scene (merge's are the parts it merges)
 
-    // A window, a sweep or a benchmark run: its own size and spp (0: none), whatever the scene file says.
+    // A window, a sweep or a benchmark run: its own size and spp (0: until stopped), whatever the scene
+    // file says.
     static FrontEndDefaults ownImage(glm::ivec2 size, int spp);
+    // The built-in defaults with this front end's over them.
+    RenderSettings settings() const;
 };
 
 // The shared options a front end takes, grouped for its --help ("Image", "Path tracing", ...), with
@@ -87,9 +77,10 @@ class RenderRequest {
     Scene prepareScene(Scene scene) const;
     const std::optional<std::string>& scenePath() const { return scenePath_; }
 
+    // The settings table's loop: the built-in defaults, the front end's, the scene file's, the flags.
     RenderSettings settings(const Scene& scene) const;
     // Samples per pixel to reach; 0 for none.
-    int spp(const Scene& scene) const;
+    int spp(const Scene& scene) const { return settings(scene).spp; }
     // The scene's camera (its file's), else the default framing (scene/scene.h frameBounds) for the
     // image's aspect ratio, with the camera flags applied. Throws fp::Error when the flags make the
     // scene's camera invalid.
@@ -108,16 +99,7 @@ class RenderRequest {
 
     FrontEndDefaults defaults_;
     std::optional<std::string> scenePath_;
-    std::optional<glm::ivec2> size_;
-    std::optional<int> spp_, maxDepth_, samplesPerPass_;
-    std::optional<uint32_t> seed_;
-    std::optional<Integrator> integrator_;
-    std::optional<Sampler> sampler_;
-    std::optional<LightSampling> lightSampling_;
-    std::optional<LightSelection> lightSelection_;
-    std::optional<Caustics> caustics_;
-    std::optional<float> clampIndirect_;
-    std::optional<View> view_;
+    SettingValues flags_;  // the settings the command line gives
     std::optional<glm::vec3> eye_, target_, up_;
     std::optional<float> fov_, aperture_, focusDistance_;
     DisplaySettings display_;

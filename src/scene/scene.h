@@ -13,6 +13,7 @@
 #include "image/image.h"
 #include "image/rgba8_image.h"
 #include "settings/render_settings.h"
+#include "settings/setting_table.h"
 
 namespace fp {
 
@@ -169,18 +170,6 @@ CameraFrame cameraFrame(const Camera& camera, float aspect);
 // (stratified) points on the disc. glsl/common/sampling.glsl has the same map.
 glm::vec2 concentricDisk(glm::vec2 u);
 
-// Optional render settings a scene file may carry; command-line flags override them.
-struct RenderDefaults {
-    std::optional<int> width, height, spp, maxDepth;
-    std::optional<uint32_t> seed;
-    std::optional<Integrator> integrator;
-    std::optional<Sampler> sampler;
-    std::optional<LightSampling> lightSampling;
-    std::optional<LightSelection> lightSelection;
-    std::optional<Caustics> caustics;
-    std::optional<float> clampIndirect;  // 0: no clamp (settings/render_settings.h)
-};
-
 // Light arriving from infinitely far away, from every direction no surface blocks: a constant colour,
 // or an equirectangular HDR map (+y up; u = 0.5 + atan2(d.x, -d.z) / 2pi, v = acos(d.y) / pi) scaled by
 // `intensity` and turned `rotationDegrees` about +y.
@@ -282,7 +271,7 @@ struct Scene {
     std::vector<std::array<glm::vec2, 3>> texcoords1;
     std::vector<std::array<glm::vec4, 3>> colors;
     std::optional<Camera> camera;  // from a scene file; absent for a bare OBJ
-    RenderDefaults defaults;
+    SettingValues fileSettings;    // the scene file's "render" block; command-line flags override it
     Environment environment;
     std::vector<PunctualLight> punctualLights;  // from a scene file's "lights" (scene/punctual_light.h)
     std::vector<InstancedMesh> meshes;          // what `instances` place (scene/instancing.h)

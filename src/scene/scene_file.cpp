@@ -32,6 +32,9 @@ class Fields {
     // Collects keys of `object` that are not `known`, for one warning at the end: typos like "fov_y"
     // would otherwise be silently ignored.
     void checkKeys(const json& object, const std::string& prefix, std::initializer_list<const char*> known) {
+        checkKeys(object, prefix, std::vector<const char*>(known));
+    }
+    void checkKeys(const json& object, const std::string& prefix, const std::vector<const char*>& known) {
         for (const auto& item : object.items()) {
             bool found =
                 std::any_of(known.begin(), known.end(), [&](const char* k) { return item.key() == k; });
@@ -104,13 +107,13 @@ class Fields {
         fail(path + " must be an integer, got " + shown(value));
     }
 
-  private:
     // The offending value as JSON, shortened for the message.
     static std::string shown(const json& value) {
         std::string text = value.dump(-1, ' ', false, json::error_handler_t::replace);
         return text.size() > 60 ? text.substr(0, 57) + "..." : text;
     }
 
+  private:
     const std::string& name_;
     std::vector<std::string> unknown_;
 };
@@ -148,44 +151,34 @@ Camera parseCamera(const json& camera, Fields& fields) {
     return c;
 }
 
-RenderDefaults parseRender(const json& render, Fields& fields) {
+// The "render" block: the settings table's rows that a scene file may set (settings/setting_table.h),
+// by the same names, choices and ranges as on the command line.
+SettingValues parseRender(const json& render, Fields& fields) {
     fields.object(render, "render");
-    fields.checkKeys(render, "render.",
-                     {"width", "height", "spp", "max_depth", "seed", "integrator", "sampler",
-                      "light_sampling", "light_selection", "caustics", "clamp_indirect"});
-    constexpr long long kIntMax = std::numeric_limits<int>::max();
-    RenderDefaults d;
-    if (render.contains("width"))
-        d.width = static_cast<int>(fields.integer(render["width"], "render.width", 1, kIntMax));
-    if (render.contains("height"))
-        d.height = static_cast<int>(fields.integer(render["height"], "render.height", 1, kIntMax));
-    if (render.contains("spp"))
-        d.spp = static_cast<int>(fields.integer(render["spp"], "render.spp", 1, kIntMax));
-    if (render.contains("max_depth"))
-        d.maxDepth = static_cast<int>(fields.integer(render["max_depth"], "render.max_depth", 0, kIntMax));
-    if (render.contains("seed"))
-        d.seed = static_cast<uint32_t>(fields.integer(render["seed"], "render.seed", 0, kMaxSeed));
-    // The names are the command line's (settings/render_settings.h), with the same messages.
-    auto choice = [&](const char* key, auto parse) -> std::optional<decltype(parse(""))> {
-        if (!render.contains(key)) return std::nullopt;
-        std::string name = fields.string(render[key], std::string("render.") + key);
+    std::vector<const char*> keys;
+    for (const Setting& s : settingTable())
+        if (s.sceneFile) keys.push_back(s.name);
+    fields.checkKeys(render, "render.", keys);
+    SettingValues values;
+    for (const Setting& s : settingTable()) {
+        if (!s.sceneFile || !render.contains(s.name)) continue;
+        const json& value = render[s.name];
+        const std::string path = std::string("render.") + s.name;
         try {
-            return parse(name);
+            const bool named =
+                value.is_string() && (s.kind == SettingKind::Choice ||
+                                      (s.specialName && value.get<std::string>() == s.specialName));
+            if (named)
+                values.set(s, parseSetting(s, value.get<std::string>(), path));
+            else if (s.kind != SettingKind::Choice && value.is_number())
+                values.set(s, checkSetting(s, value.get<double>(), path));
+            else
+                refuseSetting(s, Fields::shown(value), path);
         } catch (const Error& e) {
-            fields.fail(std::string("render.") + key + ": " + e.what());
+            fields.fail(e.what());
         }
-    };
-    d.integrator = choice("integrator", parseIntegrator);
-    d.sampler = choice("sampler", parseSampler);
-    d.lightSampling = choice("light_sampling", parseLightSampling);
-    d.lightSelection = choice("light_selection", parseLightSelection);
-    d.caustics = choice("caustics", parseCaustics);
-    if (render.contains("clamp_indirect")) {
-        float clamp = fields.real(render["clamp_indirect"], "render.clamp_indirect");
-        if (!(clamp >= 0.0f)) fields.fail("render.clamp_indirect must be 0 (off) or more");
-        d.clampIndirect = clamp;
     }
-    return d;
+    return values;
 }
 
 // "environment": {"color": [r, g, b]} or {"map": "sky.hdr", "intensity": 1, "rotation": 0}; the map is
@@ -349,8 +342,8 @@ Scene parseSceneFile(std::string_view bytes, const std::string& name, const Mesh
     if (mesh.empty()) fields.fail("mesh must not be empty");
     std::optional<Camera> camera;
     if (root.contains("camera")) camera = parseCamera(root["camera"], fields);
-    RenderDefaults defaults;
-    if (root.contains("render")) defaults = parseRender(root["render"], fields);
+    SettingValues settings;
+    if (root.contains("render")) settings = parseRender(root["render"], fields);
     EnvironmentSpec environment;
     if (root.contains("environment")) environment = parseEnvironment(root["environment"], fields);
     std::vector<PunctualLight> lights;
@@ -359,7 +352,7 @@ Scene parseSceneFile(std::string_view bytes, const std::string& name, const Mesh
     Scene scene = loadMesh(mesh);
     fields.warnUnknownKeys();
     if (camera) scene.camera = camera;  // else the mesh's own (a glTF camera), if it has one
-    scene.defaults = defaults;
+    scene.fileSettings = settings;
     scene.environment = environment.environment;
     // A glTF mesh may bring its own KHR_lights_punctual lights: the file's are added to them.
     scene.punctualLights.insert(scene.punctualLights.end(), lights.begin(), lights.end());

@@ -2,6 +2,7 @@
 
 #include "core/error.h"
 #include "core/text.h"
+#include "settings/integrators.h"
 
 namespace fp {
 
@@ -10,8 +11,7 @@ Integrator parseIntegrator(const std::string& name) {
 }
 
 const char* integratorName(Integrator integrator) {
-    static constexpr const char* kNames[] = {"naive", "bsdf", "nee", "bdpt"};  // in enum order
-    return nameOf(integrator, kNames);
+    return integratorFacts(integrator).name;
 }
 
 Sampler parseSampler(const std::string& name) {

@@ -90,8 +90,12 @@ struct SplitView {
 // "auto" for RenderSettings::kAutoSamplesPerPass, else the count.
 std::string samplesPerPassName(int samplesPerPass);
 
+// The values of the settings table's rows (settings/setting_table.h), whose defaults are these.
 struct RenderSettings {
     int width = 512, height = 512;
+    // Samples per pixel to reach, where the front end stops (the renderer renders what it is asked);
+    // 0: until stopped.
+    int spp = 64;
     int maxDepth = kDefaultMaxDepth;
     uint32_t seed = 0;
     Integrator integrator = Integrator::Nee;

@@ -12,7 +12,7 @@
 namespace fp::study {
 
 struct FlopCount {
-    const char* operation;
+    std::string operation;
     double flops;
     const char* breakdown;  // where the number comes from in the GLSL
 };

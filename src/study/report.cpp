@@ -312,7 +312,7 @@ std::string reportMarkdown(const std::vector<ReportInput>& scenes) {
         "src/study/flop_model.h has the line-by-line breakdown):\n\n| operation | FLOPs | from "
         "|\n|---|---|---|\n";
     for (const FlopCount& f : operationTable())
-        md += formatText("| %s | %.0f | %s |\n", f.operation, f.flops, f.breakdown);
+        md += formatText("| %s | %.0f | %s |\n", f.operation.c_str(), f.flops, f.breakdown);
     md += formatText(
         "\nFLOPs per path = %.0f x nodes + %.0f x triangle tests + %.0f x rays + %.0f (camera ray) + "
         "surfaces x (the integrator's surface interaction).\n\n",

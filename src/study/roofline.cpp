@@ -5,6 +5,7 @@
 #include <utility>
 #include <vector>
 
+#include "settings/integrators.h"
 #include "study/feasibility.h"
 
 namespace fp::study {
@@ -12,7 +13,7 @@ namespace fp::study {
 namespace {
 
 bool samplesLights(Integrator integrator) {
-    return integrator == Integrator::Nee || integrator == Integrator::Bdpt;
+    return integratorFacts(integrator).samplesLights;
 }
 
 // Steps of pickLight's binary search over `entries` cdf entries: ceil(log2 entries).
@@ -21,16 +22,7 @@ double searchSteps(int entries) {
 }
 
 double samplePairs(Integrator integrator) {
-    switch (integrator) {
-        case Integrator::Naive:
-            return 1.0;
-        case Integrator::Bsdf:
-            return 2.0;
-        case Integrator::Nee:
-        case Integrator::Bdpt:
-            return 4.0;
-    }
-    return 4.0;
+    return integratorFacts(integrator).samplePairs;
 }
 
 }  // namespace

@@ -3,17 +3,15 @@
 #include <algorithm>
 #include <cmath>
 
+#include "settings/setting_table.h"
+
 namespace fp {
 
 bool sameAccumulation(const RenderSettings& a, const RenderSettings& b) {
     bool sameSplit =
         a.split.has_value() == b.split.has_value() &&
         (!a.split || (a.split->integrator == b.split->integrator && a.split->maxDepth == b.split->maxDepth));
-    return a.width == b.width && a.height == b.height && a.maxDepth == b.maxDepth && a.seed == b.seed &&
-           a.integrator == b.integrator && a.view == b.view && a.samplesPerPass == b.samplesPerPass &&
-           a.sampleOffset == b.sampleOffset && a.sampler == b.sampler && a.lightSampling == b.lightSampling &&
-           a.lightSelection == b.lightSelection && a.caustics == b.caustics &&
-           a.clampIndirect == b.clampIndirect && sameSplit;
+    return sameSettings(a, b, kRestartsAccumulation) && sameSplit;
 }
 
 glm::ivec2 AccumulationPolicy::scaled(glm::ivec2 window, float scale) {

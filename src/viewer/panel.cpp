@@ -12,6 +12,8 @@
 
 #include "image/tone_map.h"
 #include "render/heat_map.h"
+#include "settings/integrators.h"
+#include "settings/setting_table.h"
 #include "viewer/camera_controller.h"
 
 namespace fp {
@@ -57,36 +59,55 @@ const char* countUnit(View view) {
     }
 }
 
-// A combo box over every value of an enum (`all`), each shown by `name`.
-template <typename E, size_t N>
-bool enumCombo(const char* label, E& value, const E (&all)[N], const char* (*name)(E)) {
-    int current = 0;
-    const char* names[N];
-    for (size_t i = 0; i < N; ++i) {
-        names[i] = name(all[i]);
-        if (all[i] == value) current = int(i);
-    }
-    if (!ImGui::Combo(label, &current, names, int(N))) return false;
-    value = all[current];
-    return true;
-}
-
-bool integratorCombo(const char* label, Integrator& integrator) {
+// A row of the settings table (settings/setting_table.h) as a widget: a combo box for a choice, else a
+// number field kept in the row's range; its help is the tooltip.
+bool settingWidget(const Setting& setting, double& value, const std::string& label) {
     bool changed = false;
-    if (!ImGui::BeginCombo(label, integratorName(integrator))) return false;
-    for (Integrator choice : kAllIntegrators) {
-        if (ImGui::Selectable(integratorName(choice), choice == integrator) && choice != integrator) {
-            integrator = choice;
-            changed = true;
+    if (setting.kind == SettingKind::Choice) {
+        if (ImGui::BeginCombo(label.c_str(), settingText(setting, value).c_str())) {
+            for (const SettingChoice& choice : setting.choices)
+                if (ImGui::Selectable(choice.name, choice.value == value) && choice.value != value) {
+                    value = choice.value;
+                    changed = true;
+                }
+            ImGui::EndCombo();
         }
+    } else if (setting.kind == SettingKind::Integer) {
+        int v = int(value);
+        changed = ImGui::InputInt(label.c_str(), &v);
+        if (changed) value = std::clamp(double(v), setting.min, setting.max);
+    } else {
+        float v = float(value);
+        changed = ImGui::InputFloat(label.c_str(), &v, 0.0f, 0.0f, "%.3g");
+        if (changed) value = std::isfinite(v) ? std::clamp(double(v), setting.min, setting.max) : value;
     }
-    ImGui::EndCombo();
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", setting.help);
     return changed;
 }
 
-void depthSlider(const char* label, int& depth) {
-    ImGui::SliderInt(label, &depth, 0, 16);
-    depth = std::clamp(depth, 0, 1000);  // ctrl+click may type any number
+// "max_depth" -> "max depth", and an ImGui id suffix to tell two widgets of one setting apart.
+std::string settingLabel(const Setting& setting, const char* id = "") {
+    std::string label = setting.name;
+    std::replace(label.begin(), label.end(), '_', ' ');
+    return label + id;
+}
+
+// The settings of `options` (RequestOption bits, in that order) that the integrator honours; the panel
+// has its own controls for size, target spp and samples per frame. A setting the integrator ignores is
+// hidden and set back to its default (bdpt refuses a clamp).
+void settingWidgets(RenderSettings& render, std::initializer_list<unsigned> options) {
+    for (unsigned option : options)
+        for (const Setting& setting : settingTable()) {
+            if (setting.option != option || setting.hidden || setting.option == kSizeOption ||
+                setting.option == kSppOption || std::string(setting.name) == "samples_per_pass")
+                continue;
+            double value = setting.get(render);
+            if (!integratorHonours(render.integrator, setting))
+                value = settingDefault(setting);
+            else
+                settingWidget(setting, value, settingLabel(setting));
+            setting.set(render, value);
+        }
 }
 
 // The heat map's colours from 0 to max, as the display pass draws them.
@@ -161,39 +182,14 @@ void statistics(const ViewerControls& c, const PanelInfo& info) {
 
 // The essentials: what is rendered, and until when.
 void renderSettings(ViewerControls& c) {
-    integratorCombo("integrator", c.render.integrator);
-    depthSlider("max depth", c.render.maxDepth);
-    enumCombo("view", c.render.view, kAllViews, viewName);
+    settingWidgets(c.render, {kIntegratorOption, kPathOptions, kViewOption});
     ImGui::InputInt("target spp", &c.targetSpp);
     c.targetSpp = std::max(c.targetSpp, 0);
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("stop rendering at this many samples per pixel; 0: never");
 }
 
 void samplingSettings(ViewerControls& c) {
-    enumCombo("sampler", c.render.sampler, kAllSamplers, samplerName);
-    if (ImGui::IsItemHovered())
-        ImGui::SetTooltip(
-            "sobol: stratified points, error spread as blue noise; independent: the textbook's");
-    if (c.render.integrator == Integrator::Nee) {
-        enumCombo("caustics", c.render.caustics, kAllCaustics, causticsName);
-        if (ImGui::IsItemHovered())
-            ImGui::SetTooltip(
-                "light through glass or off a mirror or glossy metal onto a surface the camera sees:\n"
-                "path: found by camera paths alone | light: by light paths aimed at the glass |\n"
-                "auto: light where the scene has glass, mirrors or glossy metals (and no clamp)");
-    }
-    if (c.render.integrator == Integrator::Bdpt) {
-        c.render.clampIndirect = 0.0f;  // bdpt has no clamp (its strategies share paths)
-    } else {
-        ImGui::InputFloat("clamp", &c.render.clampIndirect, 0.0f, 0.0f, "%.3g");
-        c.render.clampIndirect = std::max(c.render.clampIndirect, 0.0f);
-        if (ImGui::IsItemHovered())
-            ImGui::SetTooltip(
-                "clamp indirect: scale indirect light down to at most this per channel: fewer\n"
-                "fireflies, but BIASED (darker); 0: off");
-    }
-    int seed = int(c.render.seed);
-    if (ImGui::InputInt("seed", &seed)) c.render.seed = uint32_t(std::max(seed, 0));
+    settingWidgets(c.render, {kSamplingOptions});
     int scale = 0;
     for (size_t i = 0; i < std::size(kScales); ++i)
         if (kScales[i] == c.resolutionScale) scale = int(i);
@@ -235,8 +231,11 @@ void splitSettings(ViewerControls& c) {
     if (ImGui::IsItemHovered())
         ImGui::SetTooltip("the right half uses another integrator or depth, at the same sample count");
     if (c.split) {
-        integratorCombo("integrator##right", c.splitView.integrator);
-        depthSlider("max depth##right", c.splitView.maxDepth);
+        const Setting &integrator = *findSetting("integrator"), &depth = *findSetting("max_depth");
+        double i = double(int(c.splitView.integrator)), d = c.splitView.maxDepth;
+        if (settingWidget(integrator, i, settingLabel(integrator, "##right")))
+            c.splitView.integrator = Integrator(int(i));
+        if (settingWidget(depth, d, settingLabel(depth, "##right"))) c.splitView.maxDepth = int(d);
     }
 }
 

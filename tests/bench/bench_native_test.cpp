@@ -63,10 +63,10 @@ TEST(BenchNative, RefusesWhatTheReferenceDoesNotImplement) {
 // too: a Cornell box whose file asks for bdpt, or for Sobol points, is not what the reference renders.
 TEST(BenchNative, RefusesASceneFileAskingForAnotherAlgorithm) {
     Scene bdpt = builtinCornellBox();
-    bdpt.defaults.integrator = Integrator::Bdpt;
+    bdpt.fileSettings.set("integrator", int(Integrator::Bdpt));
     EXPECT_NE(refusal(bdpt).find("integrator bdpt"), std::string::npos) << refusal(bdpt);
     Scene clamped = builtinCornellBox();
-    clamped.defaults.clampIndirect = 2.0f;
+    clamped.fileSettings.set("clamp_indirect", 2.0);
     EXPECT_NE(refusal(clamped).find("clamp"), std::string::npos) << refusal(clamped);
     BenchSettings sobol;  // --native with --sampler sobol never gets here; a default BenchSettings does
     EXPECT_NE(refusal(builtinCornellBox(), sobol).find("sampler sobol"), std::string::npos);

@@ -29,15 +29,15 @@ std::string message(const std::vector<std::string>& argv) {
 Scene sceneWithDefaults() {
     Scene scene;
     scene.triangles.push_back({});
-    scene.defaults.width = 320;
-    scene.defaults.height = 240;
-    scene.defaults.spp = 7;
-    scene.defaults.maxDepth = 2;
-    scene.defaults.seed = 9u;
-    scene.defaults.integrator = Integrator::Bsdf;
-    scene.defaults.sampler = Sampler::Independent;
-    scene.defaults.lightSampling = LightSampling::Area;
-    scene.defaults.clampIndirect = 3.0f;
+    scene.fileSettings.set("width", 320);
+    scene.fileSettings.set("height", 240);
+    scene.fileSettings.set("spp", 7);
+    scene.fileSettings.set("max_depth", 2);
+    scene.fileSettings.set("seed", 9u);
+    scene.fileSettings.set("integrator", int(Integrator::Bsdf));
+    scene.fileSettings.set("sampler", int(Sampler::Independent));
+    scene.fileSettings.set("light_sampling", int(LightSampling::Area));
+    scene.fileSettings.set("clamp_indirect", 3.0f);
     Camera camera;
     camera.eye = {0, 0, 5};
     camera.fovY = 50.0f;
@@ -165,11 +165,7 @@ TEST(RenderRequest, FlagsOverrideTheSceneFile) {
 }
 
 TEST(RenderRequest, AFrontEndCanKeepItsOwnSizeAndSpp) {
-    FrontEndDefaults window;
-    window.size = {800, 600};
-    window.sceneSize = false;
-    window.spp = 0;
-    window.sceneSpp = false;
+    FrontEndDefaults window = FrontEndDefaults::ownImage({800, 600}, 0);
     Scene scene = sceneWithDefaults();
     RenderRequest r = request({}, window);
     EXPECT_EQ(r.settings(scene).width, 800);

@@ -97,12 +97,12 @@ TEST(CornellAsset, SceneFileGivesCameraAndRenderDefaults) {
     EXPECT_EQ(scene.camera->target, glm::vec3(278.0f, 273.0f, 0.0f));
     EXPECT_EQ(scene.camera->up, glm::vec3(0.0f, 1.0f, 0.0f));
     EXPECT_FLOAT_EQ(scene.camera->fovY, 39.3f);
-    EXPECT_EQ(scene.defaults.width, 512);
-    EXPECT_EQ(scene.defaults.height, 512);
-    EXPECT_EQ(scene.defaults.spp, 64);
-    EXPECT_EQ(scene.defaults.maxDepth, 5);
-    EXPECT_FALSE(scene.defaults.seed.has_value());
-    EXPECT_FALSE(scene.defaults.integrator.has_value());
+    EXPECT_EQ(scene.fileSettings.get("width"), 512);
+    EXPECT_EQ(scene.fileSettings.get("height"), 512);
+    EXPECT_EQ(scene.fileSettings.get("spp"), 64);
+    EXPECT_EQ(scene.fileSettings.get("max_depth"), 5);
+    EXPECT_FALSE(scene.fileSettings.get("seed").has_value());
+    EXPECT_FALSE(scene.fileSettings.get("integrator").has_value());
     EXPECT_EQ(scene.source, kCornellJson);
 }
 
@@ -130,10 +130,10 @@ TEST(CornellAsset, BuiltinEqualsTheAssetFiles) {
     EXPECT_EQ(builtin.camera->target, files.camera->target);
     EXPECT_EQ(builtin.camera->up, files.camera->up);
     EXPECT_EQ(builtin.camera->fovY, files.camera->fovY);
-    EXPECT_EQ(builtin.defaults.width, files.defaults.width);
-    EXPECT_EQ(builtin.defaults.height, files.defaults.height);
-    EXPECT_EQ(builtin.defaults.spp, files.defaults.spp);
-    EXPECT_EQ(builtin.defaults.maxDepth, files.defaults.maxDepth);
+    EXPECT_EQ(builtin.fileSettings.get("width"), files.fileSettings.get("width"));
+    EXPECT_EQ(builtin.fileSettings.get("height"), files.fileSettings.get("height"));
+    EXPECT_EQ(builtin.fileSettings.get("spp"), files.fileSettings.get("spp"));
+    EXPECT_EQ(builtin.fileSettings.get("max_depth"), files.fileSettings.get("max_depth"));
     EXPECT_FALSE(builtin.source.empty());
 }
 

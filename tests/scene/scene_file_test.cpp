@@ -49,17 +49,17 @@ TEST(SceneFile, CameraAndRenderParsed) {
     EXPECT_EQ(scene.camera->target, glm::vec3(4, 5, 6));
     EXPECT_EQ(scene.camera->up, glm::vec3(0, 0, 1));
     EXPECT_FLOAT_EQ(scene.camera->fovY, 55.5f);
-    EXPECT_EQ(scene.defaults.width, 640);
-    EXPECT_EQ(scene.defaults.height, 480);
-    EXPECT_EQ(scene.defaults.spp, 16);
-    EXPECT_EQ(scene.defaults.maxDepth, 0);
-    EXPECT_EQ(scene.defaults.seed, 2147483647u);
-    EXPECT_EQ(scene.defaults.integrator, Integrator::Bsdf);
-    EXPECT_EQ(scene.defaults.sampler, Sampler::Independent);
-    EXPECT_EQ(scene.defaults.lightSampling, LightSampling::Area);
-    EXPECT_EQ(scene.defaults.lightSelection, LightSelection::Tree);
-    EXPECT_EQ(scene.defaults.caustics, Caustics::Path);
-    EXPECT_EQ(scene.defaults.clampIndirect, 4.5f);
+    EXPECT_EQ(scene.fileSettings.get("width"), 640);
+    EXPECT_EQ(scene.fileSettings.get("height"), 480);
+    EXPECT_EQ(scene.fileSettings.get("spp"), 16);
+    EXPECT_EQ(scene.fileSettings.get("max_depth"), 0);
+    EXPECT_EQ(scene.fileSettings.get("seed"), 2147483647u);
+    EXPECT_EQ(scene.fileSettings.get("integrator"), int(Integrator::Bsdf));
+    EXPECT_EQ(scene.fileSettings.get("sampler"), int(Sampler::Independent));
+    EXPECT_EQ(scene.fileSettings.get("light_sampling"), int(LightSampling::Area));
+    EXPECT_EQ(scene.fileSettings.get("light_selection"), int(LightSelection::Tree));
+    EXPECT_EQ(scene.fileSettings.get("caustics"), int(Caustics::Path));
+    EXPECT_EQ(scene.fileSettings.get("clamp_indirect"), 4.5f);
 }
 
 TEST(SceneFile, CameraDefaults) {
@@ -105,12 +105,13 @@ TEST(SceneFile, BadThinLens) {
 TEST(SceneFile, CameraAndRenderOptional) {
     Scene scene = SceneDir(sceneWith("")).load();
     EXPECT_FALSE(scene.camera.has_value());
-    EXPECT_FALSE(scene.defaults.width || scene.defaults.height || scene.defaults.spp ||
-                 scene.defaults.maxDepth || scene.defaults.seed || scene.defaults.integrator);
+    EXPECT_FALSE(scene.fileSettings.get("width") || scene.fileSettings.get("height") ||
+                 scene.fileSettings.get("spp") || scene.fileSettings.get("max_depth") ||
+                 scene.fileSettings.get("seed") || scene.fileSettings.get("integrator"));
     Scene partial = SceneDir(sceneWith(R"("render": {"spp": 4, "integrator": "naive"})")).load();
-    EXPECT_EQ(partial.defaults.spp, 4);
-    EXPECT_EQ(partial.defaults.integrator, Integrator::Naive);
-    EXPECT_FALSE(partial.defaults.width.has_value());
+    EXPECT_EQ(partial.fileSettings.get("spp"), 4);
+    EXPECT_EQ(partial.fileSettings.get("integrator"), int(Integrator::Naive));
+    EXPECT_FALSE(partial.fileSettings.get("width").has_value());
 }
 
 TEST(SceneFile, MeshRelativeToTheSceneFile) {
@@ -210,12 +211,15 @@ TEST(SceneFile, WrongTypes) {
     SceneDir(sceneWith(eye + "[1, true, 3]}")).reject("camera.eye[1] must be a number");
     SceneDir(sceneWith(R"("camera": {"eye": [0, 0, -5], "target": [0, 0, 0], "fov": "wide"})"))
         .reject("camera.fov must be a number");
-    SceneDir(sceneWith(R"("render": {"width": "512"})")).reject("render.width must be an integer");
-    SceneDir(sceneWith(R"("render": {"spp": 1.5})")).reject("render.spp must be an integer");
-    SceneDir(sceneWith(R"("render": {"integrator": 3})")).reject("render.integrator must be a string");
+    SceneDir(sceneWith(R"("render": {"width": "512"})"))
+        .reject("render.width must be a whole number from 1 to 65536, got \"512\"");
+    SceneDir(sceneWith(R"("render": {"spp": 1.5})"))
+        .reject("render.spp must be a whole number from 1 to 16777216, or unlimited, got 1.5");
+    SceneDir(sceneWith(R"("render": {"integrator": 3})"))
+        .reject("render.integrator must be one of naive, bsdf, nee or bdpt, got 3");
     SceneDir(sceneWith(R"("render": 5)")).reject("render must be a JSON object");
     // An integral number written with a fraction is still an integer.
-    EXPECT_EQ(SceneDir(sceneWith(R"("render": {"width": 512.0})")).load().defaults.width, 512);
+    EXPECT_EQ(SceneDir(sceneWith(R"("render": {"width": 512.0})")).load().fileSettings.get("width"), 512);
 }
 
 TEST(SceneFile, NonFiniteNumbers) {
@@ -227,13 +231,18 @@ TEST(SceneFile, NonFiniteNumbers) {
 }
 
 TEST(SceneFile, BadRenderSettings) {
-    SceneDir(sceneWith(R"("render": {"width": 0})")).reject("render.width must be in [1, 2147483647], got 0");
-    SceneDir(sceneWith(R"("render": {"height": -4})")).reject("render.height must be in [1,");
-    SceneDir(sceneWith(R"("render": {"spp": 0})")).reject("render.spp must be in [1,");
-    SceneDir(sceneWith(R"("render": {"max_depth": -1})")).reject("render.max_depth must be in [0,");
-    SceneDir(sceneWith(R"("render": {"width": 3000000000})")).reject("render.width must be in");
-    SceneDir(sceneWith(R"("render": {"seed": -1})")).reject("render.seed must be in [0, 2147483647]");
-    SceneDir(sceneWith(R"("render": {"seed": 4294967296})")).reject("render.seed must be in");
+    SceneDir(sceneWith(R"("render": {"width": 0})"))
+        .reject("render.width must be a whole number from 1 to 65536, got 0");
+    SceneDir(sceneWith(R"("render": {"height": -4})"))
+        .reject("render.height must be a whole number from 1 to");
+    SceneDir(sceneWith(R"("render": {"spp": 0})")).reject("render.spp must be a whole number from 1 to");
+    SceneDir(sceneWith(R"("render": {"max_depth": -1})"))
+        .reject("render.max_depth must be a whole number from 0 to 1000, got -1");
+    SceneDir(sceneWith(R"("render": {"width": 3000000000})")).reject("render.width must be a whole number");
+    SceneDir(sceneWith(R"("render": {"seed": -1})"))
+        .reject("render.seed must be a whole number from 0 to 2147483647, got -1");
+    SceneDir(sceneWith(R"("render": {"seed": 4294967296})"))
+        .reject("render.seed must be a whole number from 0 to 2147483647, got 4294967296");
     SceneDir(sceneWith(R"("render": {"integrator": "path"})"))
         .reject("render.integrator: unknown integrator 'path' (choose naive, bsdf, nee or bdpt)");
     SceneDir(sceneWith(R"("render": {"sampler": "halton"})"))
@@ -241,7 +250,7 @@ TEST(SceneFile, BadRenderSettings) {
     SceneDir(sceneWith(R"("render": {"light_sampling": "cone"})"))
         .reject("render.light_sampling: unknown light sampling 'cone'");
     SceneDir(sceneWith(R"("render": {"clamp_indirect": -1})"))
-        .reject("render.clamp_indirect must be 0 (off) or more");
+        .reject("render.clamp_indirect must be a number, 0 or more, got -1");
     SceneDir(sceneWith(R"("render": {"clamp_indirect": "big"})"))
         .reject("render.clamp_indirect must be a number");
 }

@@ -19,8 +19,8 @@ constexpr unsigned kNativeOptions =
 
 fp::FrontEndDefaults nativeDefaults() {
     fp::FrontEndDefaults d;
-    d.spp = 1;
-    d.sceneSpp = false;
+    d.own.set("spp", 1);
+    d.ignoresSceneFile = fp::kSppOption;
     d.defaultLight = fp::DefaultLight::UniformSky;  // constant skies only (native_scene.cpp)
     return d;
 }
