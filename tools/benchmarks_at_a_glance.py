@@ -18,21 +18,21 @@ its figures mean nothing and it never rewrites BENCHMARKS.md unless --write-quic
 Every measurement is written to build/benchmarks/at_a_glance.json (--json), which --from-json turns
 into the table again without measuring."""
 import argparse
-import array
 import csv
 import datetime
 import json
 import math
 import os
 import re
-import shutil
 import statistics
 import subprocess
 import sys
-import tempfile
 import time
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+sys.path.insert(0, os.path.join(ROOT, "tools"))
+from race_cycles import read_pfm  # noqa: E402
+from startup_times import sample_models  # noqa: E402
 BEGIN = "<!-- at-a-glance:begin -->"
 END = "<!-- at-a-glance:end -->"
 
@@ -122,19 +122,6 @@ class Runner:
         image = self.path("images", name + ".pfm")
         stats = self.json(["render"] + list(args) + ["--quiet", "-o", image], name)
         return stats, read_pfm(image)
-
-
-def read_pfm(path):
-    with open(path, "rb") as f:
-        kind = f.readline().strip()
-        width, height = (int(v) for v in f.readline().split())
-        scale = float(f.readline())
-        values = array.array("f")
-        values.frombytes(f.read())
-    if scale > 0:
-        values.byteswap()
-    assert kind == b"PF" and len(values) == width * height * 3, path
-    return values
 
 
 def rmse(a, b, mask=None):
@@ -254,13 +241,7 @@ def measure_first_frame(r):
 
 def measure_gltf_startup(r):
     samples = os.path.join(ROOT, "..", "shared", "gltf-samples")
-    models = []
-    if os.path.isdir(samples):
-        for directory, _, files in os.walk(samples):
-            for name in files:
-                if name.endswith((".gltf", ".glb")) and "screenshot" not in directory:
-                    models.append(os.path.join(directory, name))
-    models.sort()
+    models = sample_models(samples) if os.path.isdir(samples) else []
     if r.quick:
         models = models[:2]
     big = []
