@@ -491,9 +491,7 @@ def row_sphere1m_first(m):
 
 def row_glb(m):
     return ("sphere-1m as a `.glb` file: first frame (256x256), load stage",
-            "%s s (target 1.5 s: %s); load %s s" % (span(m["first_frame_seconds"], "%.2f"),
-                                                   "met" if med(m["first_frame_seconds"]) <= 1.5 else "not met",
-                                                   span(m["load_seconds"], "%.2f")))
+            "%s s wall; load %s s" % (span(m["first_frame_seconds"], "%.2f"), span(m["load_seconds"], "%.2f")))
 
 
 def row_instancing(m):
@@ -581,7 +579,7 @@ def row_caustic_study(m):
 def row_viewer(m):
     share = [p / med(m["bench_paths_per_second"]) for p in m["paths_per_second"]]
     return ("viewer, 800x600 window with its panel (under Xvfb)",
-            "median frame %s ms; %s %% of the offscreen renderer's paths/s" %
+            "median frame %s ms; %s %% of the offscreen renderer's paths per wall second" %
             (span(m["median_frame_ms"], "%.1f"), span([100 * s for s in share], "%.0f")))
 
 
