@@ -2,7 +2,7 @@
 BUILD ?= build
 JOBS ?= 2
 
-.PHONY: deps build render test sanitize fuzz clean format
+.PHONY: deps build render test sanitize fuzz clean format benchmarks
 
 deps:
 	@tools/install-deps.sh
@@ -16,6 +16,11 @@ render: build
 
 test: build
 	LP_NUM_THREADS=2 ctest --test-dir $(BUILD) --output-on-failure -j 1
+
+# BENCHMARKS.md's at-a-glance table from one run, stamped with the commit, date and machine (about half an
+# hour on 2 idle cores; tools/benchmarks.sh --quick checks the script in a minute).
+benchmarks: build
+	tools/benchmarks.sh
 
 # The whole test suite built with AddressSanitizer and UBSan (our code; Mesa itself is not instrumented).
 sanitize: deps
