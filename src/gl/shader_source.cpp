@@ -1,6 +1,7 @@
 #include "gl/shader_source.h"
 
 #include <fstream>
+#include <mutex>
 #include <regex>
 #include <set>
 #include <sstream>
@@ -12,7 +13,21 @@ namespace fp {
 
 ShaderLibrary::ShaderLibrary(std::string directory) : directory_(std::move(directory)) {}
 
+namespace {
+std::mutex sourcesMutex;
+std::set<std::string> sourcesRead;
+}  // namespace
+
+std::set<std::string> ShaderLibrary::takeSourcesRead() {
+    std::lock_guard<std::mutex> lock(sourcesMutex);
+    return std::exchange(sourcesRead, {});
+}
+
 std::string ShaderLibrary::read(const std::string& path) const {
+    {
+        std::lock_guard<std::mutex> lock(sourcesMutex);
+        sourcesRead.insert(directory_);
+    }
     if (directory_.empty()) {
         auto it = embeddedShaders().find(path);
         if (it == embeddedShaders().end()) throw Error("no shader file glsl/" + path + " in this build");

@@ -1,0 +1,48 @@
+#pragma once
+// Variants of the production shaders that the tests need and the program never renders: each isolates
+// one strategy or undoes one choice, by editing a copy of the test shaders (test_shaders.h,
+// testShadersEdited). The edits name the lines they change, so a change to those lines fails loudly
+// (fp::Error) instead of testing the unedited shaders.
+#include <string>
+
+#include "test_shaders.h"
+
+namespace fp::test {
+
+// bdpt by light tracing alone: every MIS weight 0 but that of strategy t = 1, the light subpath joined
+// to the camera (bdpt_test.cpp, punctual_light_test.cpp, depth_of_field_test.cpp).
+inline ShaderLibrary lightTracingOnlyShaders() {
+    return testShadersEdited(
+        "light_tracing_only",
+        {{"integrators/bdpt_subpaths.glsl", "bool deltaLight) {\n",
+          "bool deltaLight) {\n    return t == 1 ? 1.0 : 0.0;  // light tracing alone\n"}});
+}
+
+// nee's caustic paths alone, those the light pass sums (--caustics light) or, with --caustics path, the
+// camera paths that find the same light, with at least `smoothVertices` smooth vertices (2: the light
+// that caustics send on): both passes sum nothing else (caustics_test.cpp).
+inline ShaderLibrary lightPassPathsOnlyShaders(int smoothVertices) {
+    const std::string n = std::to_string(smoothVertices);
+    return testShadersEdited(
+        "light_pass_paths_only_" + n,
+        {// the camera pass: emitters met, and light samples (x_{m+1} the light, at depth + 1)
+         {"integrators/nee.glsl", "    if (Le != vec3(0.0))\n",
+          "    if (!lightPassPath || p.causticSmooth < " + n +
+              ") Le = vec3(0.0);\n    if (Le != vec3(0.0))\n"},
+         {"integrators/nee.glsl", "    if (lightSample) {\n",
+          "    lightSample = lightSample && lightPassSample && p.causticSmooth >= " + n +
+              ";\n    if (lightSample) {\n"},
+         // the light pass: smooth vertices counted with the receiver y_{s-1}
+         {"integrators/bdpt_subpaths.glsl", "    return smoothSamples < CAUSTIC_SMOOTH_BOUNCES;\n",
+          "    if (smoothSamples + 1 < " + n +
+              ") return false;\n    return smoothSamples < CAUSTIC_SMOOTH_BOUNCES;\n"}});
+}
+
+// The Sobol sampler with every pair padded by its own shuffle, none of them joint (rng.glsl,
+// kJointPairs): what sobol_sampler_test.cpp compares the joint pairs with.
+inline ShaderLibrary paddedSobolPairsShaders() {
+    return testShadersEdited("padded_sobol_pairs", {{"common/rng.glsl", "const uint kJointPairs = 2u;",
+                                                     "const uint kJointPairs = 0u;"}});
+}
+
+}  // namespace fp::test
