@@ -3,6 +3,15 @@
 // one strategy or undoes one choice, by editing a copy of the test shaders (test_shaders.h,
 // testShadersEdited). The edits name the lines they change, so a change to those lines fails loudly
 // (fp::Error) instead of testing the unedited shaders.
+//
+// What each one lets the tests see (tried on copies through FP_RENDER_TEST_SHADERS): light tracing's
+// weight times 0.9 (passes/light_trace.frag.glsl) fails Bdpt.LightTracingAloneConvergesToNee,
+// DepthOfField.LightTracingAloneConvergesToNeeThroughALens and the point, spot and directional light
+// tests; the light pass leaving out the light caustics send on (causticStrategy, s > 3) fails
+// Caustics.LightPassFindsTheLightCausticsSendOnAsCameraPathsDo (light 0x the camera paths) and the glossy
+// metal's restricted comparison (0.60x) while its whole image passes (0.99x). With the variants made
+// no-ops, Bdpt.LightTracingAloneConvergesToNee and SobolSampler.JitterAndLightPointAreStratifiedTogether
+// fail.
 #include <string>
 
 #include "test_shaders.h"
