@@ -54,4 +54,11 @@ inline ShaderLibrary paddedSobolPairsShaders() {
                                                      "const uint kJointPairs = 0u;"}});
 }
 
+// Paths the roulette never stops (surface.glsl, kRouletteDepth beyond any depth): unbiased whatever the
+// roulette's code does, the reference of roulette_bias_test.cpp where no closed form exists.
+inline ShaderLibrary noRouletteShaders() {
+    return testShadersEdited("no_roulette", {{"common/surface.glsl", "const int kRouletteDepth = 3;",
+                                              "const int kRouletteDepth = 1 << 30;"}});
+}
+
 }  // namespace fp::test
