@@ -42,6 +42,28 @@ double furnaceRadiance(double albedo, double emission, int depth) {
     return emission * (1.0 - tail) / (1.0 - albedo);
 }
 
+// The box with walls of albedo `albedo` around two spheres of white (non-absorbing) glass and metal of
+// GGX roughness `roughness` (0: smooth glass and a mirror; Schlick's Fresnel from F0 = 1 is 1 at every
+// angle), both in view of insideCamera().
+Scene boxWithGlassAndMetal(float albedo, float roughness) {
+    Scene scene = furnaceBox(albedo, 1.0f);
+    Material glass;
+    glass.name = "glass";
+    glass.type = MaterialType::Dielectric;
+    glass.ior = 1.5f;
+    glass.roughness = roughness;
+    Material metal;
+    metal.name = "metal";
+    metal.type = MaterialType::Conductor;
+    metal.specular = glm::vec3(1.0f);
+    metal.roughness = roughness;
+    scene.materials.push_back(glass);
+    scene.materials.push_back(metal);
+    appendSphere(scene, glm::vec3(0.05f, 0.0f, 0.55f), 0.3f, 12, 24, 1, true);
+    appendSphere(scene, glm::vec3(0.6f, 0.15f, 0.75f), 0.25f, 12, 24, 2, true);
+    return scene;
+}
+
 void expectFurnace(Renderer& renderer, Integrator integrator, int depth, double expected, uint32_t seed,
                    int spp = kSpp) {
     Accumulation acc = renderScene(renderer, insideCamera(), integrator, kSize, spp, depth, seed);
@@ -77,21 +99,7 @@ TEST(RouletteFurnace, LambertianBoxMatchesTheGeometricSeriesAtDepth32) {
 TEST(RouletteFurnace, GlassAndMirrorInTheBoxLeaveTheWholeSeries) {
     ensureGlContext();
     const double albedo = 0.9;
-    Scene scene = furnaceBox(float(albedo), 1.0f);
-    Material glass;
-    glass.name = "glass";
-    glass.type = MaterialType::Dielectric;
-    glass.ior = 1.5f;
-    glass.roughness = 0.0f;
-    Material mirror;
-    mirror.name = "mirror";
-    mirror.type = MaterialType::Conductor;
-    mirror.specular = glm::vec3(1.0f);  // Schlick's Fresnel from F0 = 1: 1 at every angle
-    mirror.roughness = 0.0f;
-    scene.materials.push_back(glass);
-    scene.materials.push_back(mirror);
-    appendSphere(scene, glm::vec3(0.05f, 0.0f, 0.55f), 0.3f, 12, 24, 1, true);
-    appendSphere(scene, glm::vec3(0.6f, 0.15f, 0.75f), 0.25f, 12, 24, 2, true);
+    Scene scene = boxWithGlassAndMetal(float(albedo), 0.0f);
     Renderer renderer(scene, testShaders());
     for (Integrator integrator : {Integrator::Bsdf, Integrator::Nee})
         expectFurnace(renderer, integrator, 1000, furnaceRadiance(albedo, 1.0, -1), 13);
@@ -105,21 +113,7 @@ TEST(RouletteFurnace, GlassAndMirrorInTheBoxLeaveTheWholeSeries) {
 // roulette has ended almost every path: the light of the bounces beyond it must be the same either way.
 TEST(RouletteFurnace, RoughGlassAndMetalMatchPathsTheRouletteNeverStops) {
     ensureGlContext();
-    Scene scene = furnaceBox(0.9f, 1.0f);
-    Material glass;
-    glass.name = "rough glass";
-    glass.type = MaterialType::Dielectric;
-    glass.ior = 1.5f;
-    glass.roughness = 0.1f;
-    Material metal;
-    metal.name = "rough metal";
-    metal.type = MaterialType::Conductor;
-    metal.specular = glm::vec3(1.0f);
-    metal.roughness = 0.1f;
-    scene.materials.push_back(glass);
-    scene.materials.push_back(metal);
-    appendSphere(scene, glm::vec3(0.05f, 0.0f, 0.55f), 0.3f, 12, 24, 1, true);
-    appendSphere(scene, glm::vec3(0.6f, 0.15f, 0.75f), 0.25f, 12, 24, 2, true);
+    Scene scene = boxWithGlassAndMetal(0.9f, 0.1f);
     Renderer roulette(scene, testShaders()), never(scene, noRouletteShaders());
     for (Integrator integrator : {Integrator::Bsdf, Integrator::Nee, Integrator::Bdpt}) {
         const int depth = integrator == Integrator::Bdpt ? 12 : 32;
