@@ -4,6 +4,8 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <set>
+#include <string>
 
 #include "core/error.h"
 #include "gl/context.h"
@@ -89,6 +91,18 @@ TEST(EmbeddedShaders, EveryShippedFileExpands) {
     ShaderLibrary embedded;
     EXPECT_NO_THROW(embedded.expand("passes/fullscreen.vert.glsl", {}));
     EXPECT_THROW(embedded.read("no/such.glsl"), Error);
+}
+
+// Where shaders were read from, taken once (what tests/render/test_shaders.h checks after every test): the
+// embedded copy as "", a directory by its name; nothing that was only constructed.
+TEST_F(ShaderDir, SourcesReadAreTakenOnce) {
+    write("main.glsl", "void main() {}\n");
+    ShaderLibrary::takeSourcesRead();  // whatever earlier tests read
+    ShaderLibrary unused("/no/such/directory");
+    ShaderLibrary(dir_.string()).expand("main.glsl", {});
+    ShaderLibrary().read("passes/fullscreen.vert.glsl");
+    EXPECT_EQ(ShaderLibrary::takeSourcesRead(), (std::set<std::string>{"", dir_.string()}));
+    EXPECT_TRUE(ShaderLibrary::takeSourcesRead().empty());
 }
 
 // The GPU tests render with the source tree's glsl/ (tests/render/test_shaders.h), so that a copy of it
