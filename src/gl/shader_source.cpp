@@ -14,19 +14,26 @@ namespace fp {
 ShaderLibrary::ShaderLibrary(std::string directory) : directory_(std::move(directory)) {}
 
 namespace {
-std::mutex sourcesMutex;
-std::set<std::string> sourcesRead;
+// Function statics: a library may be read from during another file's static initialisation.
+struct SourcesRead {
+    std::mutex mutex;
+    std::set<std::string> sources;
+};
+SourcesRead& sourcesRead() {
+    static SourcesRead s;
+    return s;
+}
 }  // namespace
 
 std::set<std::string> ShaderLibrary::takeSourcesRead() {
-    std::lock_guard<std::mutex> lock(sourcesMutex);
-    return std::exchange(sourcesRead, {});
+    std::lock_guard<std::mutex> lock(sourcesRead().mutex);
+    return std::exchange(sourcesRead().sources, {});
 }
 
 std::string ShaderLibrary::read(const std::string& path) const {
     {
-        std::lock_guard<std::mutex> lock(sourcesMutex);
-        sourcesRead.insert(directory_);
+        std::lock_guard<std::mutex> lock(sourcesRead().mutex);
+        sourcesRead().sources.insert(directory_);
     }
     if (directory_.empty()) {
         auto it = embeddedShaders().find(path);
