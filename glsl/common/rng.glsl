@@ -215,11 +215,8 @@ uvec2 sobolDimensionsTwoAndThreeReversed(uint k) {
 // padded 0.00139, 0.00056, 0.00029, 0.00015, joint 0.00126, 0.00043, 0.00020, 0.00007
 // (BENCHMARKS.md, "Samplers"). The price: pair 1 is a (t, 2)-sequence with t up to 2 (at 8 points,
 // at most 1 beyond) where it was a (0, 2)-sequence; the 4D points have t <= 3 up to 1024 points.
-// SOBOL_JOINT_PAIRS 0u pads all pairs, as before (for tests/render/sobol_sampler_test.cpp).
-#ifndef SOBOL_JOINT_PAIRS
-#define SOBOL_JOINT_PAIRS 2u
-#endif
-const uint kJointPairs = SOBOL_JOINT_PAIRS;
+// (tests/render/sobol_sampler_test.cpp compares a copy that pads all pairs, kJointPairs 0u.)
+const uint kJointPairs = 2u;
 uvec4 gJointPoint;  // the sample's point in Sobol dimensions 0 to 3, bits reversed
 
 void samplerInit(uint seed, uvec2 pixel, uint sampleIndex) {

@@ -143,10 +143,6 @@ bool causticStrategy(int s) {
         else if (smoothSamples > 0)
             return false;  // a caster's lobe after the receiver
     }
-#ifdef NEE_ONLY_LIGHT_PASS_PATHS
-    // Test only (caustics_test.cpp): at least that many smooth vertices, the receiver y_{s-1} included.
-    if (smoothSamples + 1 < NEE_ONLY_LIGHT_PASS_PATHS) return false;
-#endif
     return smoothSamples < CAUSTIC_SMOOTH_BOUNCES;
 }
 #endif
@@ -308,9 +304,6 @@ bool unoccluded(PathVertex a, PathVertex b) { return !segmentOccluded(a.p, a.ng,
 // area density projected onto y1.
 float misWeight(int s, int t, float zRevLast, float zRevPrev, float yRevLast, float yRevPrev, float yFwdFresh,
                 bool deltaLight) {
-#ifdef BDPT_LIGHT_TRACING_ONLY
-    return t == 1 ? 1.0 : 0.0;  // a test isolates strategy t = 1 (tests/render/bdpt_test.cpp)
-#endif
 #if CAUSTICS_LIGHT_TRACED
     return t == 1 && causticStrategy(s) ? 1.0 : 0.0;  // the paths no other estimator sums
 #endif

@@ -68,12 +68,6 @@ bool extendPath(inout CameraPath p) {
     // the light pass's; an unlit surface is no light, which the light pass cannot start from
     if (lightPassPath && s.material.type != MATERIAL_UNLIT) Le = vec3(0.0);
 #endif
-#ifdef NEE_ONLY_LIGHT_PASS_PATHS
-    // Test only (tests/render/caustics_test.cpp): nothing but the paths the light pass sums, with at
-    // least NEE_ONLY_LIGHT_PASS_PATHS smooth vertices (2: the light that caustics send on); so also
-    // for the light samples (below).
-    if (!lightPassPath || p.causticSmooth < NEE_ONLY_LIGHT_PASS_PATHS) Le = vec3(0.0);
-#endif
     if (Le != vec3(0.0))
         addLight(p.L, p.beta * Le * (p.fullWeight ? 1.0 : powerHeuristic(p.lastPdf, lightPdf(p.lastPosition, p.lastNormal, ray, hit))), depth);
     if (depth == uMaxDepth) return false;
@@ -85,9 +79,6 @@ bool extendPath(inout CameraPath p) {
     bool lightSample = !isDeltaOnly(s.material);
 #if CAUSTICS_LIGHT_TRACED
     lightSample = lightSample && !lightPassSample;  // the light pass's
-#endif
-#ifdef NEE_ONLY_LIGHT_PASS_PATHS
-    lightSample = lightSample && lightPassSample && p.causticSmooth >= NEE_ONLY_LIGHT_PASS_PATHS;
 #endif
     if (lightSample) {
         LightSample ls = sampleLight(s.position, s.shadingNormal);

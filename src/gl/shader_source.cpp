@@ -1,6 +1,7 @@
 #include "gl/shader_source.h"
 
 #include <fstream>
+#include <mutex>
 #include <regex>
 #include <set>
 #include <sstream>
@@ -12,7 +13,28 @@ namespace fp {
 
 ShaderLibrary::ShaderLibrary(std::string directory) : directory_(std::move(directory)) {}
 
+namespace {
+// Function statics: a library may be read from during another file's static initialisation.
+struct SourcesRead {
+    std::mutex mutex;
+    std::set<std::string> sources;
+};
+SourcesRead& sourcesRead() {
+    static SourcesRead s;
+    return s;
+}
+}  // namespace
+
+std::set<std::string> ShaderLibrary::takeSourcesRead() {
+    std::lock_guard<std::mutex> lock(sourcesRead().mutex);
+    return std::exchange(sourcesRead().sources, {});
+}
+
 std::string ShaderLibrary::read(const std::string& path) const {
+    {
+        std::lock_guard<std::mutex> lock(sourcesRead().mutex);
+        sourcesRead().sources.insert(directory_);
+    }
     if (directory_.empty()) {
         auto it = embeddedShaders().find(path);
         if (it == embeddedShaders().end()) throw Error("no shader file glsl/" + path + " in this build");

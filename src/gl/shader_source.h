@@ -2,6 +2,7 @@
 // GLSL sources with a small #include mechanism. Files come from the embedded glsl/ tree or, for hot
 // reloading and experiments, from a directory on disk. Expansion records where every line came from,
 // so that compiler messages can be mapped back to the original file and line.
+#include <set>
 #include <string>
 #include <utility>
 #include <vector>
@@ -30,6 +31,11 @@ class ShaderLibrary {
     // #define can have one) becomes `#extension GL_<extension> : <value>` instead, in its place before
     // any declaration as GLSL requires. Throws fp::Error naming file and line for a bad include.
     ExpandedShader expand(const std::string& path, const ShaderDefines& defines) const;
+
+    // Where every library of this process has read files from since the last call: directories, and ""
+    // for the shaders compiled in. The tests take it after each test to check that it rendered with the
+    // shaders they are pointed at (tests/render/test_shaders.h).
+    static std::set<std::string> takeSourcesRead();
 
   private:
     std::string directory_;

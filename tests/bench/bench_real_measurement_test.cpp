@@ -4,7 +4,7 @@
 
 #include "bench/bench_measure.h"
 #include "bench/bench_native.h"
-#include "render/render_test_util.h"  // ensureGlContext
+#include "render/render_test_util.h"  // ensureGlContext, testShaders
 #include "scene/builtin_scene.h"
 
 namespace fp::bench {
@@ -18,6 +18,7 @@ BenchSettings tinySettings() {
     s.render.samplesPerPass = 1;
     s.spp = kSpp;
     s.runs = kRuns;
+    s.shaderDir = test::testShaders().directory();
     return s;
 }
 

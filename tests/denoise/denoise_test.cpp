@@ -3,11 +3,8 @@
 // blur across a normal discontinuity.
 #include <gtest/gtest.h>
 
-#include <unistd.h>
 #include <cmath>
 #include <cstdio>
-#include <filesystem>
-#include <fstream>
 
 #include "core/error.h"
 #include "denoise/denoise_passes.h"
@@ -116,7 +113,7 @@ TEST(Denoise, NeverMakesNanOrInf) {
     addQuad(scene, {0, -1, 0}, {1, -1, 0}, {1, 0, 0}, {0, 0, 0}, white);
     addQuad(scene, {-0.5f, 0.2f, 0.5f}, {0.5f, 0.2f, 0.5f}, {0.5f, 0.6f, 0.5f}, {-0.5f, 0.6f, 0.5f}, lamp);
     Renderer renderer(scene, testShaders());
-    DenoisePasses passes;
+    DenoisePasses passes(testShaders());
     for (int spp : {1, 4}) {
         renderer.configure(guided(32, Integrator::Nee, 3), frontCamera());
         renderer.render(spp);
@@ -142,16 +139,10 @@ TEST(Denoise, NeverMakesNanOrInf) {
 // --shader-dir` could not try a changed denoiser).
 TEST(Denoise, PassesComeFromTheRenderersShaderDirectory) {
     ensureGlContext();
-    namespace fs = std::filesystem;
-    fs::path dir = fs::temp_directory_path() / ("fp_denoise_shaders_" + std::to_string(::getpid()));
-    fs::remove_all(dir);
-    fs::copy(FP_SOURCE_DIR "/glsl", dir, fs::copy_options::recursive);
-    {
-        std::ofstream broken(dir / "denoise" / "atrous.frag.glsl", std::ios::app);
-        broken << "\nthis does not compile\n";
-    }
+    ShaderLibrary broken =
+        testShadersEdited("broken_atrous", {{"denoise/atrous.frag.glsl", "", "\nthis does not compile\n"}});
     Scene scene = furnaceBox(0.5f, 1.0f);
-    Renderer renderer(scene, ShaderLibrary(dir.string()));
+    Renderer renderer(scene, broken);
     renderer.configure(guided(8, Integrator::Nee, 2), insideCamera());
     renderer.render(2);
     EXPECT_NO_THROW(denoise(renderer, Denoiser::Bilateral));
@@ -161,7 +152,6 @@ TEST(Denoise, PassesComeFromTheRenderersShaderDirectory) {
     } catch (const Error& e) {
         EXPECT_NE(std::string(e.what()).find("atrous.frag.glsl"), std::string::npos) << e.what();
     }
-    fs::remove_all(dir);
 }
 
 TEST(Denoise, NoneIsTheRawMeanAndFiltersNeedGuides) {
@@ -353,7 +343,7 @@ TEST(Denoise, PassedThroughPixelsLendTheirInputToTheirNeighbours) {
     GLuint modulate = texture([](int, int) { return glm::vec4(2.0f, 2.0f, 2.0f, 0.0f); });
     GLuint settled =
         texture([](int x, int y) { return glm::vec4(0.0f, 0.0f, 0.0f, (x + y) % 2 ? 0.0f : 16.0f); });
-    DenoisePasses passes;
+    DenoisePasses passes(testShaders());
     passes.filter(oldInput, guide, modulate, size, size, Denoiser::Atrous);
     passes.filter(input, guide, modulate, size, size, Denoiser::Atrous, settled, 16.0f);
     Image out = passes.result();

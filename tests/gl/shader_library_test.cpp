@@ -3,9 +3,13 @@
 
 #include <filesystem>
 #include <fstream>
+#include <iterator>
+#include <set>
+#include <string>
 
 #include "core/error.h"
 #include "gl/context.h"
+#include "gl/embedded_shaders.h"
 #include "gl/program.h"
 #include "gl/shader_source.h"
 
@@ -87,6 +91,38 @@ TEST(EmbeddedShaders, EveryShippedFileExpands) {
     ShaderLibrary embedded;
     EXPECT_NO_THROW(embedded.expand("passes/fullscreen.vert.glsl", {}));
     EXPECT_THROW(embedded.read("no/such.glsl"), Error);
+}
+
+// Where shaders were read from, taken once (what tests/render/test_shaders.h checks after every test): the
+// embedded copy as "", a directory by its name; nothing that was only constructed.
+TEST_F(ShaderDir, SourcesReadAreTakenOnce) {
+    write("main.glsl", "void main() {}\n");
+    ShaderLibrary::takeSourcesRead();  // whatever earlier tests read
+    ShaderLibrary unused("/no/such/directory");
+    ShaderLibrary(dir_.string()).expand("main.glsl", {});
+    ShaderLibrary().read("passes/fullscreen.vert.glsl");
+    EXPECT_EQ(ShaderLibrary::takeSourcesRead(), (std::set<std::string>{"", dir_.string()}));
+    EXPECT_TRUE(ShaderLibrary::takeSourcesRead().empty());
+}
+
+// The GPU tests render with the source tree's glsl/ (tests/render/test_shaders.h), so that a copy of it
+// with a deliberate bias reaches every one of them; what they vouch for is the copy compiled into the
+// binary only if the two hold the same files, byte for byte.
+TEST(EmbeddedShaders, AreTheSourceTreesFiles) {
+    const fs::path root = FP_SOURCE_DIR "/glsl";
+    size_t onDisk = 0;
+    for (const fs::directory_entry& entry : fs::recursive_directory_iterator(root)) {
+        if (!entry.is_regular_file() || entry.path().extension() != ".glsl") continue;
+        ++onDisk;
+        const std::string path = fs::relative(entry.path(), root).generic_string();
+        std::ifstream in(entry.path(), std::ios::binary);
+        const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+        auto it = embeddedShaders().find(path);
+        ASSERT_NE(it, embeddedShaders().end()) << "glsl/" << path << " is not compiled in: rebuild";
+        EXPECT_EQ(it->second, text) << "glsl/" << path << " differs from the copy compiled in: rebuild";
+    }
+    EXPECT_GT(onDisk, 30u);
+    EXPECT_EQ(embeddedShaders().size(), onDisk) << "files compiled in that the source tree no longer has";
 }
 
 TEST_F(ShaderDir, RealCompileErrorReportsTheOriginalFileAndLine) {

@@ -14,6 +14,7 @@
 #include "render_test_util.h"
 #include "scene/builtin_scene.h"
 #include "scene/procedural.h"
+#include "shader_variants.h"
 
 namespace fp::test {
 namespace {
@@ -25,7 +26,7 @@ class BdptFurnace : public ::testing::TestWithParam<int> {};
 TEST_P(BdptFurnace, MeanRadianceMatchesTheGeometricSeries) {
     ensureGlContext();
     const int depth = GetParam();
-    Renderer renderer(furnaceBox(0.5f, 1.0f));
+    Renderer renderer(furnaceBox(0.5f, 1.0f), testShaders());
     Accumulation acc = renderScene(renderer, insideCamera(), Integrator::Bdpt, 24, 64, depth);
     ImageEstimate e = estimate(acc);
     const float expected = 2.0f - std::pow(0.5f, float(depth));
@@ -124,12 +125,9 @@ TEST(Bdpt, ConvergesToNeeWithDeltaSurfaces) {
 
 const PixelRect kUnderSphere = kCausticUnderSphere;
 
-// The shaders with BDPT_LIGHT_TRACING_ONLY defined: every MIS weight is 0 but those of the
-// light-tracing strategies, which are 1. Light tracing alone then estimates every path whose
-// camera-side vertex z_1 is not delta and that has at most BDPT_MAX_LIGHT_VERTICES light vertices.
-ShaderLibrary lightTracingOnlyShaders() {
-    return shadersWithDefine("integrators/bdpt_subpaths.glsl", "BDPT_LIGHT_TRACING_ONLY", "1");
-}
+// lightTracingOnlyShaders() (shader_variants.h): every MIS weight is 0 but those of the light-tracing
+// strategies, which are 1. Light tracing alone then estimates every path whose camera-side vertex z_1 is
+// not delta and that has at most BDPT_MAX_LIGHT_VERTICES light vertices.
 
 // The caustic on the floor is seen directly: light -> glass -> glass -> floor -> camera. With smooth
 // glass the only joins of that path are at its two ends: s = 0 (the camera subpath hits the small light

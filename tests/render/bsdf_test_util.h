@@ -98,9 +98,9 @@ class BsdfProbe {
   public:
     static constexpr int kWidth = 256;  // fragments per row of every pass
 
-    explicit BsdfProbe(const std::string& shaderDirectory = "")
-        : program_(ShaderLibrary(shaderDirectory), "passes/fullscreen.vert.glsl",
-                   "tests/bsdf_probe.frag.glsl", layout::layoutDefines()) {
+    explicit BsdfProbe(const ShaderLibrary& shaders)
+        : program_(shaders, "passes/fullscreen.vert.glsl", "tests/bsdf_probe.frag.glsl",
+                   layout::layoutDefines()) {
         // Units of our own at the top of the range, so that no test's renderer loses a binding.
         firstUnit_ = glInteger(GL_MAX_COMBINED_TEXTURE_IMAGE_UNITS) -
                      4;  // materials, wo and eta, wi, and a spare one for creating textures
@@ -251,12 +251,11 @@ class BsdfProbe {
     GLuint inputs_[2] = {0, 0}, outputs_[2] = {0, 0};
 };
 
-// One probe per test binary, created after (and so destroyed before) the GL context. The environment
-// variable FP_BSDF_TEST_SHADERS may name a glsl/ directory to test instead of the copy built into the
-// binary: a candidate change to bsdf.glsl can be tested without rebuilding.
+// One probe per test binary, created after (and so destroyed before) the GL context, from the test
+// shaders (FP_RENDER_TEST_SHADERS: a candidate change to bsdf.glsl can be tested without rebuilding).
 inline BsdfProbe& bsdfProbe() {
     ensureGlContext();
-    static BsdfProbe probe(std::getenv("FP_BSDF_TEST_SHADERS") ? std::getenv("FP_BSDF_TEST_SHADERS") : "");
+    static BsdfProbe probe(testShaders());
     return probe;
 }
 

@@ -11,6 +11,7 @@
 #include "core/error.h"
 #include "pack/caustic_casters.h"
 #include "render_test_util.h"
+#include "shader_variants.h"
 
 namespace fp::test {
 namespace {
@@ -74,8 +75,8 @@ TEST(Caustics, LightPassAddsUpToCameraPathsWithAGlossyMetal) {
     Accumulation path = renderNee(scene, Caustics::Path, 32, 1024, 5, 2);
     expectSameImage(light, path, 4, 0.02f, "a glossy metal: light pass against camera paths");
     // Those paths alone (about 1 % of the light above, too little for the whole image to tell), both
-    // passes restricted to them by a test define (in rng.glsl, which both include first).
-    ShaderLibrary only = shadersWithDefine("common/rng.glsl", "NEE_ONLY_LIGHT_PASS_PATHS", "1");
+    // passes restricted to them (shader_variants.h).
+    ShaderLibrary only = lightPassPathsOnlyShaders(1);
     Accumulation lightOnly = renderNee(scene, Caustics::Light, 64, 1024, 5, 1, only);
     Accumulation pathOnly = renderNee(scene, Caustics::Path, 64, 2048, 5, 2, only);
     expectSameImage(lightOnly, pathOnly, 8, 0.1f,
@@ -85,7 +86,7 @@ TEST(Caustics, LightPassAddsUpToCameraPathsWithAGlossyMetal) {
 
 // The light a caustic sends on: x1 .. x_j (j = 2, 3) sample smooth lobes and x_{j+1} .. x_m delta ones
 // before the light (cornellWithDeltaSurfaces: a wall lit by the patch of light the red mirror, or a smooth
-// coat, throws on another wall, directly or by way of a third). With NEE_ONLY_LIGHT_PASS_PATHS 2 both passes
+// coat, throws on another wall, directly or by way of a third). With lightPassPathsOnlyShaders(2) both passes
 // estimate those paths alone: camera paths when x_j's BSDF sample reaches the light through the delta
 // vertices, the light pass by light paths that bounce on past the caustic's receiver (bdpt_subpaths.glsl,
 // causticStrategy). The two must agree block by block. Fails (seen) with the camera pass keeping these
@@ -94,8 +95,7 @@ TEST(Caustics, LightPassAddsUpToCameraPathsWithAGlossyMetal) {
 TEST(Caustics, LightPassFindsTheLightCausticsSendOnAsCameraPathsDo) {
     ensureGlContext();
     Scene scene = cornellWithDeltaSurfaces();
-    // (in rng.glsl, which both passes include first)
-    ShaderLibrary only = shadersWithDefine("common/rng.glsl", "NEE_ONLY_LIGHT_PASS_PATHS", "2");
+    ShaderLibrary only = lightPassPathsOnlyShaders(2);
     Accumulation light = renderNee(scene, Caustics::Light, 32, 4096, 5, 1, only);
     Accumulation path = renderNee(scene, Caustics::Path, 32, 4096, 5, 2, only);
     expectSameImage(light, path, 4, 0.1f, "caustics sent on, light pass against camera paths");

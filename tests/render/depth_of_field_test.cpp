@@ -21,6 +21,7 @@
 #include "render_test_util.h"
 #include "scene/builtin_scene.h"
 #include "scene/procedural.h"
+#include "shader_variants.h"
 
 namespace fp::test {
 namespace {
@@ -346,8 +347,7 @@ TEST(DepthOfField, CirclesOfConfusionMatchThinLensGeometryBdpt) {
 // the pixel its ray comes from (projectThroughLens) form the whole image.
 TEST(DepthOfField, CirclesOfConfusionMatchThinLensGeometryLightTracing) {
     ensureGlContext();
-    Renderer renderer(threeEmitters(),
-                      shadersWithDefine("integrators/bdpt_subpaths.glsl", "BDPT_LIGHT_TRACING_ONLY", "1"));
+    Renderer renderer(threeEmitters(), lightTracingOnlyShaders());
     expectCirclesOfConfusion(renderer, Integrator::Bdpt, {0.6f}, 128, "light tracing");
 }
 
@@ -388,8 +388,7 @@ TEST(DepthOfField, BdptConvergesToNeeThroughALens) {
 TEST(DepthOfField, LightTracingAloneConvergesToNeeThroughALens) {
     ensureGlContext();
     Scene scene = builtinCornellBox();
-    Renderer lightTracing(
-        scene, shadersWithDefine("integrators/bdpt_subpaths.glsl", "BDPT_LIGHT_TRACING_ONLY", "1"));
+    Renderer lightTracing(scene, lightTracingOnlyShaders());
     Accumulation light = renderCornell(lightTracing, Integrator::Bdpt, 256, 1);
     Renderer renderer(scene, testShaders());
     Accumulation nee = renderCornell(renderer, Integrator::Nee, 512, 2);

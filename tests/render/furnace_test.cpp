@@ -19,7 +19,7 @@ class Furnace : public ::testing::TestWithParam<FurnaceCase> {};
 TEST_P(Furnace, MeanRadianceMatchesTheGeometricSeries) {
     ensureGlContext();
     const FurnaceCase c = GetParam();
-    Renderer renderer(furnaceBox(0.5f, 1.0f));
+    Renderer renderer(furnaceBox(0.5f, 1.0f), testShaders());
     Accumulation acc = renderScene(renderer, insideCamera(), c.integrator, 24, 64, c.maxDepth);
     ImageEstimate e = estimate(acc);
     const float expected = 2.0f - std::pow(0.5f, float(c.maxDepth));

@@ -48,7 +48,7 @@ TEST(Limits, BvhNodesOverTheBufferTextureLimitAreAClearError) {
 
 TEST(Limits, ImageLargerThanTheTextureLimitIsAClearError) {
     ensureGlContext();
-    Renderer renderer(furnaceBox(0.5f, 1.0f));
+    Renderer renderer(furnaceBox(0.5f, 1.0f), testShaders());
     RenderSettings settings;
     settings.width = 100000;
     settings.height = 4;

@@ -4,7 +4,8 @@
 //     under a spot that times glTF's falloff (0 outside the outer cone), under a directional light of
 //     irradiance E the uniform k / pi E cos; at depth 1 nee's only noise is the pixel jitter, and bdpt
 //     weighs its two strategies (s = 1 and light tracing) against each other, so each must sum to it;
-//     light tracing alone (BDPT_LIGHT_TRACING_ONLY) checks each light's emission sampling on its own;
+//     light tracing alone (lightTracingOnlyShaders, shader_variants.h) checks each light's emission sampling
+//     on its own;
 //   - a point light at the centre of a closed sphere of albedo k: every bounce is uniform, so the
 //     radiance is I / (pi R^2) (k + k^2 + ... + k^D) at depth D;
 //   - nee and bdpt converge to the same Cornell box lit by a point light, and by a spot, a directional
@@ -26,6 +27,7 @@
 #include "render_test_util.h"
 #include "scene/builtin_scene.h"
 #include "scene/procedural.h"
+#include "shader_variants.h"
 
 namespace fp::test {
 namespace {
@@ -72,10 +74,6 @@ double spread(const std::vector<glm::dvec3>& image) {
     return hi / std::max(lo, 1e-30);
 }
 
-ShaderLibrary lightTracingOnly() {
-    return shadersWithDefine("integrators/bdpt_subpaths.glsl", "BDPT_LIGHT_TRACING_ONLY", "1");
-}
-
 // ---- the floor under a point light ----
 
 constexpr int kSize = 24;
@@ -112,7 +110,7 @@ TEST(PunctualLight, PointLightOverAPlaneIsKOverPiICosOverR2) {
                 "nee, point light");
     expectImage(renderScene(renderer, camera, Integrator::Bdpt, kSize, 256, 1, 4), expected, 4,
                 "bdpt, point light");
-    Renderer tracing(scene, lightTracingOnly());
+    Renderer tracing(scene, lightTracingOnlyShaders());
     expectImage(renderScene(tracing, camera, Integrator::Bdpt, kSize, 512, 1, 5), expected, 4,
                 "light tracing alone, point light");
 }
@@ -181,7 +179,7 @@ TEST(PunctualLight, SpotLightsItsConeWithGltfsFalloff) {
     EXPECT_GT(ring, 50);
 
     expectImage(renderScene(renderer, camera, Integrator::Bdpt, kSize, 256, 1, 4), expected, 4, "bdpt, spot");
-    Renderer tracing(scene, lightTracingOnly());
+    Renderer tracing(scene, lightTracingOnlyShaders());
     expectImage(renderScene(tracing, camera, Integrator::Bdpt, kSize, 512, 1, 5), expected, 4,
                 "light tracing alone, spot");
 }
@@ -212,7 +210,7 @@ TEST(PunctualLight, DirectionalLightGivesKOverPiECosEverywhere) {
                 "nee, directional");
     expectImage(renderScene(renderer, camera, Integrator::Bdpt, kSize, 256, 1, 4), expected, 4,
                 "bdpt, directional");
-    Renderer tracing(scene, lightTracingOnly());
+    Renderer tracing(scene, lightTracingOnlyShaders());
     expectImage(renderScene(tracing, camera, Integrator::Bdpt, kSize, 512, 1, 5), expected, 4,
                 "light tracing alone, directional");
 }
@@ -339,7 +337,7 @@ TEST(PunctualLight, OnlyLightPathsFindThePointLightsCausticThroughGlass) {
         renderScene(renderer, *scene.camera, Integrator::Nee, 24, 256, 5, 4, Sampler::Independent,
                     LightSampling::Auto, LightSelection::Auto, Caustics::Light);
     expectSameImage(neeLight, bdpt, 2, 0.03f, "nee's light pass against bdpt under the sphere", &r);
-    Renderer tracing(scene, lightTracingOnly());
+    Renderer tracing(scene, lightTracingOnlyShaders());
     Accumulation light = renderScene(tracing, *scene.camera, Integrator::Bdpt, 24, 256, 5, 3);
     std::vector<float> z = blockZScores(bdpt, light, 2, r);
     ASSERT_GT(z.size(), 40u);

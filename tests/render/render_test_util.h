@@ -9,15 +9,11 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
-#include <filesystem>
-#include <fstream>
-#include <iterator>
 #include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
-#include <unistd.h>
 
 #include "gl/context.h"
 #include "image/image_stats.h"
@@ -25,6 +21,7 @@
 #include "scene/builtin_scene.h"
 #include "scene/procedural.h"
 #include "scene/scene.h"
+#include "test_shaders.h"
 
 namespace fp::test {
 
@@ -337,38 +334,6 @@ inline void expectImage(const Accumulation& acc, const std::vector<glm::dvec3>& 
     for (int ch = 0; ch < 3; ++ch)
         EXPECT_LT(std::abs(whole[ch]), 5.0) << what << ": whole image, channel " << ch;
     EXPECT_EQ(acc.droppedSamples(), 0u) << what;
-}
-
-// The shaders the GPU tests render with: the copy built into the binary, or the glsl/ directory the
-// environment variable FP_RENDER_TEST_SHADERS names, so that a deliberately broken shader can be tried
-// without rebuilding (how the tests' comments say what each one catches).
-inline ShaderLibrary testShaders() {
-    const char* shaders = std::getenv("FP_RENDER_TEST_SHADERS");
-    return ShaderLibrary(shaders ? shaders : "");
-}
-
-// A copy of the shaders (source tree's glsl/) with `#define NAME VALUE` put first in one file, to test
-// a variant the build does not ship (a strategy switched off); removed when the test program exits.
-inline ShaderLibrary shadersWithDefine(const std::string& file, const std::string& name,
-                                       const std::string& value) {
-    namespace fs = std::filesystem;
-    fs::path dir =
-        fs::temp_directory_path() / ("fragpath_" + name + "_" + value + "_" + std::to_string(::getpid()));
-    static std::vector<fs::path> made;
-    static struct RemoveAtExit {
-        ~RemoveAtExit() {
-            for (const fs::path& d : made) fs::remove_all(d);
-        }
-    } removeAtExit;
-    fs::remove_all(dir);
-    fs::copy(fs::path(FP_SOURCE_DIR) / "glsl", dir, fs::copy_options::recursive);
-    made.push_back(dir);
-    fs::path path = dir / file;
-    std::ifstream in(path);
-    std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-    in.close();
-    std::ofstream(path) << "#define " << name << " " << value << "\n" << text;
-    return ShaderLibrary(dir.string());
 }
 
 // A glossy sphere on a diffuse floor, under a constant sky and a small lamp: every integrator's

@@ -61,13 +61,12 @@ std::array<std::vector<glm::vec4>, 2> drawProbe(Program& program, int width, int
     return out;
 }
 
-// The probe compiled for one sampler (0 independent, 1 Sobol: glsl/common/rng.glsl). FP_RNG_TEST_SHADERS
-// may name a glsl/ directory to test instead of the built-in copy (to check that these tests fail on a
-// generator with overlapping streams, or on a broken scramble).
+// The probe compiled for one sampler (0 independent, 1 Sobol: glsl/common/rng.glsl), from the test
+// shaders (FP_RENDER_TEST_SHADERS: to check that these tests fail on a generator with overlapping
+// streams, or on a broken scramble).
 Program probeProgram(int sampler) {
-    const char* directory = std::getenv("FP_RNG_TEST_SHADERS");
-    return Program(ShaderLibrary(directory ? directory : ""), "passes/fullscreen.vert.glsl",
-                   "tests/rng_probe.frag.glsl", {{"SAMPLER", std::to_string(sampler)}});
+    return Program(testShaders(), "passes/fullscreen.vert.glsl", "tests/rng_probe.frag.glsl",
+                   {{"SAMPLER", std::to_string(sampler)}});
 }
 
 // The first kNumbers numbers of every stream of sample `sample`, as the 24-bit integers rand() scales.

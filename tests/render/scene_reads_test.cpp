@@ -20,8 +20,8 @@ namespace fp::test {
 namespace {
 
 void expectTheSameBothWays(const Scene& scene, const Camera& camera) {
-    Renderer images(scene, ShaderLibrary(), layout::bvhOptions(), SceneReads::Images);
-    Renderer fetches(scene, ShaderLibrary(), layout::bvhOptions(), SceneReads::TexelFetch);
+    Renderer images(scene, testShaders(), layout::bvhOptions(), SceneReads::Images);
+    Renderer fetches(scene, testShaders(), layout::bvhOptions(), SceneReads::TexelFetch);
     ASSERT_EQ(images.stats().sceneReads, SceneReads::Images);
     ASSERT_EQ(fetches.stats().sceneReads, SceneReads::TexelFetch);
     // Every integrator: bdpt adds the light-tracing pass, which reads the lights and materials too.

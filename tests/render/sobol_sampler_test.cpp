@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "render_test_util.h"
+#include "shader_variants.h"
 
 namespace fp::test {
 namespace {
@@ -132,7 +133,7 @@ TEST(SobolSampler, JitterAndLightPointAreStratifiedTogether) {
         return sum / double(pixels);
     };
     Renderer renderer(scene, testShaders());
-    Renderer padded(scene, shadersWithDefine("common/rng.glsl", "SOBOL_JOINT_PAIRS", "0u"));
+    Renderer padded(scene, paddedSobolPairsShaders());
     const double joint = seedVariance(renderer, Sampler::Sobol);
     const double independent = seedVariance(renderer, Sampler::Independent);
     const double paddedVariance = seedVariance(padded, Sampler::Sobol);

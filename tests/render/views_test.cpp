@@ -106,7 +106,7 @@ TEST(DisplayPass, MatchesThePngWriter) {
     glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA32F, w, h, 0, GL_RGBA, GL_FLOAT, sums.data());
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);  // complete without mipmaps
     Rgba8Target target(w, h);
-    Display display;
+    Display display(testShaders());
     for (ToneMap toneMap : {ToneMap::Clamp, ToneMap::Reinhard, ToneMap::Aces}) {
         DisplayOptions options;
         options.tone = {0.5f, toneMap};

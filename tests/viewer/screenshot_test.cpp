@@ -33,7 +33,7 @@ TEST(Screenshot, CountViewPngMatchesTheDisplayPass) {
     std::vector<unsigned char> gpu;
     {
         test::Rgba8Target target(w, h);
-        Display display;
+        Display display(test::testShaders());
         display.draw(renderer.textures(), w, h, options);
         gpu = target.read();
     }
