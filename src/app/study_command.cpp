@@ -36,6 +36,13 @@ namespace fp {
 
 namespace {
 
+// "naive,bsdf,nee,bdpt": every integrator, the study's default.
+std::string allIntegratorNames() {
+    std::string names;
+    for (Integrator i : kAllIntegrators) names += (names.empty() ? "" : ",") + std::string(integratorName(i));
+    return names;
+}
+
 // Not the scene file's size: that is meant for one final render, the study renders hundreds.
 constexpr unsigned kStudyOptions = kSizeOption | kPathOptions | kSamplingOptions | kCameraOptions |
                                    kShaderOptions | kBackendOption | kSceneOptions;
@@ -50,7 +57,7 @@ std::vector<OptionGroup> studyOptions() {
             "of\ncornell,cornell-checker,"
             "cornell-spheres,environment,sphere-1m,gltf-showcase)"},
            {"--max-spp", "", "N", "the largest sample count (default 64)"},
-           {"--integrators", "", "LIST", "comma-separated (default naive,bsdf,nee,bdpt)"},
+           {"--integrators", "", "LIST", "comma-separated (default " + allIntegratorNames() + ")"},
            {"--denoisers", "", "LIST",
             "comma-separated, of those built in (default: all; 'none' is the raw image)"},
            {"--reference-spp", "", "N", "samples of the rendered reference (default 4096)"},
@@ -146,7 +153,7 @@ int studyCommand(const std::vector<std::string>& argv) {
     // Everything that can be wrong with the request fails here, before minutes of rendering.
     std::vector<Integrator> integrators;
     for (const std::string& name :
-         splitNameList(args.text("--integrators").value_or("naive,bsdf,nee,bdpt"), "--integrators"))
+         splitNameList(args.text("--integrators").value_or(allIntegratorNames()), "--integrators"))
         integrators.push_back(parseIntegrator(name));
     std::vector<std::string> known;
     for (const study::StudyDenoiser& d : study::availableDenoisers()) known.push_back(d.name);

@@ -7,6 +7,7 @@
 
 #include "core/error.h"
 #include "image/file_io.h"
+#include "settings/setting_table.h"
 
 namespace fp {
 
@@ -72,16 +73,14 @@ void ReferenceCache::store(int frame, const Camera& camera, const Image& referen
     writeText(framePath(frame, "camera"), describe(camera));
 }
 
+// The scene and every setting the image depends on (the settings table's rows that enter a partial
+// render's fingerprint), a line each.
 std::string ReferenceCache::describe(const std::string& scene, const RenderSettings& s, int referenceSpp) {
-    char text[1024];
-    std::snprintf(
-        text, sizeof text,
-        "scene %s\nsize %dx%d\nintegrator %s\nmax depth %d\nseed %u\nsampler %s\nlight sampling %s\n"
-        "light selection %s\ncaustics %s\nclamp indirect %.9g\nreference spp %d\n",
-        scene.c_str(), s.width, s.height, integratorName(s.integrator), s.maxDepth, s.seed,
-        samplerName(s.sampler), lightSamplingName(s.lightSampling), lightSelectionName(s.lightSelection),
-        causticsName(s.caustics), s.clampIndirect, referenceSpp);
-    return text;
+    std::string text = "scene " + scene + "\n";
+    for (const Setting& setting : settingTable())
+        if (setting.effects & (kEntersFingerprint | kEntersFingerprintIfChosen))
+            text += std::string(setting.name) + " " + settingText(setting, setting.get(s)) + "\n";
+    return text + "reference spp " + std::to_string(referenceSpp) + "\n";
 }
 
 std::string ReferenceCache::describe(const Camera& c) {

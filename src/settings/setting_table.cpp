@@ -187,8 +187,8 @@ void refuseSetting(const Setting& s, const std::string& got, const std::string& 
     throw Error(where + " must be " + what + ", got " + got);
 }
 
-double checkSetting(const Setting& s, double value, const std::string& where) {
-    if (s.specialName && value == s.specialValue) return value;
+// Whether `value` is one of the row's choices or in its range (its special value aside).
+static bool inRow(const Setting& s, double value) {
     bool ok = false;
     switch (s.kind) {
         case SettingKind::Choice:
@@ -201,7 +201,11 @@ double checkSetting(const Setting& s, double value, const std::string& where) {
             ok = value >= s.min && value <= s.max && std::isfinite(value);
             break;
     }
-    if (!ok) refuseSetting(s, formatText("%.10g", value), where);
+    return ok;
+}
+
+double checkSetting(const Setting& s, double value, const std::string& where) {
+    if (!inRow(s, value)) refuseSetting(s, formatText("%.10g", value), where);
     return value;
 }
 
@@ -219,8 +223,8 @@ double parseSetting(const Setting& s, const std::string& text, const std::string
     }
     char* end = nullptr;
     const double value = std::strtod(text.c_str(), &end);
-    if (text.empty() || end != text.c_str() + text.size()) refuseSetting(s, "'" + text + "'", where);
-    checkSetting(s, value, where);
+    if (text.empty() || end != text.c_str() + text.size() || !inRow(s, value))
+        refuseSetting(s, "'" + text + "'", where);
     return value;
 }
 

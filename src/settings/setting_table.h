@@ -79,7 +79,8 @@ const Setting* findSetting(const std::string& name);  // by name; nullptr when t
 // `text` read as the setting's value: a choice's name, a whole number or a number in range, or the
 // special name. Throws fp::Error "<where>: ..." ("option --max-depth", "scene.json: render.max_depth").
 double parseSetting(const Setting& setting, const std::string& text, const std::string& where);
-// Checks a value that arrives as a number (a scene file's); throws as parseSetting does.
+// Checks a value that arrives as a number (a scene file's): a choice's enumerator or a number in range,
+// not the special value, which is given by its name; throws as parseSetting does.
 double checkSetting(const Setting& setting, double value, const std::string& where);
 // Throws fp::Error "<where> must be a whole number from 1 to 65536, got <got>": the one message of a value
 // out of range or of the wrong kind, from the command line or a scene file.

@@ -1,14 +1,19 @@
-// The README's options table is where users look first: every option that `render --help` lists
-// (generated from the command's option table, src/request/options.h) must be in it.
+// The documentation stays true to the program, both ways: every option that `COMMAND --help` lists
+// (generated from the command's option table, src/request/options.h, and the settings table) is in the
+// README; every fragpath command line the README and docs/ show takes the options it is shown with; and
+// every scene-file key `render.KEY` they name is a row of the settings table.
 #include <gtest/gtest.h>
 
+#include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <map>
 #include <regex>
 #include <set>
 #include <sstream>
 
 #include "cli/fragpath_runner.h"
+#include "settings/setting_table.h"
 
 namespace fp {
 namespace {
@@ -57,6 +62,101 @@ TEST(Docs, TheReadmeListsEveryRealtimeOption) {
 }
 TEST(Docs, TheReadmeListsEveryStudyOption) {
     expectReadmeListsOptionsOf("study", 20);
+}
+
+// The user's pages: the README and docs/*.md, but not the optimisation log, which records history.
+std::map<std::string, std::string> userPages() {
+    std::map<std::string, std::string> pages = {{"README.md", readme()}};
+    for (const auto& entry : std::filesystem::directory_iterator(std::string(FP_SOURCE_DIR) + "/docs")) {
+        const std::string name = entry.path().filename().string();
+        if (entry.path().extension() != ".md" || name == "optimisation-log.md") continue;
+        std::ifstream in(entry.path());
+        pages["docs/" + name] = std::string((std::istreambuf_iterator<char>(in)), {});
+    }
+    return pages;
+}
+
+// Command lines as the pages show them: `fragpath CMD ...` in backticks, and lines of fenced code that
+// start with fragpath or build/fragpath; each cut at a pipe, a redirection or a second command.
+std::vector<std::string> shownCommandLines(const std::string& page) {
+    std::vector<std::string> lines;
+    const std::regex inline_(R"(`(?:build/)?(fragpath [^`]*)`)");
+    for (auto it = std::sregex_iterator(page.begin(), page.end(), inline_); it != std::sregex_iterator();
+         ++it)
+        lines.push_back((*it)[1]);
+    std::istringstream in(page);
+    bool code = false;
+    const std::regex codeLine(R"(^\s*(?:\$ )?(?:[A-Z_]+=\S+ )*(?:\./)?(?:build/)?(fragpath .*))");
+    for (std::string line; std::getline(in, line);) {
+        if (line.rfind("```", 0) == 0) code = !code;
+        std::smatch m;
+        if (code && std::regex_search(line, m, codeLine)) lines.push_back(m[1]);
+    }
+    for (std::string& line : lines) line = line.substr(0, line.find_first_of("|;>&#"));
+    return lines;
+}
+
+TEST(Docs, EveryCommandLineShownTakesItsOptions) {
+    std::map<std::string, std::set<std::string>> takes;
+    for (const char* command : {"render", "view", "realtime", "study", "compare", "merge", "bench"}) {
+        test::CliRun r = test::runFragpath(std::string(command) + " --help");
+        ASSERT_EQ(r.exitCode, 0) << r.output;
+        takes[command] = optionsInHelp(r.output);
+        takes[command].insert("--help");
+    }
+    int checked = 0;
+    for (const auto& [name, page] : userPages())
+        for (const std::string& line : shownCommandLines(page)) {
+            std::istringstream words(line);
+            std::string fragpath, command;
+            words >> fragpath >> command;
+            if (command.rfind("--", 0) == 0) continue;  // fragpath --version, --help
+            if (!takes.count(command)) {
+                // Prose that starts with the program's name ("fragpath renders ...") is not a command line.
+                EXPECT_EQ(line.find("  "), std::string::npos)
+                    << name << ": unknown command in `" << line << "`";
+                continue;
+            }
+            for (std::string word; words >> word;) {
+                if (word.rfind("--", 0) != 0) continue;
+                const std::string option = word.substr(0, word.find('='));
+                EXPECT_TRUE(takes[command].count(option))
+                    << name << ": `" << line << "`: " << command << " does not take " << option;
+            }
+            ++checked;
+        }
+    EXPECT_GE(checked, 50) << "the pages show fragpath command lines";
+}
+
+TEST(Docs, EverySceneFileKeyNamedIsASetting) {
+    const std::regex key(R"(`render\.([a-z_]+)`|"render": \{[^}]*)");
+    const std::regex member(R"re("([a-z_]+)":)re");
+    int checked = 0;
+    for (const auto& [name, page] : userPages())
+        for (auto it = std::sregex_iterator(page.begin(), page.end(), key); it != std::sregex_iterator();
+             ++it) {
+            std::vector<std::string> keys;
+            if ((*it)[1].matched) {
+                keys.push_back((*it)[1]);
+            } else {
+                const std::string block = (*it)[0].str().substr(10);
+                for (auto m = std::sregex_iterator(block.begin(), block.end(), member);
+                     m != std::sregex_iterator(); ++m)
+                    keys.push_back((*m)[1]);
+            }
+            for (const std::string& k : keys) {
+                const Setting* s = findSetting(k);
+                EXPECT_TRUE(s && s->sceneFile) << name << ": render." << k << " is not a scene-file setting";
+                ++checked;
+            }
+        }
+    EXPECT_GE(checked, 5) << "the pages name the render block's keys";
+    // And the scene files' page names every key the render block takes.
+    const std::string page = userPages()["docs/scene-files.md"];
+    for (const Setting& s : settingTable())
+        if (s.sceneFile) {
+            EXPECT_NE(page.find('"' + std::string(s.name) + '"'), std::string::npos) << s.name;
+        }
 }
 
 }  // namespace
