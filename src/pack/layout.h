@@ -187,7 +187,6 @@ enum MapBit : int {
 // The flags of a triangle's third texel.
 constexpr int kTriangleAlphaFlag = 1;
 constexpr int kTriangleSingleSidedFlag = 2;
-constexpr int kLightTexels = 1;
 constexpr int kPunctualTexels = 3;  // per punctual light, after the cdf entries in the lights buffer
 constexpr int kTexcoordTexels = 3;
 constexpr int kTangentTexels = 3;
