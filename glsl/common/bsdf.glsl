@@ -19,6 +19,10 @@
 //               shows (surface.glsl, emittedRadiance)
 // Roughness below kSmooth makes a lobe a perfect mirror or refractor: a "delta" lobe that only
 // sampling can find, so light sampling skips it and MIS gives its hits full weight.
+#include "common/luminance.glsl"
+#include "common/sampling.glsl"
+#include "common/scene_data.glsl"
+
 #define MATERIAL_DIFFUSE 0
 #define MATERIAL_CONDUCTOR 1
 #define MATERIAL_PLASTIC 2

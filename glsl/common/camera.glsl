@@ -2,6 +2,9 @@
 // thin lens, a disc of that radius around the eye perpendicular to uCameraForward. uCameraRight and
 // uCameraUp are scaled by tan(fov/2) (and the aspect ratio), so a point of the image plane at normalised
 // device coordinates (x, y) lies at forward + x*right + y*up, at depth 1 along forward.
+#include "common/ray.glsl"
+#include "common/rng.glsl"
+#include "common/sampling.glsl"
 uniform vec3 uCameraEye;
 uniform vec3 uCameraForward;
 uniform vec3 uCameraRight;

@@ -4,6 +4,8 @@
 // Light paths leave the light only inside the cones the spheres subtend from it: no caustic path lies
 // outside them, so no caustic is lost, and no light path is spent on the rest of the scene (Jensen's
 // "projection maps", Realistic Image Synthesis Using Photon Mapping, 2001, section 9.2).
+#include "common/sampling.glsl"
+
 uniform vec4 uCasters[MAX_CAUSTIC_CASTERS];  // (centre, radius) of each sphere
 uniform int uCasterCount;
 

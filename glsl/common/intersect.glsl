@@ -1,4 +1,7 @@
 // Ray queries against the scene's BVH (layout in src/pack/layout.h): closest hit and any hit.
+#include "common/ray.glsl"
+#include "common/scene_data.glsl"
+#include "common/camera.glsl"
 #ifndef BVH_STACK_SIZE
 #define BVH_STACK_SIZE 32
 #endif
@@ -11,18 +14,6 @@ int gNodesVisited = 0;  // BVH nodes and triangles the last traversal looked at,
 int gTrianglesTested = 0;
 int gPathNodes = 0;  // the same, summed over every ray of a path (camera, bounce, shadow), for the cost view
 int gPathTriangles = 0;
-
-struct Ray {
-    vec3 origin;
-    vec3 dir;
-};
-
-struct Hit {
-    float t;
-    int triangle;  // -1: nothing hit
-    vec2 uv;       // barycentrics of v1 and v2
-    int instance;  // the first node of the instance's transform pair (pack/layout.h), -1: world triangle
-};
 
 // The instance the traversal is in (INSTANCE_NODES_START scenes), for the hits it records.
 int gInstance = -1;

@@ -6,6 +6,15 @@
 // where a choice by power alone (lights.glsl pickLight) spends samples on them as on any other.
 // The tree is a complete heap in the lights buffer from texel LIGHT_TREE_FIRST, LIGHT_TREE_DEPTH levels
 // below the root; the path to emitter entry e is e's binary digits, most significant first.
+//
+// LIGHT_TREE (set by the renderer for nee, src/render/renderer.cpp): 1 chooses emitters by the light tree,
+// and compiles this file in.
+#include "common/scene_data.glsl"
+
+#ifndef LIGHT_TREE
+#define LIGHT_TREE 0
+#endif
+#if LIGHT_TREE
 
 // cos(max(0, a - b)) and sin(max(0, a - b)) for angles a, b in [0, pi], from their cosines and sines.
 float cosClampedDifference(float cosA, float sinA, float cosB, float sinB) {
@@ -92,3 +101,4 @@ float lightTreePmf(vec3 p, vec3 n, int e) {
 
 // The emitter entry of triangle i (pack/layout.h: the w of its first normal's texel).
 int lightEntryOf(int i) { return int(normalTexel(i * NORMAL_TEXELS).w); }
+#endif

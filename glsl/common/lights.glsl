@@ -5,15 +5,18 @@
 // receiving point through d(omega) = cos(theta_light) dA / distance^2, so pdf = pmf / area * distance^2 /
 // cos(theta_light). A punctual light (point, spot, directional: src/scene/scene.h) is a delta
 // distribution: it has one direction toward the receiving point, which only light sampling finds.
+#include "common/rng.glsl"
+#include "common/sampling.glsl"
+#include "common/scene_data.glsl"
+#include "common/textures.glsl"
+#include "common/intersect.glsl"
+#include "common/opacity.glsl"
+#include "common/ray_offset.glsl"
+#include "common/surface.glsl"
+
 uniform vec3 uEnvironment;  // constant radiance arriving from every direction no surface blocks
 
-// LIGHT_TREE (set by the renderer for nee, src/render/renderer.cpp): 1 chooses emitters by the light tree.
-#ifndef LIGHT_TREE
-#define LIGHT_TREE 0
-#endif
-#if LIGHT_TREE
-#include "common/light_tree.glsl"
-#endif
+#include "common/light_tree.glsl"  // with LIGHT_TREE
 
 struct LightSample {
     vec3 dir;       // unit, from the receiving point to the light

@@ -12,6 +12,12 @@
 // and for every kind of ray. The coin is a hash of the ray and the triangle (as hashed alpha testing
 // hashes the position: Wyman & McGuire 2017): no sampler dimension is consumed, so the sample sequences
 // of the other decisions stay aligned, and one ray decides the same way for a triangle every time.
+#include "common/ray.glsl"
+#include "common/rng.glsl"
+#include "common/scene_data.glsl"
+#include "common/textures.glsl"
+#include "common/camera.glsl"
+
 #ifdef SURFACE_OPACITY
 // Material m's alpha at barycentrics b of triangle i (alpha times its alpha map's A channel), then its
 // coverage: 0 or 1 for MASK (against the cutoff), the alpha itself for BLEND, 1 for OPAQUE.
@@ -46,7 +52,6 @@ float coverageHash(Ray ray, int i) {
 // rays are the rays from the lens (camera.glsl isCameraRay, asked of the world ray); bdpt's joins of light vertices to the
 // eye are traced the other way and say so with gTowardTheEye, and check the joined vertex's own side
 // (light_trace.frag.glsl).
-bool isCameraRay(Ray ray);
 bool gTowardTheEye = false;
 bool gCameraTrace = false;  // whether the traversal under way is of a camera ray (set from the world ray)
 

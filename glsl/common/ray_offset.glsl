@@ -11,6 +11,9 @@
 // offset that way at BOTH ends and stops exactly at its far end's offset point: a fraction of its length
 // (the usual t < (1 - eps) dist) is shorter than the offset whenever the two points are close together
 // or far from the origin, and the ray then finds the light it was aimed at and calls it a blocker.
+#include "common/scene_data.glsl"
+#include "common/intersect.glsl"
+
 const float RAY_OFFSET_SCALE = 1.0 / 262144.0;
 
 float surfaceOffset(TriangleData tri) {

@@ -1,9 +1,16 @@
 // What an integrator needs to know about the point a ray hit.
+#include "common/ray.glsl"
+#include "common/rng.glsl"
+#include "common/sampling.glsl"
+#include "common/scene_data.glsl"
+#include "common/textures.glsl"
+#include "common/bsdf.glsl"
 #include "common/ray_offset.glsl"
+#include "common/valid_reflection.glsl"
+
 #ifdef SURFACE_TEXTURES
 #if HAS_MAP(NORMAL_MAP_BIT)
 #define NORMAL_MAPPED_SURFACES 1
-#include "common/valid_reflection.glsl"
 #endif
 #endif
 

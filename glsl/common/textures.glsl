@@ -4,6 +4,8 @@
 // src/pack/layout.h: three texture coordinates per triangle, every texture's 8-bit texels in one RGBA8
 // buffer, (first texel, width, height) per texture, the maps' indices in the material's texels, and, with
 // normal maps, three tangents per triangle.
+#include "common/scene_data.glsl"
+
 #ifdef VERTEX_COLORS
 // Per-vertex colours (glTF COLOR_0), compiled in only when some triangle has them: linear rgba that
 // multiplies the base colour and the alpha (src/pack/layout.h, colors).

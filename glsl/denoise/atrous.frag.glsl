@@ -7,6 +7,8 @@
 // with w = w_z w_n w_l (eqs. 3-5, edge_stopping.glsl) and w_l using the variance at p filtered by a
 // 3x3 Gaussian first (eq. 5's g_3x3). Colour and variance are filtered together, so the luminance
 // weight tightens as the noise goes.
+#include "common/luminance.glsl"
+#include "denoise/pixel_class.glsl"
 #include "denoise/edge_stopping.glsl"
 
 // (demodulated colour, luminance variance of its mean). A pixel the real-time pipeline passes through

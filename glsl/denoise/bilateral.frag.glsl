@@ -5,6 +5,8 @@
 // a spatial Gaussian, a range Gaussian on the colour, and the normal and depth guides of SVGF's
 // eqs. 3-4 (edge_stopping.glsl). t(c) = c / (1 + luminance(c)) compresses the colour the way a display
 // would, so that sigma_r is a fraction of the visible range and a firefly's pull is bounded.
+#include "common/luminance.glsl"
+#include "denoise/pixel_class.glsl"
 #include "denoise/edge_stopping.glsl"
 
 uniform sampler2D uColor;  // (mean colour, unused)

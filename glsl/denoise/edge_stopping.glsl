@@ -1,8 +1,6 @@
 // What the denoising filters share: the prepared guides and the edge-stopping weights of the spatial
 // filter of SVGF (Schied et al. 2017, "Spatiotemporal Variance-Guided Filtering: Real-Time
 // Reconstruction for Path-Traced Global Illumination", HPG), section 4.4, eqs. 3-5.
-#include "common/luminance.glsl"
-#include "denoise/pixel_class.glsl"
 
 // (unit first-hit normal, 0 if every sample missed; mean first-hit distance, or a pixel class)
 uniform sampler2D uGuide;

@@ -3,6 +3,7 @@
 // neighbourhood, weighted by the normal and depth edge-stopping functions (eqs. 3 and 4). The
 // neighbours are means of as many samples, so their spread estimates the noise of the mean (plus any
 // real detail, which errs on the side of smoothing).
+#include "common/luminance.glsl"
 #include "denoise/edge_stopping.glsl"
 
 uniform sampler2D uColor;  // (colour, variance or -1) from prepare.frag.glsl

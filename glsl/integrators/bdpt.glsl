@@ -61,6 +61,16 @@
 //
 // Dispersion: one wavelength per sample, drawn when either subpath first meets a dispersive glass;
 // its spectral weight multiplies the contributions of paths that contain such a vertex.
+#include "common/rng.glsl"
+#include "common/sampling.glsl"
+#include "common/scene_data.glsl"
+#include "common/intersect.glsl"
+#include "common/bsdf.glsl"
+#include "common/ray_offset.glsl"
+#include "common/surface.glsl"
+#include "common/lights.glsl"
+#include "common/camera.glsl"
+#include "common/render_uniforms.glsl"
 #include "integrators/bdpt_subpaths.glsl"
 
 // Strategy s = 1: z_{t-1} joined to a point sampled afresh on an emitter (by power, then uniformly on the

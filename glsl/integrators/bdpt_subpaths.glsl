@@ -4,6 +4,19 @@
 // (passes/light_trace.frag.glsl) joins its vertices to the camera. Both trace the same light subpath for
 // sample k of pixel p (traceLightSubpathFor), so each sample's light subpath serves every strategy, as
 // in pbrt-v3 (section 16.3). See bdpt.glsl for the strategies and the limits below.
+#include "common/rng.glsl"
+#include "common/sampling.glsl"
+#include "common/scene_data.glsl"
+#include "common/textures.glsl"
+#include "common/intersect.glsl"
+#include "common/bsdf.glsl"
+#include "common/valid_reflection.glsl"
+#include "common/ray_offset.glsl"
+#include "common/surface.glsl"
+#include "common/lights.glsl"
+#include "common/caustic_casters.glsl"
+#include "common/render_uniforms.glsl"
+
 // Light subpath vertices stored: bdpt's y0 .. y3 (bdpt.glsl), and in nee's light pass (CAUSTICS_LIGHT_TRACED)
 // LIGHT_RECORDS, two more, for light that goes through a glass ball (two delta vertices), reaches the
 // floor and bounces on CAUSTIC_SMOOTH_BOUNCES - 1 times (causticStrategy). LIGHT_RECORDS, the light

@@ -3,6 +3,13 @@
 // noise is gone; visible GGX normals for glossy ones; Fresnel-chosen reflection or refraction for glass).
 // Light is found only where a path hits it, so punctual lights (point, spot, directional: no size, no
 // ray can hit one) do not light this integrator's image; the renderer warns (src/render/renderer.cpp).
+#include "common/sampling.glsl"
+#include "common/intersect.glsl"
+#include "common/bsdf.glsl"
+#include "common/surface.glsl"
+#include "common/lights.glsl"
+#include "common/render_uniforms.glsl"
+
 vec3 radiance(Ray ray) {
     vec3 L = vec3(0.0), beta = vec3(1.0);
     float etaScale = 1.0;  // for the roulette (survivesRoulette)

@@ -3,6 +3,13 @@
 // pdf is 1 / (2 pi), so each bounce weighs f cos(theta) / pdf = 2 * albedo * cos(theta).
 // Uniform directions cannot find a mirror's or a glass's single direction, so those surfaces (and the
 // other non-Lambertian ones) are sampled by their BSDF instead.
+#include "common/sampling.glsl"
+#include "common/intersect.glsl"
+#include "common/bsdf.glsl"
+#include "common/surface.glsl"
+#include "common/lights.glsl"
+#include "common/render_uniforms.glsl"
+
 vec3 radiance(Ray ray) {
     vec3 L = vec3(0.0), beta = vec3(1.0);
     float etaScale = 1.0;  // for the roulette (survivesRoulette)

@@ -17,6 +17,13 @@
 // pass sums exactly these paths, with m + 1 <= LIGHT_RECORDS (its light subpaths' length,
 // bdpt_subpaths.glsl), and this integrator leaves exactly those out, whether it would find them by a BSDF
 // sample or, at a glossy caster x_m, by a light sample; so their sum is unbiased without weights.
+#include "common/sampling.glsl"
+#include "common/intersect.glsl"
+#include "common/bsdf.glsl"
+#include "common/surface.glsl"
+#include "common/lights.glsl"
+#include "common/render_uniforms.glsl"
+
 // Whether a path of `smoothVertices` smooth vertices x1 .. x_j, then casters' lobes, reaching an emitter at
 // `emitterDepth` is one the light pass sums.
 bool lightPassSums(int smoothVertices, int emitterDepth) {

@@ -1,6 +1,11 @@
 // Debug views, chosen at compile time by DEBUG_VIEW (the values of fp::View in src/settings/render_settings.h).
 // Geometry views show what the primary ray through the pixel centre (and the centre of a lens) hits (0
 // on a miss); the cost views count what the path tracer does, averaged over the samples.
+#include "common/intersect.glsl"
+#include "common/surface.glsl"
+#include INTEGRATOR_FILE
+#include "passes/guides.glsl"
+
 #define VIEW_DEPTH 1
 #define VIEW_NORMAL 2
 #define VIEW_ALBEDO 3

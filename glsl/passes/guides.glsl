@@ -1,6 +1,8 @@
 // The first-hit guides of the denoisers (src/denoise/): what each sample's camera ray hits first,
 // summed over the samples like the radiance. Traced once more rather than taken from the integrator,
 // so that the integrators stay as they are; that ray is not counted in the rays/s figure.
+#include "common/intersect.glsl"
+#include "common/surface.glsl"
 
 // The albedo the `albedo` view shows and the denoisers divide out.
 vec3 surfaceAlbedo(Surface s) { return s.material.diffuse; }

@@ -6,18 +6,13 @@
 // CAUSTICS_LIGHT_TRACED it is nee's light pass instead (integrators/nee.glsl): light subpaths aimed at the
 // caustic casters (common/caustic_casters.glsl), only the caustic strategies, weight 1.
 #include "common/rng.glsl"
-#include "common/sampling.glsl"
-#include "common/scene_data.glsl"
-#include "common/textures.glsl"
 #include "common/intersect.glsl"
+#include "common/opacity.glsl"
 #include "common/bsdf.glsl"
 #include "common/surface.glsl"
-#include "common/lights.glsl"
 #include "common/camera.glsl"
-#include "common/caustic_casters.glsl"
 
-uniform int uMaxDepth;
-uniform uint uSeed;
+#include "common/render_uniforms.glsl"
 #include "passes/light_launch.glsl"
 uniform float uLaunchWeight;  // region pixels / launching pixels (src/render/light_splat.cpp)
 

@@ -3,17 +3,11 @@
 // names one of glsl/integrators/*.glsl, each of which defines radiance(Ray); one that also defines
 // PATH_SEGMENTS (nee) lets this pass extend its paths a segment at a time (main, below).
 #include "common/rng.glsl"
-#include "common/sampling.glsl"
-#include "common/scene_data.glsl"
-#include "common/textures.glsl"
 #include "common/intersect.glsl"
-#include "common/bsdf.glsl"
 #include "common/surface.glsl"
-#include "common/lights.glsl"
 #include "common/camera.glsl"
+#include "common/render_uniforms.glsl"
 
-uniform int uMaxDepth;
-uniform uint uSeed;
 uniform uint uSampleOffset;  // added to every sample index (to render one range of a larger render)
 uniform int uSamplesPerPass;
 uniform sampler2D uPreviousSum;

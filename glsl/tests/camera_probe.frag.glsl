@@ -4,13 +4,6 @@
 // direction, 1 if the ray is bit for bit the pinhole's cameraRay through the same position, else 0),
 // out2 = (the jittered position in pixels, 0, 0).
 #include "common/rng.glsl"
-#include "common/sampling.glsl"
-
-struct Ray {
-    vec3 origin;
-    vec3 dir;
-};
-
 #include "common/camera.glsl"
 
 uniform uint uSeed;

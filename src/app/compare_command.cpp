@@ -10,13 +10,13 @@
 #include "core/error.h"
 #include "core/text.h"
 #include "image/error_color_map.h"
+#include "image/error_metrics.h"
 #include "image/file_io.h"
 #include "image/flip.h"
 #include "image/image.h"
 #include "image/image_stats.h"
 #include "image/png.h"
 #include "request/args.h"
-#include "study/metrics.h"
 
 namespace fp {
 
@@ -109,9 +109,9 @@ int compareCommand(const std::vector<std::string>& argv) {
     } else if (metric == "rmse") {
         value = rmse(test, reference);
     } else if (metric == "relmse") {
-        value = study::relativeMse(test, reference);
+        value = relativeMse(test, reference);
     } else {
-        value = study::ssim(test, reference);
+        value = ssim(test, reference);
     }
     std::printf("%s %.6g\n", metric.c_str(), value);
     return 0;

@@ -14,17 +14,17 @@
 #include "core/error.h"
 #include "core/text.h"
 #include "gl/context.h"
+#include "image/error_metrics.h"
 #include "image/file_io.h"
 #include "image/image_stats.h"
-#include "realtime/practice_run.h"
 #include "render/renderer.h"
 #include "request/render_request.h"
 #include "study/cpu_peak.h"
 #include "study/denoisers.h"
 #include "study/image_strip.h"
-#include "study/metrics.h"
 #include "study/path_cost.h"
 #include "study/plots.h"
+#include "study/practice_run.h"
 #include "study/report.h"
 #include "study/roofline_plot.h"
 #include "study/scene_set.h"
@@ -217,9 +217,9 @@ int studyCommand(const std::vector<std::string>& argv) {
         say("scene " + entry.name);
         Scene scene = request.prepareScene(entry.load());
         RenderSettings settings = request.settings(scene);
-        if (settings.width < study::kSsimWindow || settings.height < study::kSsimWindow)
-            throw Error("--size: the study needs at least " + std::to_string(study::kSsimWindow) + "x" +
-                        std::to_string(study::kSsimWindow) + " pixels (the SSIM window)");
+        if (settings.width < kSsimWindow || settings.height < kSsimWindow)
+            throw Error("--size: the study needs at least " + std::to_string(kSsimWindow) + "x" +
+                        std::to_string(kSsimWindow) + " pixels (the SSIM window)");
         std::optional<Image> loadedReference;
         std::string referenceText;
         if (auto file = args.text("--reference")) {
@@ -254,7 +254,7 @@ int studyCommand(const std::vector<std::string>& argv) {
             const std::string referenceFile = study::referenceFileName(entry.name);
             writeImage(outPath(referenceFile), reference);
             // The reference's own noise adds its variance to every measured MSE; say how much.
-            double ownRelMse = study::expectedRelativeMse(acc.varianceOfMean(), reference);
+            double ownRelMse = expectedRelativeMse(acc.varianceOfMean(), reference);
             char noise[240];
             std::snprintf(
                 noise, sizeof noise,
@@ -323,7 +323,7 @@ int studyCommand(const std::vector<std::string>& argv) {
         // Practice against brute force costs minutes (README.md, "Study"), so it runs once, on the first
         // scene, with that scene's renderer, settings and camera; report.md gives it after the scenes.
         if (practiceFrames > 0 && reports.empty()) {
-            PracticeOptions practice;
+            study::PracticeOptions practice;
             practice.settings = settings;
             practice.display = request.display();
             practice.camera = camera;
@@ -335,7 +335,7 @@ int studyCommand(const std::vector<std::string>& argv) {
             practice.flipThreshold = flipThreshold;
             practice.outDir = outPath("practice");
             if (!quiet) practice.progress = say;
-            report.practice = measurePractice(renderer, practice);
+            report.practice = study::measurePractice(renderer, practice);
             report.practice->outDir = "practice";  // as report.md links it
         }
         allRows.insert(allRows.end(), result.rows.begin(), result.rows.end());

@@ -20,7 +20,7 @@ namespace {
 
 class EglContext : public GlContext {
   public:
-    EglContext(EGLDisplay display, bool hardware) : display_(display), hardware_(hardware) {
+    explicit EglContext(EGLDisplay display) : display_(display) {
         const EGLint configAttribs[] = {EGL_SURFACE_TYPE, EGL_PBUFFER_BIT, EGL_RENDERABLE_TYPE,
                                         EGL_OPENGL_BIT, EGL_NONE};
         EGLConfig config;
@@ -45,7 +45,6 @@ class EglContext : public GlContext {
         loadGlFunctions(reinterpret_cast<GlProcLoader>(eglGetProcAddress), "EGL");
     }
     ~EglContext() override { release(); }
-    bool hardware() const { return hardware_; }
 
   private:
     [[noreturn]] void fail(const std::string& what) {
@@ -68,7 +67,6 @@ class EglContext : public GlContext {
     EGLDisplay display_;
     EGLContext context_ = EGL_NO_CONTEXT;
     EGLSurface surface_ = EGL_NO_SURFACE;
-    bool hardware_;
 };
 
 struct Device {
@@ -113,7 +111,7 @@ std::unique_ptr<GlContext> createEglContext(bool requireHardware) {
             continue;
         }
         try {
-            return std::make_unique<EglContext>(display, d.hardware);
+            return std::make_unique<EglContext>(display);
         } catch (const Error& e) {
             tried += std::string(" ") + e.what() + ";";
         }

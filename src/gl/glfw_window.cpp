@@ -75,10 +75,6 @@ bool GlfwWindow::shouldClose() const {
     return glfwWindowShouldClose(window_);
 }
 
-void GlfwWindow::requestClose() {
-    glfwSetWindowShouldClose(window_, GLFW_TRUE);
-}
-
 glm::ivec2 GlfwWindow::framebufferSize() const {
     glm::ivec2 size(0);
     glfwGetFramebufferSize(window_, &size.x, &size.y);

@@ -27,7 +27,6 @@ class GlfwWindow : public GlContext {
     GLFWwindow* handle() const { return window_; }
 
     bool shouldClose() const;
-    void requestClose();
     glm::ivec2 framebufferSize() const;  // pixels, what the display pass draws into
     glm::ivec2 windowSize() const;       // screen coordinates, what cursor positions are measured in
 

@@ -73,12 +73,24 @@ struct Expander {
         // `#include "path"`, or `#include NAME` where NAME is a define whose value is a quoted path.
         static const std::regex includeLine(
             R"re(^\s*#\s*include\s*(?:"([^"]+)"|([A-Za-z_]\w*))\s*(//.*)?$)re");
+        static const std::regex conditionalStart(R"re(^\s*#\s*if(def|ndef)?\b.*)re");
+        static const std::regex conditionalEnd(R"re(^\s*#\s*endif\b.*)re");
         std::string line;
         int lineNumber = 0;
+        int conditionals = 0;  // the #if blocks open at this line of this file
         while (std::getline(in, line)) {
             ++lineNumber;
             std::smatch m;
+            if (line.find('#') != std::string::npos) {
+                if (std::regex_match(line, conditionalStart)) ++conditionals;
+                if (std::regex_match(line, conditionalEnd)) --conditionals;
+            }
             if (line.find("include") != std::string::npos && std::regex_match(line, m, includeLine)) {
+                // The file is expanded here once, before the preprocessor runs: inside an #if that turns
+                // out false its text would be dropped, and every later #include of it skipped.
+                if (conditionals > 0)
+                    throw Error("glsl/" + path + ":" + std::to_string(lineNumber) +
+                                ": #include inside #if: include the file unconditionally");
                 try {
                     include(m[1].matched ? m[1].str() : macroPath(m[2].str()));
                 } catch (const Error& e) {

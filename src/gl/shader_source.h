@@ -29,7 +29,9 @@ class ShaderLibrary {
     // Resolves `#include "path"` (relative to glsl/, each file at most once) and prepends the
     // #version line and the defines. A define named GL_<extension> (GLSL reserves GL_ macro names, so no
     // #define can have one) becomes `#extension GL_<extension> : <value>` instead, in its place before
-    // any declaration as GLSL requires. Throws fp::Error naming file and line for a bad include.
+    // any declaration as GLSL requires. Throws fp::Error naming file and line for a bad include, or one
+    // inside an #if (expanded before the preprocessor runs, the file's text would be dropped where the
+    // condition is false, and its later #includes skipped as done).
     ExpandedShader expand(const std::string& path, const ShaderDefines& defines) const;
 
     // Where every library of this process has read files from since the last call: directories, and ""

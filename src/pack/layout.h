@@ -87,9 +87,9 @@
 //                                            them read the first four texels, as before.
 //  lights        RGBA32F    1 per light,     the light-selection cdf, one entry per emitter triangle (in
 //                           then 3 per       leaf order) and then one per punctual light (in the scene's
-//                           punctual light   order), each (index, cdf up to and including it, pmf, area):
-//                                            index >= 0: the emitter triangle of that packed index, area
-//                                            its area; index < 0: punctual light k = -1 - index, area 0.
+//                           punctual light   order), each (index, cdf up to and including it, pmf, 0):
+//                                            index >= 0: the emitter triangle of that packed index;
+//                                            index < 0: punctual light k = -1 - index.
 //                                            The shader gets the number of entries as uLightCount.
 //                                            Then, from texel uLightCount on, kPunctualTexels per punctual
 //                                            light k (scene/scene.h PunctualLight; only in scenes that
@@ -187,7 +187,6 @@ enum MapBit : int {
 // The flags of a triangle's third texel.
 constexpr int kTriangleAlphaFlag = 1;
 constexpr int kTriangleSingleSidedFlag = 2;
-constexpr int kLightTexels = 1;
 constexpr int kPunctualTexels = 3;  // per punctual light, after the cdf entries in the lights buffer
 constexpr int kTexcoordTexels = 3;
 constexpr int kTangentTexels = 3;

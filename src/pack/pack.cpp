@@ -335,7 +335,7 @@ PackedScene packScene(const Scene& scene, const Bvh& bvh, const std::vector<Bvh>
         for (int v = 0; v < 3; ++v) out.normals.emplace_back(t.n[v], v == 0 ? entry : 0.0f);
         if (pmf[i] > 0.0f) {
             cdf += pmf[i];  // exact: every pmf and partial sum is a multiple of 2^-24 in [0, 1]
-            out.lights.emplace_back(float(i), cdf, pmf[i], t.area());
+            out.lights.emplace_back(float(i), cdf, pmf[i], 0.0f);
             treeEmitters.push_back({t.p[0], t.p[1], t.p[2], pmf[i]});
         }
     }

@@ -7,6 +7,7 @@
 
 #include "core/clock.h"
 #include "core/error.h"
+#include "image/error_metrics.h"
 #include "image/file_io.h"
 #include "image/flip.h"
 #include "image/image_grid.h"
@@ -14,7 +15,6 @@
 #include "image/png.h"
 #include "realtime/frame_budget.h"
 #include "realtime/reference_cache.h"
-#include "study/metrics.h"
 
 namespace fp {
 
@@ -131,7 +131,7 @@ std::vector<FrameRow> renderRealtime(Renderer& renderer, const RealtimeRun& run,
         std::snprintf(name, sizeof name, "/frame_%04d.png", f);
         writePng(run.outDir + name, image, run.display);
 
-        std::vector<float> luma = study::displayLuma(image), referenceLuma;
+        std::vector<float> luma = displayLuma(image), referenceLuma;
         if (inStrip(f, run.frames)) {
             stripFrames.push_back(image);
             stripFrameNumbers.push_back(f);
@@ -149,10 +149,10 @@ std::vector<FrameRow> renderRealtime(Renderer& renderer, const RealtimeRun& run,
                 if (cache) cache->store(f, camera, *reference);
             }
             row.rmse = rmse(image, *reference);
-            row.relMse = study::relativeMse(image, *reference);
-            row.ssim = study::ssim(image, *reference);
+            row.relMse = relativeMse(image, *reference);
+            row.ssim = ssim(image, *reference);
             row.flip = hdrFlip(image, *reference, kDefaultPixelsPerDegree).mean;
-            referenceLuma = study::displayLuma(*reference);
+            referenceLuma = displayLuma(*reference);
             if (inStrip(f, run.frames)) stripReferences.push_back(*reference);
         }
         if (f > 0)

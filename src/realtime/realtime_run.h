@@ -40,7 +40,7 @@ struct FrameRow {
 };
 
 // Temporal instability (flicker): the mean over pixels of |e_t - e_{t-1}|, where e is the display luma
-// (study/metrics.h displayLuma) of a frame minus that of its reference, so that what the camera's
+// (image/error_metrics.h displayLuma) of a frame minus that of its reference, so that what the camera's
 // motion changes in both is not counted; without references e is the frame's luma alone.
 double flicker(const std::vector<float>& luma, const std::vector<float>& previousLuma,
                const std::vector<float>* reference, const std::vector<float>* previousReference);

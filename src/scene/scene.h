@@ -31,7 +31,6 @@ enum class MaterialType : uint32_t {
     // rays that hit it, as Blender's importer makes it (emission = base colour, no scattering).
     Unlit = 5,
 };
-constexpr uint32_t kMaterialTypeCount = 6;
 
 // How a material's alpha (coverage) is used, as glTF 2.0's material.alphaMode: OPAQUE ignores it, MASK
 // shows the surface where alpha >= alphaCutoff and nothing elsewhere, BLEND shows it with probability

@@ -2,8 +2,8 @@
 // "Practice as well as brute force": what the real-time pipeline (1 spp per frame, temporal reuse and
 // the SVGF-style a-trous filter, src/realtime/temporal_pipeline.h) achieves at the time per frame it
 // costs, against brute force (every frame alone, unfiltered) at 1 spp and at the samples that cost the
-// same time. Plain data and the report's section only: the measurement that renders the frames lives in
-// src/realtime/practice_run.h (fp_realtime depends on fp_study, not the other way round).
+// same time. Plain data and the report's section only: the measurement that renders the frames, through
+// src/realtime/, is study/practice_run.h.
 #include <optional>
 #include <string>
 #include <vector>

@@ -6,11 +6,11 @@
 
 #include "core/error.h"
 #include "core/text.h"
+#include "image/error_metrics.h"
 #include "study/feasibility.h"
 #include "study/flop_model.h"
 #include "study/gpus.h"
 #include "study/metric_answer.h"
-#include "study/metrics.h"
 #include "study/plots.h"
 #include "study/roofline_report.h"
 #include "study/scene_set.h"

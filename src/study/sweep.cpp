@@ -5,9 +5,9 @@
 
 #include "core/clock.h"
 #include "core/statistics.h"
+#include "image/error_metrics.h"
 #include "image/flip.h"
 #include "image/image_stats.h"
-#include "study/metrics.h"
 
 namespace fp::study {
 

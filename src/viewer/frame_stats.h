@@ -26,7 +26,6 @@ class FrameStats {
     // Paths per second of frame time over every frame but the first, which also pays for compiling
     // the shaders (on llvmpipe, for the JIT at the first draw).
     double steadyPathsPerSecond() const { return steadySeconds_ > 0.0 ? steadyPaths_ / steadySeconds_ : 0.0; }
-    const std::vector<double>& allFrameSeconds() const { return all_; }
 
   private:
     struct Frame {

@@ -73,6 +73,24 @@ TEST_F(ShaderDir, MissingIncludeNamesTheIncludingFileAndLine) {
     }
 }
 
+// An include inside #if is refused: expanded before the preprocessor runs, the file would be marked
+// included even where the condition drops its text, so a later unconditional include would find nothing.
+TEST_F(ShaderDir, IncludeInsideAConditionalIsRefused) {
+    write("common/a.glsl", "float a() { return 1.0; }\n");
+    write("main.glsl", "#if FEATURE\n#ifdef X\n#endif\n#include \"common/a.glsl\"\n#endif\nvoid main() {}\n");
+    try {
+        ShaderLibrary(dir_.string()).expand("main.glsl", {{"FEATURE", "0"}});
+        FAIL() << "expected an error";
+    } catch (const Error& e) {
+        EXPECT_NE(std::string(e.what()).find("glsl/main.glsl:4: #include inside #if"), std::string::npos)
+            << e.what();
+    }
+    write("main.glsl",
+          "#ifndef FEATURE\n#define FEATURE 0\n#endif\n#include \"common/a.glsl\"\nvoid main() {}\n");
+    EXPECT_NE(ShaderLibrary(dir_.string()).expand("main.glsl", {}).text.find("float a()"), std::string::npos)
+        << "after the #endif it is unconditional";
+}
+
 TEST(CompileLog, DriverReferencesBecomeFileAndLine) {
     ExpandedShader e;
     e.origins = {

@@ -1,4 +1,4 @@
-#include "realtime/practice_run.h"
+#include "study/practice_run.h"
 
 #include <filesystem>
 
@@ -7,25 +7,25 @@
 #include "realtime/reference_cache.h"
 #include "realtime/temporal_pipeline.h"
 
-namespace fp {
+namespace fp::study {
 
 namespace {
 
-study::PracticeRun runOnce(Renderer& renderer, const RealtimeRun& base, const std::string& camera,
-                           study::PracticeMethod method, int spp, const std::string& dir) {
+PracticeRun runOnce(Renderer& renderer, const RealtimeRun& base, const std::string& camera,
+                    PracticeMethod method, int spp, const std::string& dir) {
     RealtimeRun run = base;
     run.fixedSpp = spp;
-    if (method == study::PracticeMethod::BruteForce) {
+    if (method == PracticeMethod::BruteForce) {
         run.temporal.reuse = false;  // `fragpath realtime --temporal off --filter none`
         run.temporal.filter = Denoiser::None;
     }
     run.outDir = dir;
-    std::vector<study::PracticeFrame> frames;
+    std::vector<PracticeFrame> frames;
     for (const FrameRow& row : renderRealtime(renderer, run)) {
         if (!row.flip) throw Error("practice run: frame " + std::to_string(row.frame) + " has no FLIP");
         frames.push_back({row.ms(), *row.flip, row.meanHistoryFrames, row.flicker});
     }
-    return study::summarisePractice(camera, method, spp, frames);
+    return summarisePractice(camera, method, spp, frames);
 }
 
 // A still camera sees the same view every frame, and renderRealtime renders each frame's reference
@@ -50,10 +50,10 @@ void shareStillReference(Renderer& renderer, const RealtimeRun& base, const std:
 
 }  // namespace
 
-study::PracticeInput measurePractice(Renderer& renderer, const PracticeOptions& o) {
+PracticeInput measurePractice(Renderer& renderer, const PracticeOptions& o) {
     if (o.frames < 1) throw Error("practice: needs at least 1 frame");
     if (o.referenceSpp < 1) throw Error("practice: the reference needs at least 1 sample per pixel");
-    study::PracticeInput input;
+    PracticeInput input;
     input.width = o.settings.width;
     input.height = o.settings.height;
     input.frames = o.frames;
@@ -88,16 +88,15 @@ study::PracticeInput measurePractice(Renderer& renderer, const PracticeOptions& 
         say("practice, " + camera + " camera: references (" + std::to_string(o.referenceSpp) +
             " spp) and brute force at 1 spp");
         if (still) shareStillReference(renderer, base, bruteOne);
-        study::PracticeRun one =
-            runOnce(renderer, base, camera, study::PracticeMethod::BruteForce, 1, bruteOne);
+        PracticeRun one = runOnce(renderer, base, camera, PracticeMethod::BruteForce, 1, bruteOne);
         say("practice, " + camera + " camera: the pipeline at 1 spp");
-        study::PracticeRun pipeline = runOnce(renderer, base, camera, study::PracticeMethod::Pipeline, 1,
-                                              (dir / "pipeline_1spp").string());
-        const int equalSpp = study::equalTimeSpp(pipeline.msPerFrame, one.msPerFrame);
+        PracticeRun pipeline =
+            runOnce(renderer, base, camera, PracticeMethod::Pipeline, 1, (dir / "pipeline_1spp").string());
+        const int equalSpp = equalTimeSpp(pipeline.msPerFrame, one.msPerFrame);
         say("practice, " + camera + " camera: brute force at " + std::to_string(equalSpp) +
             " spp (equal time)");
-        study::PracticeRun equal =
-            runOnce(renderer, base, camera, study::PracticeMethod::BruteForce, equalSpp,
+        PracticeRun equal =
+            runOnce(renderer, base, camera, PracticeMethod::BruteForce, equalSpp,
                     (dir / ("brute_force_equal_time_" + std::to_string(equalSpp) + "spp")).string());
         equal.equalTime = true;
         input.runs.push_back(one);
@@ -105,10 +104,9 @@ study::PracticeInput measurePractice(Renderer& renderer, const PracticeOptions& 
         input.runs.push_back(equal);
         if (still) continue;
         // What the pipeline needs per frame to get under the FLIP threshold while the camera moves.
-        for (int spp = 2; pipeline.judgedFlip() > o.flipThreshold && spp <= study::kPracticeMaxSpp;
-             spp *= 2) {
+        for (int spp = 2; pipeline.judgedFlip() > o.flipThreshold && spp <= kPracticeMaxSpp; spp *= 2) {
             say("practice, moving camera: the pipeline at " + std::to_string(spp) + " spp");
-            pipeline = runOnce(renderer, base, camera, study::PracticeMethod::Pipeline, spp,
+            pipeline = runOnce(renderer, base, camera, PracticeMethod::Pipeline, spp,
                                (dir / ("pipeline_" + std::to_string(spp) + "spp")).string());
             input.runs.push_back(pipeline);
         }
@@ -116,4 +114,4 @@ study::PracticeInput measurePractice(Renderer& renderer, const PracticeOptions& 
     return input;
 }
 
-}  // namespace fp
+}  // namespace fp::study

@@ -4,7 +4,7 @@
 
 #include "image/image.h"
 
-namespace fp::study {
+namespace fp {
 
 // The epsilon of the relative MSE: keeps black reference pixels from dividing by zero. 0.01 is the
 // value of Rousselle, Knaus and Zwicker 2011 ("Adaptive Sampling and Reconstruction using Greedy
@@ -34,4 +34,4 @@ std::vector<float> displayLuma(const Image& image);
 double ssim(const Image& estimate, const Image& reference);
 constexpr int kSsimWindow = 11;
 
-}  // namespace fp::study
+}  // namespace fp

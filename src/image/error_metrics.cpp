@@ -1,4 +1,4 @@
-#include "study/metrics.h"
+#include "image/error_metrics.h"
 
 #include <cmath>
 #include <string>
@@ -6,7 +6,7 @@
 #include "core/error.h"
 #include "image/tone_map.h"
 
-namespace fp::study {
+namespace fp {
 
 namespace {
 
@@ -92,4 +92,4 @@ double ssim(const Image& estimate, const Image& reference) {
     return total / windows;
 }
 
-}  // namespace fp::study
+}  // namespace fp

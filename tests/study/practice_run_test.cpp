@@ -1,4 +1,4 @@
-// The study's practice measurement (realtime/practice_run.h) on real shaders through OSMesa, tiny: the
+// The study's practice measurement (study/practice_run.h) on real shaders through OSMesa, tiny: the
 // runs exist, their figures are finite, and on a still camera reuse + filter beats 1-spp brute force.
 #include <gtest/gtest.h>
 
@@ -6,7 +6,7 @@
 #include <filesystem>
 
 #include "../render/render_test_util.h"
-#include "realtime/practice_run.h"
+#include "study/practice_run.h"
 
 namespace fp::test {
 namespace {
@@ -22,7 +22,7 @@ TEST(PracticeRun, ReuseAndFilterBeatOneSppBruteForceOnAStillCamera) {
     ensureGlContext();
     Scene scene = builtinCornellBox();
     Renderer renderer(scene, testShaders());
-    PracticeOptions o;
+    study::PracticeOptions o;
     o.settings.width = o.settings.height = 32;
     o.settings.maxDepth = 4;
     o.camera = *scene.camera;
@@ -32,7 +32,7 @@ TEST(PracticeRun, ReuseAndFilterBeatOneSppBruteForceOnAStillCamera) {
     o.flipThreshold = 0.0;  // never reached: the moving camera tries 2, 4, 8 and 16 spp too
     o.outDir = (std::filesystem::temp_directory_path() / "fp_practice_run_test").string();
     std::filesystem::remove_all(o.outDir);
-    study::PracticeInput in = measurePractice(renderer, o);
+    study::PracticeInput in = study::measurePractice(renderer, o);
 
     // Per camera brute force 1 spp, the pipeline at 1 spp, brute force at equal time; then the moving
     // pipeline at 2, 4, 8, 16: 3 + 3 + 4 = 10 runs.

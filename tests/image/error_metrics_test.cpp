@@ -1,13 +1,14 @@
-// The study's error metrics on images whose answers are known in closed form.
+// The error metrics of the study, `fragpath compare` and `fragpath realtime` on images whose answers are
+// known in closed form.
 #include <gtest/gtest.h>
 
 #include <cmath>
 
 #include "core/error.h"
+#include "image/error_metrics.h"
 #include "image/image_stats.h"
-#include "study/metrics.h"
 
-namespace fp::study {
+namespace fp {
 namespace {
 
 // A smooth gradient with some texture, so that SSIM's variances are not all zero.
@@ -80,4 +81,4 @@ TEST(Metrics, RejectMismatchedOrTooSmallImages) {
 }
 
 }  // namespace
-}  // namespace fp::study
+}  // namespace fp

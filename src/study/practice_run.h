@@ -11,7 +11,7 @@
 #include "settings/render_settings.h"
 #include "study/practice.h"
 
-namespace fp {
+namespace fp::study {
 
 struct PracticeOptions {
     RenderSettings settings;  // size, integrator, depth, seed, sampler
@@ -21,8 +21,8 @@ struct PracticeOptions {
     std::string sceneKey;   // names the scene in the references' key
     int frames = 20;
     int referenceSpp = 128;  // the study's defaults (--practice-frames, --practice-reference-spp)
-    double fps = 30.0, orbitDegreesPerSecond = 10.0;      // `fragpath realtime`'s defaults
-    double flipThreshold = study::kDefaultFlipThreshold;  // the study's --flip-threshold
+    double fps = 30.0, orbitDegreesPerSecond = 10.0;  // `fragpath realtime`'s defaults
+    double flipThreshold = kDefaultFlipThreshold;     // the study's --flip-threshold
     // Each run writes DIR/<camera>/<run>/ (frames, frames.csv, strip.png); the references go to
     // DIR/<camera>/references/, emptied first so that a study with other settings never meets them.
     std::string outDir;
@@ -32,6 +32,6 @@ struct PracticeOptions {
 // Runs, per camera: brute force at 1 spp, the pipeline at 1 spp, brute force at equalTimeSpp of the
 // two; then, on the moving camera, the pipeline at 2, 4, ... kPracticeMaxSpp spp per frame until its
 // judged FLIP is at most the threshold. Throws fp::Error for frames or reference spp below 1.
-study::PracticeInput measurePractice(Renderer& renderer, const PracticeOptions& options);
+PracticeInput measurePractice(Renderer& renderer, const PracticeOptions& options);
 
-}  // namespace fp
+}  // namespace fp::study
