@@ -24,7 +24,6 @@
 #include <vector>
 
 #include "core/error.h"
-#include "gl/embedded_shaders.h"
 #include "gl/program.h"
 #include "render/light_splat.h"
 #include "render_test_util.h"
@@ -39,13 +38,12 @@ bool isPass(const std::string& text) {
     return text.find("void main(") != std::string::npos;
 }
 
-// The shaders the tests use, by path below glsl/: the directory FP_RENDER_TEST_SHADERS names
-// (testShaders()), else the ones built in.
+// The shaders the tests use (testShaders(): FP_RENDER_TEST_SHADERS, else the source tree's), by path below
+// glsl/.
 std::map<std::string, std::string> testShaderFiles() {
-    const char* dir = std::getenv("FP_RENDER_TEST_SHADERS");
-    if (!dir) return embeddedShaders();
+    const std::string dir = test::testShaderDirectory();
+    const ShaderLibrary shaders = test::testShaders();
     std::map<std::string, std::string> files;
-    const ShaderLibrary shaders(dir);
     for (const auto& entry : fs::recursive_directory_iterator(dir))
         if (entry.is_regular_file() && entry.path().extension() == ".glsl") {
             const std::string path = entry.path().lexically_relative(dir).generic_string();
@@ -60,6 +58,7 @@ class ShaderCopy {
     explicit ShaderCopy(const std::map<std::string, std::string>& files)
         : dir_(fs::temp_directory_path() / ("fragpath_glsl_includes_" + std::to_string(::getpid()))) {
         for (const auto& [path, text] : files) write(path, text);
+        test::TestShaderSources::add(dir_.string());  // a copy of testShaders(), with the probes added
     }
     ~ShaderCopy() { fs::remove_all(dir_); }
     ShaderCopy(const ShaderCopy&) = delete;
