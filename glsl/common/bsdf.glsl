@@ -105,7 +105,7 @@ struct BsdfSample {
 // lobe is nearly smooth. The light its highlight throws on other surfaces is a caustic, which nee's light
 // pass traces (integrators/nee.glsl) as it does the light of a delta lobe.
 #ifndef GLOSSY_CASTER_ROUGHNESS
-#define GLOSSY_CASTER_ROUGHNESS 0.0
+#error "GLOSSY_CASTER_ROUGHNESS is set by the layout defines (src/gpu/layout_defines.cpp)"
 #endif
 bool isGlossyCaster(MaterialData m) {
     bool metal = m.type == MATERIAL_CONDUCTOR;

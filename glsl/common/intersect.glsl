@@ -3,7 +3,7 @@
 #include "common/scene_data.glsl"
 #include "common/camera.glsl"
 #ifndef BVH_STACK_SIZE
-#define BVH_STACK_SIZE 32
+#error "BVH_STACK_SIZE is set by the renderer (src/render/renderer.cpp), from the tree"
 #endif
 #if BVH_STACK_SIZE < 4 || BVH_STACK_SIZE > 259
 #error "BVH_STACK_SIZE must be 4 to 259 (shiftStack)"

@@ -10,7 +10,7 @@
 
 // SAMPLER (set by the renderer, src/settings/render_settings.h): 0 independent numbers, 1 Owen-scrambled Sobol.
 #ifndef SAMPLER
-#define SAMPLER 0
+#error "SAMPLER is set by the renderer (src/render/renderer.cpp) or the probe that includes this"
 #endif
 
 uvec4 pcg4d(uvec4 v) {

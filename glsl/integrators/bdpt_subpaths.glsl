@@ -22,7 +22,7 @@
 // floor and bounces on CAUSTIC_SMOOTH_BOUNCES - 1 times (causticStrategy). LIGHT_RECORDS, the light
 // image's records per path, is set by the renderer (src/render/light_splat.h).
 #ifndef LIGHT_RECORDS
-#define LIGHT_RECORDS 6
+#error "LIGHT_RECORDS is set by the renderer (src/render/light_splat.h)"
 #endif
 #if CAUSTICS_LIGHT_TRACED
 #define BDPT_MAX_LIGHT_VERTICES LIGHT_RECORDS
@@ -30,7 +30,7 @@
 #define BDPT_MAX_LIGHT_VERTICES 4
 #endif
 #ifndef BDPT_MAX_DEPTH
-#define BDPT_MAX_DEPTH 12
+#error "BDPT_MAX_DEPTH is set by the renderer, from the integrators' facts (src/settings/integrators.cpp)"
 #endif
 #define BDPT_CAMERA_VERTICES (BDPT_MAX_DEPTH + 2)
 

@@ -8,6 +8,7 @@
 #include "core/error.h"
 #include "gl/context.h"
 #include "pack/layout.h"
+#include "realtime/frame_budget.h"
 #include "realtime/realtime_run.h"
 #include "request/render_request.h"
 
@@ -29,7 +30,8 @@ std::vector<OptionGroup> realtimeOptions() {
            {"--frames", "", "N", "frames to render (default 60)"},
            {"--fps", "", "F",
             "frames per second: frame i shows the path at i / F s, and 1000 / F ms is the budget the samples "
-            "per frame are fitted to (default 30)"},
+            "per frame are fitted to (default " +
+                std::to_string(kDefaultFps) + ")"},
            {"--temporal", "", "on|off", "reuse the reprojected history (default on)"},
            {"--filter", "", "atrous|none", "the spatial filter after reprojection (default atrous)"},
            {"--settled", "", "N",
@@ -89,7 +91,7 @@ int realtimeCommand(const std::vector<std::string>& argv) {
     const std::string pathName = args.text("--camera-path").value_or("orbit");
     const double orbitSpeed = args.number("--orbit-speed").value_or(10.0f);
     const int frames = args.integer("--frames", 1, 1000000).value_or(60);
-    const float fps = args.number("--fps").value_or(30.0f);
+    const float fps = args.number("--fps").value_or(float(kDefaultFps));
     if (!(fps > 0.0f && fps <= 1000.0f)) throw UsageError("option --fps: expected a rate in (0, 1000]");
     TemporalSettings temporal;
     temporal.reuse = onOff(args, "--temporal");

@@ -5,6 +5,7 @@
 #include "app/commands.h"
 #include "core/error.h"
 #include "image/file_io.h"
+#include "realtime/frame_budget.h"
 #include "request/render_request.h"
 #include "viewer/panel.h"
 #include "viewer/viewer.h"
@@ -28,7 +29,9 @@ std::vector<OptionGroup> viewOptions() {
            {"--realtime", "", "",
             "start in real-time mode: a few samples per pixel each frame, reprojected history and the\n"
             "a-trous filter (the panel switches back to progressive)"},
-           {"--fps", "", "N", "real-time mode's target frames per second, 1 to 240 (default 30)"},
+           {"--fps", "", "N",
+            "real-time mode's target frames per second, 1 to 240 (default " + std::to_string(kDefaultFps) +
+                ")"},
            {"--dynamic-resolution", "", "on|off",
             "real-time mode: where one sample per pixel overruns the budget, render fewer pixels\n"
             "(halving their count per step, down to 1/8 of the side) and scale up (default on)"},
@@ -92,7 +95,7 @@ int viewCommand(const std::vector<std::string>& argv) {
     c.tone = request.display();
     if (auto name = args.text("--denoise")) c.denoiser = parseDenoiser(*name);
     c.realtime = args.has("--realtime");
-    c.targetFps = args.integer("--fps", 1, 240).value_or(30);
+    c.targetFps = args.integer("--fps", 1, 240).value_or(kDefaultFps);
     const std::string dynamic = args.text("--dynamic-resolution").value_or("on");
     if (dynamic != "on" && dynamic != "off")
         throw UsageError("option --dynamic-resolution: expected on or off, not '" + dynamic + "'");

@@ -4,6 +4,7 @@
 #include <string>
 
 #include "core/error.h"
+#include "pack/caustic_casters.h"
 #include "pack/layout.h"
 
 namespace fp::layout {
@@ -37,7 +38,10 @@ ShaderDefines layoutDefines(bool images) {
                              {"ALPHA_MAP_BIT", s(kAlphaMapBit)},
                              {"SPECULAR_MAP_BIT", s(kSpecularMapBit)},
                              {"TRIANGLE_ALPHA_FLAG", s(kTriangleAlphaFlag)},
-                             {"TRIANGLE_SINGLE_SIDED_FLAG", s(kTriangleSingleSidedFlag)}};
+                             {"TRIANGLE_SINGLE_SIDED_FLAG", s(kTriangleSingleSidedFlag)},
+                             // The rule the caustic casters are packed by (pack/caustic_casters.h), which
+                             // the shaders apply to each hit.
+                             {"GLOSSY_CASTER_ROUGHNESS", std::to_string(kGlossyCasterRoughness)}};
     defines.emplace_back("PUNCTUAL_TEXELS", s(kPunctualTexels));
     if (images) {
         // A GL_ name becomes an #extension line (gl/shader_source.h): the shaders are #version 410.

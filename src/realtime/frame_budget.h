@@ -4,6 +4,10 @@
 // does not fit, fewer pixels. No OpenGL here: it is unit-tested.
 namespace fp {
 
+// The frame rate real time aims at unless told otherwise: the viewer's real-time mode, `fragpath
+// realtime` and the study's practice runs.
+constexpr int kDefaultFps = 30;
+
 struct FrameBudget {
     // The budget is 1000 / fps ms; the pipeline, panel and display take `overheadMs` of it.
     // Hysteresis: lower as soon as the trace overruns its share by more than `overrun` (10 %), raise only

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "realtime/camera_path.h"
+#include "realtime/frame_budget.h"
 #include "realtime/temporal_pipeline.h"
 #include "render/renderer.h"
 #include "settings/render_settings.h"
@@ -17,7 +18,7 @@ struct RealtimeRun {
     explicit RealtimeRun(CameraPath p) : path(std::move(p)) {}
     CameraPath path;
     int frames = 60;
-    double fps = 30.0;            // frame i shows path time i / fps; 1000 / fps ms is the budget
+    double fps = kDefaultFps;     // frame i shows path time i / fps; 1000 / fps ms is the budget
     std::optional<int> fixedSpp;  // samples per frame; unset: fitted to the budget
     TemporalSettings temporal;
     std::optional<int> referenceSpp;  // compare every frame with a render of this many samples

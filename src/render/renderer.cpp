@@ -143,7 +143,6 @@ std::unique_ptr<Program> Renderer::compile(Integrator integrator, const char* fr
     defines.emplace_back("CAUSTICS_LIGHT_TRACED", causticsByLight(integrator, settings_) ? "1" : "0");
     defines.emplace_back("MAX_CAUSTIC_CASTERS", std::to_string(kMaxCausticCasters));
     defines.emplace_back("CAUSTIC_SMOOTH_BOUNCES", std::to_string(kCausticSmoothBounces));
-    defines.emplace_back("GLOSSY_CASTER_ROUGHNESS", std::to_string(kGlossyCasterRoughness));
     defines.emplace_back("GUIDES", settings_.guides ? "1" : "0");
     defines.emplace_back("MATERIAL_TYPES", std::to_string(materialTypes_));
     // Only scenes with an absorbing glass (KHR_materials_volume) attenuate paths inside (surface.glsl).

@@ -3,6 +3,7 @@
 // accumulation) and how to show it (these never do). The panel edits it; command-line flags set it.
 #include "denoise/denoiser.h"
 #include "image/image.h"
+#include "realtime/frame_budget.h"
 #include "settings/render_settings.h"
 
 namespace fp {
@@ -28,7 +29,7 @@ struct ViewerControls {
     // Real-time mode (src/realtime/temporal_pipeline.h): each frame traces a few samples per pixel at the
     // current camera, reprojects the previous frames' history and filters it. Off: progressive mode.
     bool realtime = false;
-    int targetFps = 30;             // samples per frame adapt to the budget 1000 / targetFps ms
+    int targetFps = kDefaultFps;    // samples per frame adapt to the budget 1000 / targetFps ms
     bool dynamicResolution = true;  // where 1 spp overruns the budget, fewer pixels (realtime/frame_budget.h)
     bool temporalReuse = true;      // reproject and blend the history
     bool realtimeFilter = true;     // the a-trous filter of the history

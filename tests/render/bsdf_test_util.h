@@ -98,9 +98,15 @@ class BsdfProbe {
   public:
     static constexpr int kWidth = 256;  // fragments per row of every pass
 
+    // The layout's defines, and the sampler rng.glsl needs to compile (the probe draws its own numbers).
+    static ShaderDefines probeDefines() {
+        ShaderDefines defines = layout::layoutDefines();
+        defines.emplace_back("SAMPLER", "0");
+        return defines;
+    }
+
     explicit BsdfProbe(const ShaderLibrary& shaders)
-        : program_(shaders, "passes/fullscreen.vert.glsl", "tests/bsdf_probe.frag.glsl",
-                   layout::layoutDefines()) {
+        : program_(shaders, "passes/fullscreen.vert.glsl", "tests/bsdf_probe.frag.glsl", probeDefines()) {
         // Units of our own at the top of the range, so that no test's renderer loses a binding.
         firstUnit_ = glInteger(GL_MAX_COMBINED_TEXTURE_IMAGE_UNITS) -
                      4;  // materials, wo and eta, wi, and a spare one for creating textures
