@@ -308,22 +308,23 @@ def efficiency_pair(r, scene, size, spp, flag_name, choices, name):
     return result
 
 
+def measure_choice_efficiency(r, scene_path, quick_size_spp, size_spp, flag, choices, tag):
+    """Variance and CPU time of two values of `flag` on one scene, one pair per run."""
+    scene = os.path.join(ROOT, scene_path)
+    size, spp = quick_size_spp if r.quick else size_spp
+    runs = [efficiency_pair(r, scene, size, spp, flag, choices, "%s_%d" % (tag, i)) for i in range(r.runs)]
+    return {"command": "fragpath render %s --size %s --spp %d --seed 1|2 %s %s" %
+                       (scene_path, size, spp, flag, "|".join(choices)), "runs": runs}
+
+
 def measure_caustics(r):
-    scene = os.path.join(ROOT, "assets/cornell_spheres/cornell_spheres.json")
-    size, spp = ("32x32", 4) if r.quick else ("128x128", 64)
-    runs = [efficiency_pair(r, scene, size, spp, "--caustics", ("light", "path"), "caustics_%d" % i)
-            for i in range(r.runs)]
-    return {"command": "fragpath render assets/cornell_spheres/cornell_spheres.json --size %s --spp %d --seed 1|2 "
-                       "--caustics light|path" % (size, spp), "runs": runs}
+    return measure_choice_efficiency(r, "assets/cornell_spheres/cornell_spheres.json", ("32x32", 4),
+                                     ("128x128", 64), "--caustics", ("light", "path"), "caustics")
 
 
 def measure_light_tree(r):
-    scene = os.path.join(ROOT, "assets/many_lights/many_lights.json")
-    size, spp = ("32x32", 2) if r.quick else ("128x128", 16)
-    runs = [efficiency_pair(r, scene, size, spp, "--light-selection", ("tree", "power"), "light_tree_%d" % i)
-            for i in range(r.runs)]
-    return {"command": "fragpath render assets/many_lights/many_lights.json --size %s --spp %d --seed 1|2 "
-                       "--light-selection tree|power" % (size, spp), "runs": runs}
+    return measure_choice_efficiency(r, "assets/many_lights/many_lights.json", ("32x32", 2), ("128x128", 16),
+                                     "--light-selection", ("tree", "power"), "light_tree")
 
 
 def measure_denoisers(r):

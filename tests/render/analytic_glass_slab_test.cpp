@@ -75,7 +75,7 @@ std::vector<glm::dvec3> expectedSlabImage(const Camera& camera, int maxDepth) {
     });
 }
 
-TEST(AnalyticGlassSlab, TheClosedFormsAreIssue35s) {
+TEST(AnalyticGlassSlab, TheClosedFormsGiveTheWorkedValues) {
     EXPECT_NEAR(fresnel(1.0, 1.5), 0.04, 1e-15);
     EXPECT_NEAR(truncatedTransmittance(1.0, 2), 0.9216, 1e-12);
     EXPECT_NEAR(truncatedTransmittance(1.0, 5), 0.9216 * 1.0016, 1e-12);
@@ -102,7 +102,7 @@ TEST_P(AnalyticGlassSlab, TransmitsTheTruncatedFresnelSeries) {
                        variantName(v) + " at depth " + std::to_string(depth));
 }
 
-INSTANTIATE_TEST_SUITE_P(Issue35, AnalyticGlassSlab,
+INSTANTIATE_TEST_SUITE_P(Integrators, AnalyticGlassSlab,
                          ::testing::Values(AnalyticVariant{Integrator::Naive, 256},
                                            AnalyticVariant{Integrator::Bsdf, 256},
                                            AnalyticVariant{Integrator::Nee, 256, LightSampling::Auto,

@@ -90,7 +90,7 @@ TEST_P(AnalyticLampAllIntegrators, FloorRadianceIsRhoLeFToAFractionOfAPerMille) 
 }
 
 INSTANTIATE_TEST_SUITE_P(
-    Issue35, AnalyticLampAllIntegrators,
+    Integrators, AnalyticLampAllIntegrators,
     ::testing::Values(AnalyticVariant{Integrator::Naive, 2048}, AnalyticVariant{Integrator::Bsdf, 2048},
                       AnalyticVariant{Integrator::Nee, 256, LightSampling::Area, LightSelection::Power},
                       AnalyticVariant{Integrator::Nee, 256, LightSampling::SolidAngle, LightSelection::Power},

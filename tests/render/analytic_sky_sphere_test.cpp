@@ -77,7 +77,7 @@ TEST_P(AnalyticSkySphere, ReflectsAlbedoTimesSkyAtEveryDepth) {
 // Samples per pixel of each replicate: bsdf's cosine-distributed directions make every path a L
 // exactly; naive's uniform ones leave the cosine (relative noise 0.58 per path); nee weighs uniform
 // sky directions against them; bdpt's light paths from the sky leave it nearly noise-free too.
-INSTANTIATE_TEST_SUITE_P(Issue35, AnalyticSkySphere,
+INSTANTIATE_TEST_SUITE_P(Integrators, AnalyticSkySphere,
                          ::testing::Values(AnalyticVariant{Integrator::Naive, 256},
                                            AnalyticVariant{Integrator::Bsdf, 16},
                                            AnalyticVariant{Integrator::Nee, 64},
