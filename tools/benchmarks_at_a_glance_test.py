@@ -29,7 +29,7 @@ class TableTest(unittest.TestCase):
         self.assertIn("2026-12-06 05:00 UTC", lines[0])
         self.assertIn("AMD EPYC, 2 cores, llvmpipe (LLVM 15.0.6), Mesa 22.3.6, `LP_NUM_THREADS=2`", lines[0])
         self.assertNotIn("other work shared the machine", lines[0])
-        loaded = glance.table({"stamp": stamp(load_end=6.5), "measured": {}, "read": {}})
+        loaded = glance.table({"stamp": stamp(load_start=6.5), "measured": {}, "read": {}})
         self.assertIn("other work shared the machine", loaded[0])
 
     def test_medians_and_spans_of_the_invocations(self):

@@ -34,7 +34,7 @@ static const char* kUsage =
 int printVersion() {
     std::printf("fragpath %s (git %s)\n", FP_VERSION, FP_GIT_COMMIT);
     try {
-        std::unique_ptr<fp::GlContext> context = fp::createOffscreenContext("auto");
+        std::unique_ptr<fp::GlContext> context = fp::createOffscreenContext(fp::kAutoBackend);
         std::printf("OpenGL: %s\n", context->description().c_str());
     } catch (const fp::Error& e) {
         std::printf("OpenGL: no offscreen context (%s)\n", e.what());

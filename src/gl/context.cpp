@@ -17,7 +17,8 @@ std::string GlContext::description() const {
 std::unique_ptr<GlContext> createOffscreenContext(const std::string& backend) {
     if (backend == "osmesa") return createOsMesaContext();
     if (backend == "egl") return createEglContext(false);
-    if (backend != "auto") throw Error("unknown backend '" + backend + "' (choose auto, egl or osmesa)");
+    if (backend != kAutoBackend)
+        throw Error("unknown backend '" + backend + "' (choose auto, egl or osmesa)");
     try {
         return createEglContext(true);
     } catch (const Error&) {

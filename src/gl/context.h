@@ -21,7 +21,10 @@ std::unique_ptr<GlContext> createOsMesaContext();
 // `requireHardware`, Mesa's software device does not count. Throws fp::Error when none works.
 std::unique_ptr<GlContext> createEglContext(bool requireHardware);
 
-// For --backend: "osmesa", "egl", or "auto" (an EGL GPU if there is one, else OSMesa). Throws fp::Error
+// The default of --backend: an EGL GPU if there is one, else OSMesa.
+constexpr const char* kAutoBackend = "auto";
+
+// For --backend: "osmesa", "egl", or "auto" (kAutoBackend). Throws fp::Error
 // for an unknown name or when the chosen backend fails.
 std::unique_ptr<GlContext> createOffscreenContext(const std::string& backend);
 

@@ -6,6 +6,7 @@
 
 #include "core/error.h"
 #include "core/log.h"
+#include "gl/context.h"
 #include "image/tone_map.h"
 #include "scene/builtin_scene.h"
 #include "scene/instancing.h"
@@ -154,7 +155,7 @@ RenderRequest::RenderRequest(const Args& args, const FrontEndDefaults& defaults)
     display_.exposure = args.number("--exposure").value_or(0.0f);
     if (auto t = args.text("--tonemap")) display_.toneMap = parseToneMap(*t);
     shaderDir_ = args.text("--shader-dir").value_or("");
-    backend_ = args.text("--backend").value_or("auto");
+    backend_ = args.text("--backend").value_or(kAutoBackend);
     bvhThreads_ = args.integer("--bvh-threads", 1, 1024).value_or(0);
     if (auto t = args.text("--environment")) {
         if (*t == "none") {

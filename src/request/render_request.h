@@ -103,7 +103,7 @@ class RenderRequest {
     std::optional<glm::vec3> eye_, target_, up_;
     std::optional<float> fov_, aperture_, focusDistance_;
     DisplaySettings display_;
-    std::string shaderDir_, backend_ = "auto";
+    std::string shaderDir_, backend_;
     int bvhThreads_ = 0;
     EnvironmentChoice environment_ = EnvironmentChoice::Default;
     std::string environmentMap_;        // with EnvironmentChoice::Map
