@@ -111,7 +111,7 @@ def timed(command, env=None):
         raise SystemExit("failed (%d): %s" % (result.returncode, " ".join(map(shlex.quote, command))))
     after = resource.getrusage(resource.RUSAGE_CHILDREN)
     if b"--environment none keeps it dark" in result.stderr:
-        # fragpath's default light (README, "Default camera and light"), which Cycles would not have.
+        # fragpath's default light (docs/scene-files.md, "Default camera and light"), which Cycles would not have.
         raise SystemExit("fragpath added its default light to the scene, which Cycles does not: give the scene "
                          "file light of its own, or --fragpath-args \"--environment none\"\n" +
                          result.stderr.decode(errors="replace"))

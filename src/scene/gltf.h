@@ -1,7 +1,7 @@
 #pragma once
 // glTF 2.0 scenes: .gltf (JSON with data-URI or external buffers) and .glb (binary), read through
 // tinygltf (Debian's libtinygltf-dev) and flattened into a Scene: every triangle primitive of every node
-// of the default scene, in world space, with its material mapped onto fragpath's models (README, "glTF")
+// of the default scene, in world space, with its material mapped onto fragpath's models (docs/gltf.md)
 // and the first perspective camera. Anything that cannot be rendered as the file means it (compressed
 // meshes, required extensions we lack, sparse or quantized data, out-of-range indices, cycles in the
 // node graph, non-finite values...) is an fp::Error naming the file and the part of it; what can be

@@ -248,7 +248,7 @@ void appendPrimitive(const tinygltf::Model& model, const MeshInstance& instance,
 
 // ---- gltf_material.cpp
 
-// The glTF factors a material is mapped from (see the README's material table).
+// The glTF factors a material is mapped from (docs/materials.md, the material table).
 struct PbrFactors {
     glm::vec4 baseColor{1.0f};  // rgb: base colour; a: alpha
     float metallic = 1.0f, roughness = 1.0f;
@@ -270,7 +270,7 @@ struct PbrFactors {
     bool doubleSided = false;  // glTF's default
 };
 
-// The mapping rules of the README's glTF table: Unlit with KHR_materials_unlit, glass (Dielectric) where
+// The mapping rules of the material table (docs/materials.md): Unlit with KHR_materials_unlit, glass (Dielectric) where
 // transmission is above 1/2, else the metallic-roughness model; maps are added by MaterialTable.
 Material materialFromPbr(const PbrFactors& factors, const std::string& name);
 

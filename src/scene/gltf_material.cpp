@@ -1,4 +1,4 @@
-// glTF metallic-roughness materials onto fragpath's (README, the material table; gltf_internal.h).
+// glTF metallic-roughness materials onto fragpath's (docs/materials.md, the material table; gltf_internal.h).
 #include <algorithm>
 #include <cmath>
 #include <map>
@@ -374,7 +374,7 @@ struct MaterialTable::Impl {
         return sceneTexture(info.index, int(found - r->uvSlots.begin()));
     }
 
-    // The texture maps of glTF material g onto m (README, the material table). Glass reads none of the
+    // The texture maps of glTF material g onto m (docs/materials.md, the material table). Glass reads none of the
     // surface maps but emission and normals: its colour and roughness take their maps' means.
     void addMaps(const tinygltf::Material& g, int material, Material* m, Resolved* r) {
         const tinygltf::PbrMetallicRoughness& pbr = g.pbrMetallicRoughness;
