@@ -270,8 +270,9 @@ struct PbrFactors {
     bool doubleSided = false;  // glTF's default
 };
 
-// The mapping rules of the material table (docs/materials.md): Unlit with KHR_materials_unlit, glass (Dielectric) where
-// transmission is above 1/2, else the metallic-roughness model; maps are added by MaterialTable.
+// The mapping rules of the material table (docs/materials.md): Unlit with KHR_materials_unlit, glass
+// (Dielectric) where transmission is above 1/2, else the metallic-roughness model; maps are added by
+// MaterialTable.
 Material materialFromPbr(const PbrFactors& factors, const std::string& name);
 
 // Turns glTF materials into fragpath's, on demand: the first time a primitive uses a material, its

@@ -374,8 +374,8 @@ struct MaterialTable::Impl {
         return sceneTexture(info.index, int(found - r->uvSlots.begin()));
     }
 
-    // The texture maps of glTF material g onto m (docs/materials.md, the material table). Glass reads none of the
-    // surface maps but emission and normals: its colour and roughness take their maps' means.
+    // The texture maps of glTF material g onto m (docs/materials.md, the material table). Glass reads none of
+    // the surface maps but emission and normals: its colour and roughness take their maps' means.
     void addMaps(const tinygltf::Material& g, int material, Material* m, Resolved* r) {
         const tinygltf::PbrMetallicRoughness& pbr = g.pbrMetallicRoughness;
         bool broken = false;
