@@ -6,8 +6,10 @@
 
 #include "app/commands.h"
 #include "core/error.h"
+#include "core/text.h"
 #include "gl/context.h"
 #include "pack/layout.h"
+#include "realtime/camera_path.h"
 #include "realtime/frame_budget.h"
 #include "realtime/realtime_run.h"
 #include "request/render_request.h"
@@ -26,7 +28,9 @@ std::vector<OptionGroup> realtimeOptions() {
             "orbit: the eye circles the camera's target about its up axis (--orbit-speed); FILE.json: "
             "keyframes {\"keyframes\": [{\"time\", \"eye\", \"target\", \"up\", \"fov\"}, ...]} (default "
             "orbit)"},
-           {"--orbit-speed", "", "DEG", "degrees per second of the orbit (default 10)"},
+           {"--orbit-speed", "", "DEG",
+            "degrees per second of the orbit (default " + formatText("%g", kDefaultOrbitDegreesPerSecond) +
+                ")"},
            {"--frames", "", "N", "frames to render (default 60)"},
            {"--fps", "", "F",
             "frames per second: frame i shows the path at i / F s, and 1000 / F ms is the budget the samples "
@@ -89,7 +93,7 @@ int realtimeCommand(const std::vector<std::string>& argv) {
     auto out = args.text("--out");
     if (!out) throw UsageError("realtime needs --out DIR for its frames and frames.csv");
     const std::string pathName = args.text("--camera-path").value_or("orbit");
-    const double orbitSpeed = args.number("--orbit-speed").value_or(10.0f);
+    const double orbitSpeed = args.number("--orbit-speed").value_or(float(kDefaultOrbitDegreesPerSecond));
     const int frames = args.integer("--frames", 1, 1000000).value_or(60);
     const float fps = args.number("--fps").value_or(float(kDefaultFps));
     if (!(fps > 0.0f && fps <= 1000.0f)) throw UsageError("option --fps: expected a rate in (0, 1000]");

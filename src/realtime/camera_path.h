@@ -43,6 +43,9 @@ class CameraPath {
     std::variant<std::vector<CameraKeyframe>, Orbit> shape_;
 };
 
+// The orbit's rate unless told otherwise: `fragpath realtime` and the study's practice runs.
+constexpr double kDefaultOrbitDegreesPerSecond = 10.0;
+
 // From time 0 to `seconds`: the eye turns about the axis through start.target along start.up (counter-
 // clockwise seen from above, i.e. right-handed about up, for degreesPerSecond > 0), keeping its distance
 // to the target and its height along up; it starts at start.eye and everything else stays start's.

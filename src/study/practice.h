@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "realtime/camera_path.h"
 #include "realtime/frame_budget.h"
 #include "study/thresholds.h"
 
@@ -58,7 +59,7 @@ int equalTimeSpp(double pipelineMs, double msPerSample);
 struct PracticeInput {
     std::string scene;  // the scene it measured (the study's first), as report.md names it
     int width = 0, height = 0, frames = 0, referenceSpp = 0;
-    double fps = kDefaultFps, orbitDegreesPerSecond = 10.0;
+    double fps = kDefaultFps, orbitDegreesPerSecond = kDefaultOrbitDegreesPerSecond;
     double settledSamples = 0.0;  // the pipeline's (realtime TemporalSettings): such pixels skip the filter
     std::string integrator;       // of every run and reference
     double flipThreshold = kDefaultFlipThreshold;  // the study's (--flip-threshold)

@@ -6,6 +6,7 @@
 #include <functional>
 #include <string>
 
+#include "realtime/camera_path.h"
 #include "realtime/frame_budget.h"
 #include "render/renderer.h"
 #include "scene/scene.h"
@@ -22,8 +23,9 @@ struct PracticeOptions {
     std::string sceneKey;   // names the scene in the references' key
     int frames = 20;
     int referenceSpp = 128;  // the study's defaults (--practice-frames, --practice-reference-spp)
-    double fps = kDefaultFps, orbitDegreesPerSecond = 10.0;  // `fragpath realtime`'s defaults
-    double flipThreshold = kDefaultFlipThreshold;            // the study's --flip-threshold
+    double fps = kDefaultFps,
+           orbitDegreesPerSecond = kDefaultOrbitDegreesPerSecond;  // `fragpath realtime`'s defaults
+    double flipThreshold = kDefaultFlipThreshold;                  // the study's --flip-threshold
     // Each run writes DIR/<camera>/<run>/ (frames, frames.csv, strip.png); the references go to
     // DIR/<camera>/references/, emptied first so that a study with other settings never meets them.
     std::string outDir;
