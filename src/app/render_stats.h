@@ -61,9 +61,8 @@ std::string formatRenderStats(const RenderStats& stats);
 // "scene_reads", "first_frame_seconds", "first_frame": {"load_seconds", "context_seconds", "bvh_seconds",
 // "pack_and_upload_seconds", "compile_seconds", "first_pass_seconds", "cpu_seconds"}, "spp", "passes",
 // "paths", "rays", "rays_per_path", "seconds", "cpu_seconds", "throughput": {"paths_per_second",
-// "rays_per_second", "paths_per_cpu_second"}, "dropped_samples", "settings": {"integrator", "sampler",
-// "light_sampling", "max_depth", "width", "height", "seed", "sample_offset", "samples_per_pass" (a count, or
-// "auto"), "clamp_indirect", "view"}}.
+// "rays_per_second", "paths_per_cpu_second"}, "dropped_samples", "settings": {one key a row of the
+// settings table, settings/settings_json.h}}.
 nlohmann::json renderStatsJson(const RenderStats& stats);
 
 // Writes renderStatsJson (indented, one trailing newline), atomically.

@@ -31,8 +31,7 @@ Option settingOption(const Setting& setting, const FrontEndDefaults& defaults) {
     const RenderSettings d = defaults.settings();
     const bool fromScene = setting.sceneFile && !(defaults.ignoresSceneFile & setting.option);
     std::string value = settingText(setting, setting.get(d));
-    if (std::string(setting.valueName) == "WxH")  // width and height share the flag
-        value = std::to_string(d.width) + "x" + std::to_string(d.height);
+    if (isSizePart(setting)) value = std::to_string(d.width) + "x" + std::to_string(d.height);
     const std::string defaultText =
         "(default: " + std::string(fromScene ? "the scene file's, else " : "") + value + ")";
     // Choices first, with the default, then what they mean; else the help, then the default.
@@ -135,7 +134,7 @@ RenderRequest::RenderRequest(const Args& args, const FrontEndDefaults& defaults)
     if (defaults.scene && !args.positional().empty()) scenePath_ = args.positional()[0];
     for (const Setting& setting : settingTable()) {
         if (!*setting.flag) continue;
-        if (std::string(setting.valueName) == "WxH") {
+        if (isSizePart(setting)) {
             if (auto size = args.size(setting.flag))
                 flags_.set(setting, std::string(setting.name) == "height" ? size->y : size->x);
         } else if (auto text = args.text(setting.flag)) {

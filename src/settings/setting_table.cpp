@@ -139,10 +139,10 @@ std::string numberText(double value) {
     return formatText("%g", value);
 }
 
-std::string choiceNames(const Setting& s, const char* separator) {
-    std::string text;
-    for (const SettingChoice& c : s.choices) text += (text.empty() ? "" : separator) + std::string(c.name);
-    return text;
+std::vector<std::string> choiceNameList(const Setting& s) {
+    std::vector<std::string> names;
+    for (const SettingChoice& c : s.choices) names.push_back(c.name);
+    return names;
 }
 
 }  // namespace
@@ -160,8 +160,11 @@ const Setting* findSetting(const std::string& name) {
 
 std::string settingChoices(const Setting& s) {
     switch (s.kind) {
-        case SettingKind::Choice:
-            return choiceNames(s, " | ");
+        case SettingKind::Choice: {
+            std::string text;
+            for (const std::string& name : choiceNameList(s)) text += (text.empty() ? "" : " | ") + name;
+            return text;
+        }
         case SettingKind::Integer:
         case SettingKind::Number: {
             std::string range = s.max == kUnbounded ? numberText(s.min) + " or more"
@@ -173,17 +176,10 @@ std::string settingChoices(const Setting& s) {
 }
 
 void refuseSetting(const Setting& s, const std::string& got, const std::string& where) {
-    std::string what;
-    if (s.kind == SettingKind::Choice) {
-        std::vector<std::string> names;
-        for (const SettingChoice& c : s.choices) names.push_back(c.name);
-        what = "one of " + choiceList(names);
-    } else {
-        what = s.kind == SettingKind::Integer ? "a whole number" : "a number";
-        what += s.max == kUnbounded ? ", " + numberText(s.min) + " or more"
-                                    : " from " + numberText(s.min) + " to " + numberText(s.max);
-        if (s.specialName) what += ", or " + std::string(s.specialName);
-    }
+    const std::string what = s.kind == SettingKind::Choice
+                                 ? "one of " + choiceList(choiceNameList(s))
+                                 : (s.kind == SettingKind::Integer ? "a whole number" : "a number") +
+                                       std::string(s.max == kUnbounded ? ", " : " from ") + settingChoices(s);
     throw Error(where + " must be " + what + ", got " + got);
 }
 
@@ -212,14 +208,12 @@ double checkSetting(const Setting& s, double value, const std::string& where) {
 double parseSetting(const Setting& s, const std::string& text, const std::string& where) {
     if (s.specialName && text == s.specialName) return s.specialValue;
     if (s.kind == SettingKind::Choice) {
-        std::vector<std::string> names;
-        for (const SettingChoice& c : s.choices) {
+        for (const SettingChoice& c : s.choices)
             if (text == c.name) return c.value;
-            names.push_back(c.name);
-        }
         std::string what = s.name;
         std::replace(what.begin(), what.end(), '_', ' ');
-        throw Error(where + ": unknown " + what + " '" + text + "' (choose " + choiceList(names) + ")");
+        throw Error(where + ": unknown " + what + " '" + text + "' (choose " + choiceList(choiceNameList(s)) +
+                    ")");
     }
     char* end = nullptr;
     const double value = std::strtod(text.c_str(), &end);

@@ -72,6 +72,11 @@ struct Setting {
     void (*set)(RenderSettings&, double);
 };
 
+// Width and height share one flag, --size WxH (each row takes its part of the value).
+inline bool isSizePart(const Setting& setting) {
+    return std::string(setting.valueName) == "WxH";
+}
+
 // Every setting, in the order --help lists them (and the fingerprint hashes them).
 const std::vector<Setting>& settingTable();
 const Setting* findSetting(const std::string& name);  // by name; nullptr when there is none

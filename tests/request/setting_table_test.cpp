@@ -40,8 +40,7 @@ TEST(SettingTable, EveryFlagIsAcceptedUnderStrictAndArrives) {
         if (!*s.flag) continue;
         for (const std::string& text : valuesToTry(s)) {
             std::string value = text;
-            if (std::string(s.valueName) == "WxH")
-                value = std::string(s.name) == "width" ? text + "x7" : "7x" + text;
+            if (isSizePart(s)) value = std::string(s.name) == "width" ? text + "x7" : "7x" + text;
             WarningCapture capture;
             const RenderRequest r = request({s.flag, value, "--strict"});
             setStrictWarnings(false);
@@ -79,7 +78,7 @@ TEST(SettingTable, EverySceneFileKeyIsAcceptedUnderStrictAndArrives) {
 // Each row's range and choices are enforced where values come in: a value beyond it fails, naming the flag.
 TEST(SettingTable, ValuesOutsideARowAreRefusedNamingTheFlag) {
     for (const Setting& s : settingTable()) {
-        if (!*s.flag || std::string(s.valueName) == "WxH") continue;
+        if (!*s.flag || isSizePart(s)) continue;
         const bool zeroIsSpecial = s.specialName && s.specialValue == s.min - 1.0;
         std::vector<std::string> bad = {"nonsense"};
         if (s.kind != SettingKind::Choice && !zeroIsSpecial) bad.push_back(formatText("%.10g", s.min - 1.0));
